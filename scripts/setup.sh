@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs (with apt-get) whatever povtrace needs that this Debian machine lacks. Idempotent: a machine that
+# already has everything runs no apt-get at all.
+set -euo pipefail
+packages=(
+  cmake g++ make pkg-config        # build
+  tao-pegtl-dev                    # PEGTL lexer
+  libopenexr-dev libpng-dev        # image output
+  libgtest-dev                     # unit tests
+  povray povray-includes           # reference renders, standard include files, bench comparison
+  python3                          # reference/bench scripts
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=(); [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
