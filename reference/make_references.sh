@@ -1,0 +1,43 @@
+#!/bin/bash
+# Regenerates reference/NAME.exr for every scenes/NAME.pov with POV-Ray, and rewrites reference/README.md.
+# Usage: reference/make_references.sh [NAME...]   (no names = every scene)
+# Each scene is rendered from the scenes/ folder (so relative paths resolve as POV-Ray would) with exactly:
+#   povray -D -A +W320 +H240 +FE +O../reference/NAME.exr NAME.pov
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+scenes=$(cd "$here/../scenes" && pwd)
+log_dir=$(mktemp -d)
+trap 'rm -rf "$log_dir"' EXIT
+
+if [ $# -gt 0 ]; then names=("$@"); else
+  names=()
+  for f in "$scenes"/*.pov; do names+=("$(basename "${f%.pov}")"); done
+fi
+
+failed=0
+cd "$scenes"
+for n in "${names[@]}"; do
+  if povray -D -A +W320 +H240 +FE "+O../reference/$n.exr" "$n.pov" > "$log_dir/$n.log" 2>&1; then
+    echo "ok    $n"
+  else
+    echo "FAIL  $n (last lines of POV-Ray's output follow)"; tail -15 "$log_dir/$n.log"; failed=1
+  fi
+done
+
+version=$(povray --version 2>&1 | grep -m1 '^POV-Ray')
+cat > "$here/README.md" <<README
+# Reference images
+
+\`NAME.exr\` is POV-Ray's render of \`../scenes/NAME.pov\`, written by \`make_references.sh\` (run it again after
+changing a scene; \`make_references.sh NAME...\` redoes only those).
+
+- POV-Ray version (first line of \`povray --version\`): \`$version\`
+- Command, run from the \`scenes/\` folder, for each scene: \`povray -D -A +W320 +H240 +FE +O../reference/NAME.exr NAME.pov\`
+  (no anti-aliasing, 320×240, OpenEXR output: half float, linear, unclipped; Debian's povray.ini adds only
+  Library_Path entries and display options; threads = POV-Ray's default, which does not change the image)
+- Generated: $(date -u +%Y-%m-%d)
+
+The regression tests (\`tests/regression\`) render every scene that has a reference here with povtrace using the same
+switches and compare with \`povdiff\` (PSNR ≥ 50 dB, at most 0.1 % of pixels off by more than 1/255).
+README
+exit $failed
