@@ -33,8 +33,10 @@ changing a scene; \`make_references.sh NAME...\` redoes only those).
 
 - POV-Ray version (first line of \`povray --version\`): \`$version\`
 - Command, run from the \`scenes/\` folder, for each scene: \`povray -D -A +W320 +H240 +FE +O../reference/NAME.exr NAME.pov\`
-  (no anti-aliasing, 320×240, OpenEXR output: half float, linear, unclipped; Debian's povray.ini adds only
-  Library_Path entries and display options; threads = POV-Ray's default, which does not change the image)
+  (no anti-aliasing, 320×240, OpenEXR output: half float, RGB, zip, linear, unclipped). Debian's
+  /etc/povray/3.7/povray.ini is read too; besides settings the command overrides (size, output type, display) it
+  adds Library_Path entries, Verbose=On and Bounding_Threshold=3, none of which changes the image. Threads are
+  POV-Ray's default (all cores); nothing in these scenes depends on the thread count.
 - Generated: $(date -u +%Y-%m-%d)
 
 The regression tests (\`tests/regression\`) render every scene that has a reference here with povtrace using the same
