@@ -1,0 +1,69 @@
+// Render options from POV-Ray-style switches (+W640, -A, +A0.3, +Lpath …), POV-Ray .ini files and GNU-style long
+// options. One struct holds them all with POV-Ray's defaults; nothing here is global (STYLE.md (b)).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/image/image.hpp"
+
+namespace povtrace::app {
+
+// Bad command line or .ini content: main() prints it and exits with status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class LightingModel { povray, textbook };
+
+struct RenderOptions {
+  std::filesystem::path input;                  // +I / Input_File_Name / the positional .pov argument
+  std::optional<std::filesystem::path> output;  // +O / Output_File_Name; default: input stem + extension, in cwd
+  int width = 800;                              // +W / Width   (POV-Ray's Debian povray.ini default)
+  int height = 600;                             // +H / Height
+  bool antialias = false;                       // +A / -A / Antialias
+  double antialias_threshold = 0.3;             // +A0.x / Antialias_Threshold (clipped to 0…1)
+  int antialias_depth = 3;                      // +R / Antialias_Depth (clipped to 1…9)
+  int sampling_method = 1;                      // +AM1 / +AM2 / Sampling_Method
+  bool jitter = true;                           // +J / -J / Jitter (POV-Ray's default is on)
+  double jitter_amount = 1.0;                   // +J0.5 / Jitter_Amount (clipped to 0…1)
+  double antialias_gamma = 2.5;                 // +AG / Antialias_Gamma
+  bool output_alpha = false;                    // +UA / Output_Alpha
+  std::vector<std::filesystem::path> library_paths;  // +L / Library_Path, in order
+  std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
+  int bits_per_channel = 8;                     // +FN16 / +FP16
+  int threads = 0;                              // +WT<n> / --threads; 0 = all cores
+  std::vector<std::pair<std::string, double>> declares;  // Declare=NAME=VALUE, in order
+  bool display = false;                         // +D/-D: accepted, povtrace has no preview window
+  bool verbose = false;                         // +V/-V
+  bool pause = false;                           // +P/-P: accepted, nothing to pause on
+  std::optional<std::filesystem::path> stats_json;  // --stats=FILE.json
+  bool vs_povray = false;                       // --vs-povray
+  LightingModel lighting = LightingModel::povray;  // --lighting=povray|textbook
+  bool help = false;                            // --help / -h
+};
+
+// Parses argv (argv[0] is skipped). `.ini` arguments are read in place, in order, relative to the current
+// directory. Throws UsageError naming the offending option.
+RenderOptions parse_command_line(int argc, const char* const* argv);
+
+// Applies one .ini file's keys to `options` (POV-Ray's INI syntax: Key=Value, ';' comments, [sections] ignored
+// except that only the unnamed/first section is read, as POV-Ray does without a section selector).
+void apply_ini_file(const std::filesystem::path& ini, RenderOptions& options);
+
+// Applies one switch such as "+W320", "-A", "+A0.3" or "Declare=N=1" (the INI form). Throws UsageError.
+void apply_switch(const std::string& text, RenderOptions& options);
+
+// The output path and format the options resolve to (POV-Ray's rules: +F type, else the output extension,
+// else PNG; default name = input stem + ".png"/".exr"/".ppm" in the working directory).
+std::filesystem::path resolved_output_path(const RenderOptions& options);
+image::EncodeOptions resolved_encoding(const RenderOptions& options);
+
+// The text printed by --help.
+std::string usage_text();
+
+}  // namespace povtrace::app

@@ -1,0 +1,155 @@
+// camera { } and light_source { } (povray-pixel-pipeline.md §1 and §3).
+#include <cmath>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+struct CameraInput {
+  Camera camera;
+  Vec3 sky{0, 1, 0};
+  std::optional<Vec3> look_at;
+  std::optional<double> angle;
+  bool up_given = false, right_given = false;
+  Matrix transform;
+};
+
+// POV-Ray's fixed order of application, whatever the textual order (§1): vectors as given; then angle; then
+// look_at; then the orthographic resize; finally the camera's own transforms.
+Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
+  Camera c = in.camera;
+  if (in.angle) {
+    const double a = *in.angle * M_PI / 180.0;
+    c.direction = normalize(c.direction) * (length(c.right) / (2.0 * std::tan(a / 2.0)));
+  }
+  if (in.look_at) {
+    const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
+    const double handedness = dot(cross(c.up, c.direction), c.right);
+    const Vec3 d = normalize(*in.look_at - c.location);
+    Vec3 r = cross(in.sky, d);
+    if (length(r) < 1e-10) {
+      warn("camera look_at is parallel to sky: the previous 'right' is kept");
+      r = normalize(c.right);
+    } else {
+      r = normalize(r);
+    }
+    const Vec3 u = cross(d, r);
+    c.direction = d * dl;
+    c.right = r * (handedness > 0 ? rl : -rl);
+    c.up = u * ul;
+  }
+  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || in.angle)) {
+    const Vec3 target = in.look_at.value_or(Vec3{0, 0, 1});
+    const double k = length(target - c.location) / length(c.direction);
+    c.right = c.right * k;
+    c.up = c.up * k;
+  }
+  c.location = in.transform.point(c.location);
+  c.direction = in.transform.vector(c.direction);
+  c.up = in.transform.vector(c.up);
+  c.right = in.transform.vector(c.right);
+  return c;
+}
+}  // namespace
+
+Camera Interpreter::parse_camera(const Token& keyword) {
+  expect("{", " after 'camera'");
+  CameraInput in;
+  in.camera.loc = keyword.loc;
+  Token t = next();
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<Camera>(*v)) {
+      in.camera = std::get<Camera>(*v);
+      t = next();
+    }
+  }
+  while (!t.is("}")) {
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (k == "perspective") in.camera.projection = Projection::perspective;
+    else if (k == "orthographic") in.camera.projection = Projection::orthographic;
+    else if (k == "location") in.camera.location = parse_vector();
+    else if (k == "direction") in.camera.direction = parse_vector();
+    else if (k == "up") { in.camera.up = parse_vector(); in.up_given = true; }
+    else if (k == "right") { in.camera.right = parse_vector(); in.right_given = true; }
+    else if (k == "sky") in.sky = parse_vector();
+    else if (k == "look_at") in.look_at = parse_vector();
+    else if (k == "angle") {
+      in.angle = parse_float();
+      if (*in.angle <= 0 || *in.angle >= 180) fail_at(t, "camera angle must be between 0 and 180 degrees");
+    } else if (!try_transform(t, in.transform)) {
+      if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
+          k == "spherical" || k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
+          k == "normal" || k == "confidence" || k == "variance")
+        fail_unsupported(t, "the camera item '" + std::string(k) + "'");
+      fail_expected(t, "a camera item (perspective, orthographic, location, look_at, right, up, direction, sky, "
+                       "angle, translate, rotate, scale, matrix) or '}'");
+    }
+    t = next();
+  }
+  return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
+}
+
+void Interpreter::apply_transform(Light& light, const Matrix& m) {
+  light.location = m.point(light.location);
+  light.point_at = m.point(light.point_at);
+}
+
+bool Interpreter::try_light_modifier(const Token& t, Light& light) {
+  Matrix m;
+  if (try_transform(t, m)) { apply_transform(light, m); return true; }
+  const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+  if (k == "color" || k == "colour" || k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft") {
+    unget(t);
+    light.colour = parse_colour();
+  } else if (k == "spotlight") light.spotlight = true;
+  else if (k == "parallel") light.parallel = true;
+  else if (k == "shadowless") light.shadowless = true;
+  else if (k == "point_at") light.point_at = parse_vector();
+  else if (k == "radius") light.radius = parse_float();
+  else if (k == "falloff") light.falloff = parse_float();
+  else if (k == "tightness") light.tightness = parse_float();
+  else if (k == "fade_distance") light.fade_distance = parse_float();
+  else if (k == "fade_power") light.fade_power = parse_float();
+  else if (k == "area_light" || k == "cylinder" || k == "looks_like" || k == "projected_through" ||
+           k == "circular" || k == "orient" || k == "adaptive" || k == "jitter" || k == "media_interaction" ||
+           k == "media_attenuation" || k == "photons" || k == "area_illumination")
+    fail_unsupported(t, "the light_source item '" + std::string(k) + "'");
+  else return false;
+  return true;
+}
+
+Light Interpreter::parse_light(const Token& keyword) {
+  expect("{", " after 'light_source'");
+  Light light;
+  light.loc = keyword.loc;
+  Token t = next();
+  bool copied = false;
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v) &&
+        std::holds_alternative<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v))) {
+      light = std::get<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v));
+      copied = true;
+      t = next();
+    }
+  }
+  if (!copied) {
+    unget(t);
+    light.location = parse_vector();
+    accept(",");
+    light.colour = parse_colour();
+    t = next();
+  }
+  while (!t.is("}")) {
+    if (!try_light_modifier(t, light))
+      fail_expected(t, "a light_source item (color, spotlight, parallel, shadowless, point_at, radius, falloff, "
+                       "tightness, fade_distance, fade_power, a transform) or '}'");
+    t = next();
+  }
+  return light;
+}
+
+}  // namespace povtrace::sdl

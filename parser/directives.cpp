@@ -1,0 +1,298 @@
+// Language directives (povray-sdl-and-geometry.md §4). Conditionals and loops keep a control stack; loops and
+// macros replay source by seeking the frame back to a remembered position (§1 item 4).
+#include <cmath>
+#include <iostream>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr double kConditionEpsilon = 1e-10;   // #if is true iff |F| > 1e-10 (§4)
+
+bool opens_block(std::string_view word) {
+  return word == "if" || word == "ifdef" || word == "ifndef" || word == "while" || word == "for" ||
+         word == "switch" || word == "macro";
+}
+}  // namespace
+
+void Interpreter::directive(const Token& hash) {
+  Token word = raw();
+  if (word.kind != TokenKind::identifier) fail_expected(word, "a directive name after '#'");
+  const std::string_view w = word.text;
+  if (w == "version") return directive_version(word);
+  if (w == "declare") return directive_declare(word, false);
+  if (w == "local") return directive_declare(word, true);
+  if (w == "undef") return directive_undef();
+  if (w == "include") return directive_include(word);
+  if (w == "if") return directive_if(word, 0);
+  if (w == "ifdef") return directive_if(word, 1);
+  if (w == "ifndef") return directive_if(word, 2);
+  if (w == "else") return directive_else(word, false);
+  if (w == "elseif") return directive_else(word, true);
+  if (w == "end") return directive_end(word);
+  if (w == "while") return directive_while(word);
+  if (w == "for") return directive_for(word);
+  if (w == "macro") return directive_macro(word);
+  if (w == "debug" || w == "warning" || w == "error" || w == "render" || w == "statistics")
+    return directive_message(word, std::string(w));
+  if (w == "default") return parse_default(word);
+  if (w == "switch" || w == "case" || w == "range" || w == "break" || w == "fopen" || w == "fclose" ||
+      w == "read" || w == "write")
+    fail_unsupported(word, "the directive #" + std::string(w));
+  (void)hash;
+  fail_at(word, "unknown directive '#" + std::string(w) + "'");
+}
+
+void Interpreter::directive_version(const Token& at) {
+  const double v = parse_float();
+  accept(";");
+  scene_.language_version = static_cast<int>(std::lround(v * 100.0));
+  if (!statement_seen_ && frames_.size() == 1) scene_.version_given = true;
+  (void)at;
+}
+
+void Interpreter::directive_declare(const Token& at, bool local) {
+  Token name_token = raw();
+  if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
+  if (is_reserved_word(name_token.text))
+    fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
+  const std::string name(name_token.text);
+  Token eq = next();
+  if (!eq.is("[") && !eq.is("=")) fail_expected(eq, "'=' after #declare " + name);
+  if (eq.is("[")) fail_unsupported(eq, "assignment to array elements");
+  Token first = next();
+  auto value = try_parse_rvalue(first);
+  if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
+                                   "interior or camera) for " + name);
+  // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
+  if (std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350) {
+    Token semi = next();
+    if (!semi.is(";")) fail_expected(semi, "';' after the value of " + name);
+  } else {
+    accept(";");
+  }
+  if (local) symbols_.local(name, std::move(*value)); else symbols_.declare(name, std::move(*value));
+  (void)at;
+}
+
+void Interpreter::directive_undef() {
+  Token name = raw();
+  if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier after #undef");
+  if (!symbols_.undefine(std::string(name.text)))
+    warn(name.loc, "#undef of '" + std::string(name.text) + "', which is not declared");
+}
+
+std::optional<std::filesystem::path> Interpreter::find_include(const std::string& name) const {
+  // Candidate names (§4 #include): "x.inc" as given first; otherwise x.inc, x.INC, then the bare name.
+  std::vector<std::string> candidates;
+  const bool has_inc = name.size() > 4 && (name.ends_with(".inc") || name.ends_with(".INC"));
+  if (has_inc) candidates = {name, name + ".inc", name + ".INC"};
+  else candidates = {name + ".inc", name + ".INC", name};
+  std::vector<std::filesystem::path> dirs{std::filesystem::current_path()};
+  for (const auto& d : options_.library_paths) dirs.push_back(d);
+  for (const auto& candidate : candidates) {
+    const std::filesystem::path p(candidate);
+    if (p.is_absolute()) {
+      if (std::filesystem::is_regular_file(p)) return p;
+      continue;
+    }
+    for (const auto& d : dirs) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(d / p, ec)) return d / p;
+    }
+  }
+  return std::nullopt;
+}
+
+void Interpreter::directive_include(const Token& at) {
+  Token name_token = next();
+  if (name_token.kind != TokenKind::string) fail_expected(name_token, "a file name string after #include");
+  const std::string name = string_value(name_token, *frames_.back().file, false);
+  auto path = find_include(name);
+  if (!path) {
+    std::string searched = "the working directory";
+    for (const auto& d : options_.library_paths) searched += ", " + d.string();
+    fail_at(name_token, "cannot find include file \"" + name + "\" (searched " + searched + ")");
+  }
+  push_file(*path, at, Frame::Kind::include);
+}
+
+bool Interpreter::condition_in_parens() {
+  expect("(", " (conditions are written in parentheses)");
+  const double v = parse_float_full();
+  expect(")", " closing the condition");
+  return std::fabs(v) > kConditionEpsilon;
+}
+
+bool Interpreter::identifier_defined_in_parens() {
+  expect("(", " (write #ifdef (Name))");
+  Token name = raw();
+  if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier");
+  const bool defined = !is_reserved_word(name.text) && symbols_.find(std::string(name.text)) != nullptr;
+  expect(")", " after the identifier");
+  return defined;
+}
+
+// Skips a false branch: tokens are still lexed (comments and strings must be well formed) but nothing is
+// evaluated; nested blocks are counted so that only this level's #else/#elseif/#end stop the skip.
+std::string Interpreter::skip_branch(const Token& opener, bool stop_at_else) {
+  int depth = 0;
+  while (true) {
+    Token t = raw();
+    if (t.kind == TokenKind::end_of_input)
+      fail(opener.loc, "this #" + std::string(opener.text) + " has no matching #end");
+    if (!t.is("#")) continue;
+    Token w = raw();
+    if (w.kind != TokenKind::identifier) continue;
+    if (opens_block(w.text)) { ++depth; continue; }
+    if (w.text == "end") {
+      if (depth == 0) return "end";
+      --depth;
+      continue;
+    }
+    if (depth == 0 && stop_at_else && (w.text == "else" || w.text == "elseif")) return std::string(w.text);
+  }
+}
+
+void Interpreter::directive_if(const Token& at, int kind) {
+  bool taken = kind == 0 ? condition_in_parens() : identifier_defined_in_parens();
+  if (kind == 2) taken = !taken;
+  while (!taken) {
+    const std::string found = skip_branch(at, true);
+    if (found == "end") return;
+    if (found == "else") break;
+    taken = condition_in_parens();   // #elseif
+  }
+  Control c;
+  c.kind = Control::Kind::if_branch;
+  c.frame = frames_.size() - 1;
+  c.loc = at.loc;
+  controls_.push_back(c);
+}
+
+// Reaching #else/#elseif while executing means the branch before it ran: skip to the #end.
+void Interpreter::directive_else(const Token& at, bool is_elseif) {
+  if (controls_.empty() || controls_.back().kind != Control::Kind::if_branch)
+    fail_at(at, std::string("#") + (is_elseif ? "elseif" : "else") + " without a matching #if");
+  if (is_elseif) {
+    // The condition is not evaluated (a branch was already taken), but it must be skipped as tokens.
+    expect("(", " after #elseif");
+    int depth = 1;
+    while (depth > 0) {
+      Token t = raw();
+      if (t.kind == TokenKind::end_of_input) fail_expected(t, "')' closing the #elseif condition");
+      if (t.is("(")) ++depth;
+      if (t.is(")")) --depth;
+    }
+  }
+  while (skip_branch(at, true) != "end") {
+  }
+  controls_.pop_back();
+}
+
+void Interpreter::directive_end(const Token& at) {
+  if (controls_.empty()) fail_at(at, "#end without a matching #if, #while, #for or #macro");
+  Control& c = controls_.back();
+  switch (c.kind) {
+    case Control::Kind::if_branch:
+      controls_.pop_back();
+      return;
+    case Control::Kind::macro_call:
+      if (frames_.size() - 1 != c.frame) fail_at(at, "#end of a macro in another file than its #macro");
+      frames_.pop_back();
+      symbols_.pop_scope();
+      controls_.pop_back();
+      return;
+    case Control::Kind::while_loop: {
+      if (frames_.size() - 1 != c.frame) fail_at(at, "a #while loop must end in the file it started in");
+      const Control loop = c;
+      seek(loop.frame, loop.resume);
+      if (condition_in_parens()) return;
+      controls_.pop_back();
+      Token opener = at;
+      opener.text = "while";
+      skip_branch(opener, false);
+      return;
+    }
+    case Control::Kind::for_loop: {
+      if (frames_.size() - 1 != c.frame) fail_at(at, "a #for loop must end in the file it started in");
+      const Value* v = symbols_.find(c.for_variable);
+      if (!v || !std::holds_alternative<Numeric>(*v))
+        fail_at(at, "the #for variable '" + c.for_variable + "' is no longer a float");
+      const double value = std::get<Numeric>(*v).v[0] + c.for_step;
+      symbols_.local(c.for_variable, Numeric::scalar(value));
+      const bool go_on = c.for_step > 0 ? value <= c.for_end + 1e-10 : value >= c.for_end - 1e-10;
+      if (go_on) { seek(c.frame, c.resume); return; }
+      controls_.pop_back();
+      return;
+    }
+  }
+}
+
+void Interpreter::directive_while(const Token& at) {
+  Control c;
+  c.kind = Control::Kind::while_loop;
+  c.frame = frames_.size() - 1;
+  c.resume = frames_.back().pos;   // the condition is re-parsed at every #end
+  c.loc = at.loc;
+  if (!pushed_back_.empty()) fail_at(at, "internal: #while after a look-ahead");
+  if (!condition_in_parens()) { skip_branch(at, false); return; }
+  controls_.push_back(c);
+}
+
+void Interpreter::directive_for(const Token& at) {
+  expect("(", " after #for");
+  const std::string var = expect_identifier_raw("for the #for loop variable");
+  expect(",", " after the #for variable");
+  const double start = parse_float();
+  expect(",", " after the #for start value");
+  const double end = parse_float();
+  double step = 1;
+  if (accept(",")) step = parse_float();
+  Token close = expect(")", " closing #for");
+  if (step == 0) fail_at(close, "the #for step must not be zero");
+  symbols_.local(var, Numeric::scalar(start));
+  const bool run = step > 0 ? start <= end + 1e-10 : start >= end - 1e-10;
+  if (!run) { skip_branch(at, false); return; }
+  Control c;
+  c.kind = Control::Kind::for_loop;
+  c.frame = frames_.size() - 1;
+  c.resume = frames_.back().pos;
+  c.for_variable = var;
+  c.for_end = end;
+  c.for_step = step;
+  c.loc = at.loc;
+  controls_.push_back(c);
+}
+
+void Interpreter::directive_macro(const Token& at) {
+  MacroDefinition m;
+  const std::string name = expect_identifier_raw("for the macro name");
+  Token open = raw();
+  if (!open.is("(")) fail_expected(open, "'(' after the macro name");
+  Token t = raw();
+  while (!t.is(")")) {
+    if (t.kind != TokenKind::identifier || is_reserved_word(t.text))
+      fail_expected(t, "a parameter name or ')' in the definition of macro " + name);
+    m.parameters.emplace_back(t.text);
+    t = raw();
+    if (t.is(",")) t = raw();
+  }
+  m.file = frames_.back().file;
+  m.body = frames_.back().pos;
+  m.loc = at.loc;
+  Token opener = at;
+  skip_branch(opener, false);
+  symbols_.declare(name, std::move(m));   // macros always live in the global table (§3)
+}
+
+void Interpreter::directive_message(const Token& at, const std::string& kind) {
+  const std::string text = parse_string();
+  if (kind == "error") fail_at(at, "#error: " + text);
+  std::string out = kind == "warning" ? format_diagnostic(at.loc, "warning", text, {}) : text;
+  if (options_.message_sink) options_.message_sink(out); else std::cerr << out << (kind == "warning" ? "\n" : "");
+}
+
+}  // namespace povtrace::sdl

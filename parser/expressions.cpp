@@ -1,0 +1,348 @@
+// Expressions (povray-sdl-and-geometry.md §5): two levels (parameter level = additive; full level with
+// comparisons, & | and ?: inside parentheses and conditions), term counts with promotion, colour forms,
+// built-in functions.
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| ≤ 1e-10 (§5)
+
+// Promotes the shorter operand: a float broadcasts, a shorter vector is zero-padded (§5).
+void promote(Numeric& a, Numeric& b) {
+  const int terms = std::max(a.terms, b.terms);
+  auto widen = [terms](Numeric& n) {
+    if (n.terms == terms) return;
+    if (n.terms == 1) for (int i = 1; i < terms; ++i) n.v[i] = n.v[0];
+    n.terms = terms;
+  };
+  widen(a);
+  widen(b);
+  a.colour = b.colour = a.colour || b.colour;
+}
+
+template <class Op> Numeric componentwise(Numeric a, Numeric b, Op op) {
+  promote(a, b);
+  for (int i = 0; i < a.terms; ++i) a.v[i] = op(a.v[i], b.v[i]);
+  return a;
+}
+
+Numeric promoted_to(Numeric n, int terms) {
+  if (n.terms == 1) for (int i = 1; i < terms; ++i) n.v[i] = n.v[0];
+  n.terms = std::max(n.terms, terms);
+  return n;
+}
+}  // namespace
+
+double Interpreter::to_float(const Numeric& n, const Token& at) const {
+  if (n.terms != 1) fail_at(at, "expected a float, found a " + value_type_name(Value(n)));
+  return n.v[0];
+}
+
+double Interpreter::parse_float() {
+  Token start = peek();
+  return to_float(parse_additive(), start);
+}
+
+double Interpreter::parse_float_full() {
+  Token start = peek();
+  return to_float(parse_expression(), start);
+}
+
+Vec3 Interpreter::parse_vector() {
+  Token start = peek();
+  Numeric n = parse_additive();
+  if (n.terms > 3 && !n.colour) fail_at(start, "expected a 3-D vector, found a " + value_type_name(Value(n)));
+  return promoted_to(n, 3).as_vec3();
+}
+
+// ---- full level ----------------------------------------------------------------------------------------
+Numeric Interpreter::parse_expression() {
+  auto comparison = [this]() {
+    Numeric left = parse_additive();
+    while (true) {
+      Token op = next();
+      static const std::map<std::string_view, std::function<bool(double, double)>> ops = {
+          {"<", [](double a, double b) { return a < b; }},
+          {">", [](double a, double b) { return a > b; }},
+          {"<=", [](double a, double b) { return a < b || std::fabs(a - b) <= kEqualEpsilon; }},
+          {">=", [](double a, double b) { return a > b || std::fabs(a - b) <= kEqualEpsilon; }},
+          {"=", [](double a, double b) { return std::fabs(a - b) <= kEqualEpsilon; }},
+          {"!=", [](double a, double b) { return std::fabs(a - b) > kEqualEpsilon; }}};
+      auto it = op.kind == TokenKind::symbol ? ops.find(op.text) : ops.end();
+      if (it == ops.end()) { unget(op); return left; }
+      Numeric right = parse_additive();
+      left = Numeric::scalar(it->second(to_float(left, op), to_float(right, op)) ? 1.0 : 0.0);
+    }
+  };
+  Numeric value = comparison();
+  while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
+    Token op = next();
+    if (!op.is("&") && !op.is("|")) { unget(op); break; }
+    const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
+    const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
+    value = Numeric::scalar((op.is("&") ? (a && b) : (a || b)) ? 1.0 : 0.0);
+  }
+  Token q = next();
+  if (!q.is("?")) { unget(q); return value; }
+  const bool c = std::fabs(to_float(value, q)) > kEqualEpsilon;
+  Numeric a = parse_expression();
+  expect(":", " in the conditional expression c ? a : b");
+  Numeric b = parse_expression();
+  return c ? a : b;
+}
+
+// ---- parameter level -------------------------------------------------------------------------------------
+Numeric Interpreter::parse_additive() {
+  Numeric value = parse_multiplicative();
+  while (true) {
+    Token op = next();
+    if (op.is("+")) value = componentwise(value, parse_multiplicative(), std::plus<>());
+    else if (op.is("-")) value = componentwise(value, parse_multiplicative(), std::minus<>());
+    else { unget(op); return value; }
+  }
+}
+
+Numeric Interpreter::parse_multiplicative() {
+  Numeric value = parse_unary();
+  while (true) {
+    Token op = next();
+    if (op.is("*")) {
+      value = componentwise(value, parse_unary(), std::multiplies<>());
+    } else if (op.is("/")) {
+      Numeric divisor = parse_unary();
+      promote(value, divisor);
+      for (int i = 0; i < value.terms; ++i) {
+        if (divisor.v[i] == 0.0) warn(op.loc, "division by zero");
+        value.v[i] /= divisor.v[i];
+      }
+    } else {
+      unget(op);
+      return value;
+    }
+  }
+}
+
+Numeric Interpreter::parse_unary() {
+  Token t = next();
+  if (t.is("-")) {
+    Numeric n = parse_unary();
+    for (int i = 0; i < n.terms; ++i) n.v[i] = -n.v[i];
+    return n;
+  }
+  if (t.is("+")) return parse_unary();
+  if (t.is("!")) {
+    Numeric n = parse_unary();
+    for (int i = 0; i < n.terms; ++i) n.v[i] = std::fabs(n.v[i]) <= kEqualEpsilon ? 1.0 : 0.0;
+    return n;
+  }
+  unget(t);
+  return parse_postfix(parse_primary(), t);
+}
+
+// .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
+Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
+  while (true) {
+    Token dot = next();
+    if (!dot.is(".")) { unget(dot); return value; }
+    Token member = next();
+    static const std::map<std::string_view, int> components = {
+        {"x", 0}, {"u", 0}, {"red", 0}, {"y", 1}, {"v", 1}, {"green", 1}, {"z", 2}, {"blue", 2},
+        {"t", 3}, {"filter", 3}, {"transmit", 4}, {"gray", -1}, {"grey", -1}};
+    auto it = member.kind == TokenKind::identifier ? components.find(member.text) : components.end();
+    if (it == components.end()) fail_expected(member, "a component name (x, y, z, t, red, green, blue, filter, "
+                                                      "transmit, gray) after '.'");
+    if (it->second < 0) {
+      value = Numeric::scalar(0.297 * value.v[0] + 0.589 * value.v[1] + 0.114 * value.v[2]);
+      continue;
+    }
+    if (it->second >= value.terms)
+      fail_at(member, "'." + std::string(member.text) + "' selects a component that this " +
+                          value_type_name(Value(value)) + " does not have");
+    value = Numeric::scalar(value.v[it->second]);
+  }
+  (void)start;
+}
+
+Numeric Interpreter::parse_vector_literal(const Token& open) {
+  Numeric n;
+  n.terms = 0;
+  do {
+    if (n.terms == 5) fail_at(open, "a vector has at most 5 components");
+    Token at = peek();
+    n.v[n.terms++] = to_float(parse_additive(), at);
+    Token sep = next();
+    if (sep.is(">")) break;
+    if (!sep.is(",")) unget(sep);   // commas between components are optional (§5)
+  } while (true);
+  if (n.terms < 2) fail_at(open, "a vector needs 2 to 5 components");
+  return n;
+}
+
+// rgb, rgbf, rgbt, rgbft: the expression after the keyword is a full expression promoted to the stated count
+// (§5 "Colours"), then placed in the five colour channels.
+Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
+  const std::string_view k = keyword.text;
+  if (k.starts_with("srgb")) fail_unsupported(keyword, "'" + std::string(k) + "' colours");
+  Token start = peek();
+  Numeric e = parse_expression();
+  const int count = k == "rgb" ? 3 : (k == "rgbft" ? 5 : 4);
+  if (e.terms > count && !e.colour)
+    fail_at(start, "'" + std::string(k) + "' takes " + std::to_string(count) + " components, found " +
+                       std::to_string(e.terms));
+  e = promoted_to(e, count);
+  Numeric c;
+  c.terms = 5;
+  c.colour = true;
+  for (int i = 0; i < 3; ++i) c.v[i] = e.v[i];
+  if (k == "rgbf") c.v[3] = e.v[3];
+  if (k == "rgbt") c.v[4] = e.v[3];
+  if (k == "rgbft") { c.v[3] = e.v[3]; c.v[4] = e.v[4]; }
+  return c;
+}
+
+bool Interpreter::starts_colour(const Token& t) const {
+  if (t.kind != TokenKind::identifier) return false;
+  static const std::string_view words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "red", "green",
+                                           "blue", "filter", "transmit", "srgb", "srgbf", "srgbt", "srgbft"};
+  for (auto w : words)
+    if (t.text == w) return true;
+  if (is_reserved_word(t.text)) return false;
+  const Value* v = symbols_.find(std::string(t.text));
+  return v && std::holds_alternative<Numeric>(*v) && std::get<Numeric>(*v).colour;
+}
+
+// Parse_Colour: [color|colour] then rgb… form, colour id or expression, then overrides red/green/blue/
+// filter/transmit. A bare expression fills all five channels (`color 0.5` sets f and t too, §5).
+Colour Interpreter::parse_colour() {
+  Numeric c;
+  c.terms = 5;
+  c.colour = true;
+  bool have_base = false;
+  Token t = next();
+  if (t.is("color") || t.is("colour")) t = next();
+  while (true) {
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (!have_base && (k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft" || k.starts_with("srgb"))) {
+      c = parse_colour_keyword_form(t);
+      have_base = true;
+    } else if (k == "red" || k == "green" || k == "blue" || k == "filter" || k == "transmit") {
+      const int channel = k == "red" ? 0 : k == "green" ? 1 : k == "blue" ? 2 : k == "filter" ? 3 : 4;
+      c.v[channel] = parse_float();
+      have_base = true;
+    } else if (!have_base && t.kind != TokenKind::end_of_input && !t.is("}") &&
+               !(k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft")) {
+      unget(t);
+      Token start = peek();
+      Numeric e = parse_additive();
+      if (e.terms > 5) fail_at(start, "a colour has at most 5 components");
+      if (e.terms == 1) e = promoted_to(e, 5);
+      for (int i = 0; i < 5; ++i) c.v[i] = i < e.terms ? e.v[i] : 0.0;
+      have_base = true;
+    } else {
+      unget(t);
+      break;
+    }
+    t = next();
+  }
+  if (!have_base) fail_expected(peek(), "a colour (rgb <r,g,b>, a colour identifier or an expression)");
+  return c.as_colour();
+}
+
+bool Interpreter::starts_string(const Token& t) const {
+  if (t.kind == TokenKind::string) return true;
+  if (t.kind != TokenKind::identifier) return false;
+  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr"};
+  for (auto f : fns)
+    if (t.text == f) return true;
+  if (is_reserved_word(t.text)) return false;
+  const Value* v = symbols_.find(std::string(t.text));
+  return v && std::holds_alternative<std::string>(*v);
+}
+
+namespace {
+std::string format_str(double value, int width, int precision) {
+  // str(F, L, P) (§5): L > 0 space-padded width, L < 0 zero-padded width |L|, P < 0 the default 6 decimals.
+  if (precision < 0) precision = 6;
+  char buf[512];
+  if (width < 0) std::snprintf(buf, sizeof buf, "%0*.*f", -width, precision, value);
+  else std::snprintf(buf, sizeof buf, "%*.*f", width, precision, value);
+  return buf;
+}
+}  // namespace
+
+std::string Interpreter::parse_string() {
+  Token t = next();
+  if (t.kind == TokenKind::string) return string_value(t, file_of(t.loc), true);
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<std::string>(*v)) return std::get<std::string>(*v);
+  }
+  if (t.is("concat")) {
+    expect("(", " after concat");
+    std::string s = parse_string();
+    while (accept(",")) s += parse_string();
+    expect(")", " closing concat(...)");
+    return s;
+  }
+  if (t.is("str")) {
+    expect("(", " after str");
+    const double value = parse_float();
+    expect(",", " in str(value, width, precision)");
+    const double width = parse_float();
+    expect(",", " in str(value, width, precision)");
+    const double precision = parse_float();
+    expect(")", " closing str(...)");
+    return format_str(value, static_cast<int>(width), static_cast<int>(precision));
+  }
+  if (t.is("chr")) {
+    expect("(", " after chr");
+    const double code = parse_float();
+    expect(")", " closing chr(...)");
+    return std::string(1, static_cast<char>(static_cast<int>(code) & 0x7f));
+  }
+  if (t.is("vstr")) {
+    expect("(", " after vstr");
+    const int n = std::clamp(static_cast<int>(parse_float()), 2, 5);
+    expect(",", " in vstr");
+    Numeric v = promoted_to(parse_additive(), n);
+    expect(",", " in vstr");
+    const std::string sep = parse_string();
+    expect(",", " in vstr");
+    const int width = static_cast<int>(parse_float());
+    expect(",", " in vstr");
+    const int precision = static_cast<int>(parse_float());
+    expect(")", " closing vstr(...)");
+    std::string s;
+    for (int i = 0; i < n; ++i) s += (i ? sep : "") + format_str(v.v[i], width, precision);
+    return s;
+  }
+  if (t.is("strupr") || t.is("strlwr")) {
+    expect("(", "");
+    std::string s = parse_string();
+    expect(")", "");
+    for (char& c : s) c = t.is("strupr") ? static_cast<char>(std::toupper(c)) : static_cast<char>(std::tolower(c));
+    return s;
+  }
+  if (t.is("substr")) {
+    expect("(", " after substr");
+    std::string s = parse_string();
+    expect(",", "");
+    const int start = static_cast<int>(parse_float());
+    expect(",", "");
+    const int len = static_cast<int>(parse_float());
+    expect(")", " closing substr(...)");
+    if (start < 1 || len < 0 || start - 1 + len > static_cast<int>(s.size()))
+      fail_at(t, "substr(…, " + std::to_string(start) + ", " + std::to_string(len) + ") is out of range");
+    return s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(len));
+  }
+  fail_expected(t, "a string");
+}
+
+}  // namespace povtrace::sdl

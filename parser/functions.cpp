@@ -1,0 +1,229 @@
+// Primary expressions and the built-in float/vector functions of POV-Ray 3.7 (povray-sdl-and-geometry.md §5).
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+using Args = std::vector<double>;
+struct FloatFunction {
+  std::size_t min_args, max_args;
+  std::function<double(const Args&)> eval;
+};
+
+double degrees_to_radians(double d) { return d * M_PI / 180.0; }
+
+const std::map<std::string_view, FloatFunction>& float_functions() {
+  static const std::map<std::string_view, FloatFunction> table = {
+      {"abs", {1, 1, [](const Args& a) { return std::fabs(a[0]); }}},
+      {"acos", {1, 1, [](const Args& a) { return std::acos(std::clamp(a[0], -1.0, 1.0)); }}},
+      {"asin", {1, 1, [](const Args& a) { return std::asin(std::clamp(a[0], -1.0, 1.0)); }}},
+      {"atan", {1, 1, [](const Args& a) { return std::atan(a[0]); }}},
+      {"atan2", {2, 2, [](const Args& a) { return std::atan2(a[0], a[1]); }}},
+      {"sin", {1, 1, [](const Args& a) { return std::sin(a[0]); }}},
+      {"cos", {1, 1, [](const Args& a) { return std::cos(a[0]); }}},
+      {"tan", {1, 1, [](const Args& a) { return std::tan(a[0]); }}},
+      {"sinh", {1, 1, [](const Args& a) { return std::sinh(a[0]); }}},
+      {"cosh", {1, 1, [](const Args& a) { return std::cosh(a[0]); }}},
+      {"tanh", {1, 1, [](const Args& a) { return std::tanh(a[0]); }}},
+      {"asinh", {1, 1, [](const Args& a) { return std::asinh(a[0]); }}},
+      {"acosh", {1, 1, [](const Args& a) { return std::acosh(a[0]); }}},
+      {"atanh", {1, 1, [](const Args& a) { return std::atanh(a[0]); }}},
+      {"exp", {1, 1, [](const Args& a) { return std::exp(a[0]); }}},
+      {"sqrt", {1, 1, [](const Args& a) { return std::sqrt(a[0]); }}},
+      {"ln", {1, 1, [](const Args& a) { return std::log(a[0]); }}},
+      {"log", {1, 1, [](const Args& a) { return std::log10(a[0]); }}},
+      {"pow", {2, 2, [](const Args& a) { return std::pow(a[0], a[1]); }}},
+      {"floor", {1, 1, [](const Args& a) { return std::floor(a[0]); }}},
+      {"ceil", {1, 1, [](const Args& a) { return std::ceil(a[0]); }}},
+      {"int", {1, 1, [](const Args& a) { return std::trunc(a[0]); }}},
+      {"div", {2, 2, [](const Args& a) { return std::trunc(a[0] / a[1]); }}},
+      {"mod", {2, 2, [](const Args& a) { return std::fmod(a[0], a[1]); }}},
+      {"degrees", {1, 1, [](const Args& a) { return a[0] * 180.0 / M_PI; }}},
+      {"radians", {1, 1, [](const Args& a) { return degrees_to_radians(a[0]); }}},
+      {"min", {1, 64, [](const Args& a) { return *std::min_element(a.begin(), a.end()); }}},
+      {"max", {1, 64, [](const Args& a) { return *std::max_element(a.begin(), a.end()); }}},
+      {"select", {3, 4, [](const Args& a) {
+         if (a.size() == 3) return a[0] < 0 ? a[1] : a[2];
+         return a[0] < 0 ? a[1] : (a[0] == 0 ? a[2] : a[3]);
+       }}},
+      {"bitwise_and", {2, 64, [](const Args& a) {
+         long long r = static_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r &= static_cast<long long>(a[i]);
+         return static_cast<double>(r);
+       }}},
+      {"bitwise_or", {2, 64, [](const Args& a) {
+         long long r = static_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r |= static_cast<long long>(a[i]);
+         return static_cast<double>(r);
+       }}},
+      {"bitwise_xor", {2, 64, [](const Args& a) {
+         long long r = static_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r ^= static_cast<long long>(a[i]);
+         return static_cast<double>(r);
+       }}},
+  };
+  return table;
+}
+
+// Domain checks POV-Ray reports as errors (§5).
+std::string domain_error(std::string_view name, const Args& a) {
+  if (name == "sqrt" && a[0] < 0) return "sqrt of a negative number";
+  if ((name == "ln" || name == "log") && a[0] <= 0) return std::string(name) + " of a number that is not positive";
+  if (name == "pow" && a[0] == 0 && a[1] == 0) return "pow(0, 0) is undefined";
+  if (name == "atan2" && a[0] == 0 && a[1] == 0) return "atan2(0, 0) is undefined";
+  if ((name == "mod" || name == "div") && a[1] == 0) return std::string(name) + " by zero";
+  return {};
+}
+}  // namespace
+
+std::vector<double> Interpreter::parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args) {
+  expect("(", " after '" + std::string(name.text) + "'");
+  std::vector<double> args;
+  // Single-argument functions take a full-level expression (§5 "Two levels").
+  if (max_args == 1) {
+    args.push_back(parse_float_full());
+  } else {
+    do {
+      args.push_back(parse_float());
+    } while (accept(","));
+  }
+  Token close = next();
+  if (!close.is(")")) fail_expected(close, "',' or ')' in the arguments of " + std::string(name.text));
+  if (args.size() < min_args || args.size() > max_args)
+    fail_at(name, std::string(name.text) + " takes " +
+                      (min_args == max_args ? std::to_string(min_args) : "at least " + std::to_string(min_args)) +
+                      " argument(s), found " + std::to_string(args.size()));
+  return args;
+}
+
+Numeric Interpreter::parse_function_call(const Token& name) {
+  const std::string_view n = name.text;
+  auto it = float_functions().find(n);
+  if (it != float_functions().end()) {
+    Args args = parse_call_arguments(name, it->second.min_args, it->second.max_args);
+    if (auto err = domain_error(n, args); !err.empty()) fail_at(name, err);
+    return Numeric::scalar(it->second.eval(args));
+  }
+  auto vector_arg = [&](bool first) {
+    if (!first) expect(",", " between the arguments of " + std::string(n));
+    return parse_vector();
+  };
+  if (n == "vlength" || n == "vnormalize") {
+    expect("(", "");
+    Vec3 v = vector_arg(true);
+    expect(")", "");
+    if (n == "vlength") return Numeric::scalar(length(v));
+    if (length(v) == 0) { warn(name.loc, "vnormalize of a zero vector gives <0,0,0>"); return Numeric::vector({}); }
+    return Numeric::vector(normalize(v));
+  }
+  if (n == "vdot" || n == "vcross" || n == "vrotate") {
+    expect("(", "");
+    Vec3 a = vector_arg(true), b = vector_arg(false);
+    expect(")", "");
+    if (n == "vdot") return Numeric::scalar(dot(a, b));
+    if (n == "vcross") return Numeric::vector(cross(a, b));
+    return Numeric::vector(Matrix::rotation(b).vector(a));
+  }
+  if (n == "vaxis_rotate") {
+    expect("(", "");
+    Vec3 v = vector_arg(true), axis = normalize(vector_arg(false));
+    expect(",", "");
+    const double angle = degrees_to_radians(parse_float());
+    expect(")", "");
+    // Same sense as `rotate` (vaxis_rotate(x, y, 90) = -z, §5): Rodrigues' formula with the angle negated.
+    const double c = std::cos(-angle), s = std::sin(-angle);
+    return Numeric::vector(v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c)));
+  }
+  if (n == "strlen" || n == "asc" || n == "val" || n == "file_exists") {
+    expect("(", "");
+    std::string s = parse_string();
+    expect(")", "");
+    if (n == "strlen") return Numeric::scalar(static_cast<double>(s.size()));
+    if (n == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
+    if (n == "val") return Numeric::scalar(std::atof(s.c_str()));
+    return Numeric::scalar(find_include(s) || std::filesystem::exists(s) ? 1.0 : 0.0);
+  }
+  if (n == "strcmp") {
+    expect("(", "");
+    std::string a = parse_string();
+    expect(",", "");
+    std::string b = parse_string();
+    expect(")", "");
+    return Numeric::scalar(static_cast<double>(a.compare(b) < 0 ? -1 : (a.compare(b) > 0 ? 1 : 0)));
+  }
+  if (n == "defined") {
+    expect("(", "");
+    Token id = raw();
+    expect(")", "");
+    return Numeric::scalar(id.kind == TokenKind::identifier && !is_reserved_word(id.text) &&
+                                   symbols_.find(std::string(id.text))
+                               ? 1.0 : 0.0);
+  }
+  if (n == "seed") {
+    Args a = parse_call_arguments(name, 1, 1);
+    rand_streams_.push_back(static_cast<std::uint32_t>(static_cast<long long>(a[0])));
+    return Numeric::scalar(static_cast<double>(rand_streams_.size() - 1));
+  }
+  if (n == "rand") {
+    Args a = parse_call_arguments(name, 1, 1);
+    const auto index = static_cast<std::size_t>(a[0]);
+    if (a[0] < 0 || index >= rand_streams_.size()) fail_at(name, "rand() of a stream that seed() did not create");
+    // POV-Ray's generator (§5 "Random numbers"): a 32-bit LCG, result scaled to [0,1].
+    std::uint32_t& s = rand_streams_[index];
+    s = s * 1812433253u + 12345u;
+    return Numeric::scalar(static_cast<double>(s) / 4294967295.0);
+  }
+  if (peek().is("(")) fail_unsupported(name, "the function '" + std::string(n) + "'");
+  fail_expected(name, "a number, vector or expression");
+}
+
+Numeric Interpreter::parse_primary() {
+  Token t = next();
+  switch (t.kind) {
+    case TokenKind::number: return Numeric::scalar(t.number);
+    case TokenKind::symbol:
+      if (t.is("(")) {
+        Numeric n = parse_expression();
+        expect(")", " closing the parenthesis");
+        return n;
+      }
+      if (t.is("<")) return parse_vector_literal(t);
+      fail_expected(t, "a number, vector or expression");
+    case TokenKind::identifier: break;
+    default: fail_expected(t, "a number, vector or expression");
+  }
+  const std::string_view w = t.text;
+  if (!is_reserved_word(w)) {
+    const Value* v = symbols_.find(std::string(w));
+    if (!v) fail_at(t, "undeclared identifier '" + std::string(w) + "'");
+    if (!std::holds_alternative<Numeric>(*v))
+      fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +
+                     std::string(w) + "'");
+    return std::get<Numeric>(*v);
+  }
+  if (w == "x") return Numeric::vector({1, 0, 0});
+  if (w == "y") return Numeric::vector({0, 1, 0});
+  if (w == "z") return Numeric::vector({0, 0, 1});
+  if (w == "t") { Numeric n; n.terms = 4; n.v[3] = 1; return n; }
+  if (w == "u" || w == "v") { Numeric n; n.terms = 2; n.v[w == "u" ? 0 : 1] = 1; return n; }
+  if (w == "pi") return Numeric::scalar(M_PI);
+  if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
+  if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
+  if (w == "version") return Numeric::scalar(scene_.language_version / 100.0);
+  if (w == "clock" || w == "clock_delta") return Numeric::scalar(0);
+  if (w == "clock_on") return Numeric::scalar(0);
+  if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w.starts_with("srgb"))
+    return parse_colour_keyword_form(t);
+  if (w == "color" || w == "colour") {
+    unget(t);
+    return Numeric::from_colour(parse_colour());
+  }
+  return parse_function_call(t);
+}
+
+}  // namespace povtrace::sdl

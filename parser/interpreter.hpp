@@ -1,0 +1,153 @@
+// The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
+// owns the token stream (a stack of source frames), the symbol tables, the control-flow stack of directives,
+// and the statement parsers that fill the SceneDescription. Its member functions are implemented by area:
+//   token_stream.cpp  frames, raw tokens, directive dispatch, macro calls
+//   directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
+//   expressions.cpp   float/vector/colour/string expressions and built-in functions
+//   textures.cpp      pigment, finish, texture, interior
+//   objects.cpp       shapes, CSG, object modifiers and transforms
+//   camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
+//   scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "parser/lexer.hpp"
+#include "parser/parse_scene.hpp"
+#include "parser/symbols.hpp"
+#include "parser/values.hpp"
+
+namespace povtrace::sdl {
+
+class Interpreter {
+ public:
+  explicit Interpreter(const ParseOptions& options);
+  SceneDescription run(std::unique_ptr<SourceFile> main_file);
+
+ private:
+  // ---- token stream (token_stream.cpp) ----
+  struct Frame {
+    const SourceFile* file = nullptr;
+    LexPosition pos;
+    enum class Kind { main, include, macro } kind = Kind::main;
+  };
+  struct Control {
+    enum class Kind { if_branch, while_loop, for_loop, macro_call } kind = Kind::if_branch;
+    std::size_t frame = 0;       // frame the construct started in (loops must end there)
+    LexPosition resume;          // while: start of the condition; for: first byte of the body
+    std::string for_variable;
+    double for_end = 0, for_step = 1;
+    SourceLoc loc;
+  };
+  Token raw();                   // next token of the frame stack, no directive processing
+  Token next();                  // next token after directives and macro calls
+  Token peek();
+  void unget(const Token& t) { pushed_back_.push_back(t); }
+  Token expect(std::string_view symbol, std::string_view context);
+  bool accept(std::string_view symbol);   // consumes the token if it is `symbol`
+  std::string expect_identifier_raw(std::string_view context);
+  [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
+  [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
+  [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
+  [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
+  void warn(const SourceLoc& loc, const std::string& message) const;
+  std::string describe(const Token& t) const;
+  const SourceFile& file_of(const SourceLoc& loc) const;
+  bool is_macro_call(const Token& t) const;
+
+  // ---- directives (directives.cpp) ----
+  void directive(const Token& hash);
+  void directive_version(const Token& at);
+  void directive_declare(const Token& at, bool local);
+  void directive_undef();
+  void directive_include(const Token& at);
+  void directive_if(const Token& at, int kind);   // 0 #if, 1 #ifdef, 2 #ifndef
+  void directive_else(const Token& at, bool is_elseif);
+  void directive_end(const Token& at);
+  void directive_while(const Token& at);
+  void directive_for(const Token& at);
+  void directive_macro(const Token& at);
+  void directive_message(const Token& at, const std::string& kind);
+  void invoke_macro(const Token& name);
+  bool condition_in_parens();
+  bool identifier_defined_in_parens();
+  // Skips raw tokens to the #else/#elseif/#end closing the current level; returns the directive name found
+  // ("else", "elseif", "end"), leaving the stream just after that word.
+  std::string skip_branch(const Token& opener, bool stop_at_else);
+  void seek(std::size_t frame, LexPosition pos);
+  void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind);
+  std::optional<std::filesystem::path> find_include(const std::string& name) const;
+
+  // ---- expressions (expressions.cpp) ----
+  Numeric parse_expression();            // full level: ?:, & |, comparisons, + -
+  Numeric parse_additive();              // parameter level (Parse_Rel_Factor)
+  Numeric parse_multiplicative();
+  Numeric parse_unary();
+  Numeric parse_postfix(Numeric value, const Token& start);
+  Numeric parse_primary();
+  Numeric parse_vector_literal(const Token& open);
+  Numeric parse_colour_keyword_form(const Token& keyword);
+  Numeric parse_function_call(const Token& name);
+  double parse_float();
+  double parse_float_full();             // a float at the full level (inside parentheses semantics)
+  Vec3 parse_vector();
+  Colour parse_colour();                 // Parse_Colour: optional colour keyword, forms, overrides
+  bool starts_colour(const Token& t) const;
+  std::string parse_string();
+  bool starts_string(const Token& t) const;
+  double to_float(const Numeric& n, const Token& at) const;
+  std::vector<double> parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+
+  // ---- textures (textures.cpp) ----
+  Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
+  Finish parse_finish_block(const Token& keyword, const Finish& start);
+  Interior parse_interior_block(const Token& keyword, const Interior& start);
+  std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);
+  bool try_pigment_item(const Token& t, Pigment& p);
+  bool try_transform(const Token& t, Matrix& m);   // translate/rotate/scale/matrix/transform; composes into m
+  Matrix parse_transform_block(const Token& keyword);
+  const Texture& default_texture() const { return default_texture_; }
+
+  // ---- objects (objects.cpp) ----
+  std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source
+  Object parse_sphere(const Token& keyword);
+  Object parse_plane(const Token& keyword);
+  Object parse_box(const Token& keyword);
+  Object parse_csg(const Token& keyword, CsgKind kind);
+  SceneItem parse_object_block(const Token& keyword);
+  void parse_object_modifiers(Object& object);
+  bool try_object_modifier(const Token& t, Object& object);
+  void apply_transform(Object& object, const Matrix& m);
+
+  // ---- camera and lights (camera_lights.cpp) ----
+  Camera parse_camera(const Token& keyword);
+  Light parse_light(const Token& keyword);
+  bool try_light_modifier(const Token& t, Light& light);
+  void apply_transform(Light& light, const Matrix& m);
+
+  // ---- scene (scene.cpp) ----
+  void parse_statement(const Token& t);
+  void parse_global_settings(const Token& keyword);
+  void parse_background(const Token& keyword);
+  void parse_default(const Token& keyword);
+  std::optional<Value> try_parse_rvalue(const Token& first);
+  void place_object(Object object);
+
+  const ParseOptions& options_;
+  std::vector<std::unique_ptr<SourceFile>> files_;
+  std::vector<Frame> frames_;
+  std::vector<Control> controls_;
+  std::vector<Token> pushed_back_;
+  SymbolTable symbols_;
+  SceneDescription scene_;
+  Texture default_texture_;
+  bool camera_seen_ = false;
+  bool statement_seen_ = false;
+  std::vector<std::uint32_t> rand_streams_;
+};
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,179 @@
+#include "parser/lexer.hpp"
+
+#include <charconv>
+#include <string>
+
+#include <tao/pegtl.hpp>
+
+namespace povtrace::sdl {
+namespace pegtl = tao::pegtl;
+
+// ---- Grammar: one rule per lexical concept -------------------------------------------------------------
+namespace grammar {
+using namespace pegtl;
+
+// Blanks: isspace characters, plus NUL and Ctrl-Z, which POV-Ray also ignores.
+struct blank_char : one<' ', '\t', '\n', '\r', '\v', '\f', '\0', '\x1a'> {};
+struct line_comment : seq<two<'/'>, until<eolf>> {};
+struct block_comment_open : string<'/', '*'> {};
+struct block_comment_close : string<'*', '/'> {};
+// Block comments nest (Parse_C_Comments recurses on an inner "/*").
+struct block_comment;
+struct block_comment_body : until<block_comment_close, sor<block_comment, any>> {};
+struct block_comment : if_must<block_comment_open, block_comment_body> {};
+struct skip : star<sor<plus<blank_char>, line_comment, block_comment>> {};
+
+struct exponent : seq<one<'e', 'E'>, opt<one<'+', '-'>>, plus<digit>> {};
+struct number : sor<seq<plus<digit>, opt<one<'.'>, star<digit>>, opt<exponent>>,
+                    seq<one<'.'>, plus<digit>, opt<exponent>>> {};
+struct identifier : pegtl::identifier {};
+struct string_char : sor<seq<one<'\\'>, not_one<'\n', '\r'>>, not_one<'"', '\n', '\r'>> {};
+struct string_literal : if_must<one<'"'>, until<one<'"'>, string_char>> {};
+struct two_char_symbol : sor<string<'<', '='>, string<'>', '='>, string<'!', '='>> {};
+struct one_char_symbol : one<'{', '}', '(', ')', '[', ']', '<', '>', ',', ';', ':', '?', '!', '=', '+', '-', '*',
+                             '/', '.', '&', '|', '#', '%', '^', '@', '$', '\'', '~', '`', '\\'> {};
+struct symbol : sor<two_char_symbol, one_char_symbol> {};
+struct token : sor<number, identifier, string_literal, symbol> {};
+struct next_token : seq<skip, sor<eof, token>> {};
+
+template <typename Rule> inline constexpr const char* error_message = nullptr;
+template <> inline constexpr const char* error_message<block_comment_body> =
+    "unterminated block comment: expected '*/' (block comments nest, so every '/*' needs its own '*/')";
+template <> inline constexpr const char* error_message<until<one<'"'>, string_char>> =
+    "unterminated string: expected '\"' before the end of the line";
+struct error_control {
+  template <typename Rule> static constexpr auto message = error_message<Rule>;
+  template <typename Rule> static constexpr auto raise_on_failure = false;
+};
+template <typename Rule> using control = must_if<error_control>::control<Rule>;
+}  // namespace grammar
+
+// ---- Actions: remember which kind of token matched --------------------------------------------------------
+namespace {
+struct Capture {
+  TokenKind kind = TokenKind::end_of_input;
+  const char* begin = nullptr;
+  const char* end = nullptr;
+  pegtl::position pos{pegtl::internal::iterator{}, ""};
+};
+
+template <typename Rule> struct action : pegtl::nothing<Rule> {};
+template <TokenKind K> struct mark {
+  template <typename ActionInput> static void apply(const ActionInput& in, Capture& c) {
+    c.kind = K;
+    c.begin = in.begin();
+    c.end = in.end();
+    c.pos = in.position();
+  }
+};
+template <> struct action<grammar::number> : mark<TokenKind::number> {};
+template <> struct action<grammar::identifier> : mark<TokenKind::identifier> {};
+template <> struct action<grammar::string_literal> : mark<TokenKind::string> {};
+template <> struct action<grammar::symbol> : mark<TokenKind::symbol> {};
+
+LexPosition advance(const LexPosition& start, const char* from, const char* to) {
+  LexPosition p = start;
+  for (const char* c = from; c < to; ++c) {
+    ++p.offset;
+    if (*c == '\n') { ++p.line; p.column = 1; } else { ++p.column; }
+  }
+  return p;
+}
+
+SourceLoc loc_of(const SourceFile& file, const LexPosition& p) { return SourceLoc{file.name, p.line, p.column}; }
+}  // namespace
+
+Token lex_token(const SourceFile& file, LexPosition at) {
+  const char* base = file.text.data();
+  const char* begin = base + at.offset;
+  const char* end = base + file.text.size();
+  pegtl::memory_input<pegtl::tracking_mode::eager, pegtl::eol::lf_crlf, std::string> in(
+      begin, end, file.name ? *file.name : std::string(), at.offset, static_cast<std::size_t>(at.line),
+      static_cast<std::size_t>(at.column));
+  Capture c;
+  bool ok = false;
+  try {
+    ok = pegtl::parse<grammar::next_token, action, grammar::control>(in, c);
+  } catch (const pegtl::parse_error& e) {
+    const auto& p = e.positions().front();
+    SourceLoc loc{file.name, static_cast<int>(p.line), static_cast<int>(p.column)};
+    throw ParseError(loc, std::string(e.message()), std::string(file.line_text(loc.line)));
+  }
+  Token t;
+  if (!ok) {
+    // Not a token and not the end: an illegal character after the skipped blanks.
+    const char* bad = in.current();
+    LexPosition p = advance(at, begin, bad);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(*bad));
+    throw ParseError(loc_of(file, p), std::string("illegal character ") + hex + " (expected a number, identifier, "
+                     "string, operator or punctuation)", std::string(file.line_text(p.line)));
+  }
+  if (c.kind == TokenKind::end_of_input) {
+    t.begin = t.end = advance(at, begin, end);
+    t.loc = loc_of(file, t.begin);
+    return t;
+  }
+  t.kind = c.kind;
+  t.text = std::string_view(c.begin, static_cast<std::size_t>(c.end - c.begin));
+  t.begin = LexPosition{c.pos.byte, static_cast<int>(c.pos.line), static_cast<int>(c.pos.column)};
+  t.end = advance(t.begin, c.begin, c.end);
+  t.loc = loc_of(file, t.begin);
+  if (t.kind == TokenKind::number) {
+    // A second '.' right after a number is an error in POV-Ray ("1.2.3").
+    if (c.end < end && *c.end == '.' && c.end + 1 < end && std::isdigit(static_cast<unsigned char>(c.end[1])))
+      throw ParseError(loc_of(file, t.end), "malformed number: a second '.' (expected one decimal point)",
+                       std::string(file.line_text(t.end.line)));
+    // from_chars stops at the first character it cannot use; "1." is fine, and so is "1.e3".
+    std::string digits(t.text);
+    t.number = std::strtod(digits.c_str(), nullptr);
+  }
+  return t;
+}
+
+std::string string_value(const Token& token, const SourceFile& file, bool decode_escapes) {
+  std::string_view body = token.text.substr(1, token.text.size() - 2);
+  std::string out;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    char c = body[i];
+    if (c != '\\' || i + 1 >= body.size()) { out += c; continue; }
+    char e = body[++i];
+    if (e == '"') { out += '"'; continue; }  // the lexer-level escape, kept even in file names
+    if (!decode_escapes) { out += '\\'; out += e; continue; }
+    switch (e) {
+      case 'a': out += '\a'; break;
+      case 'b': out += '\b'; break;
+      case 'f': out += '\f'; break;
+      case 'n': out += '\n'; break;
+      case 'r': out += '\r'; break;
+      case 't': out += '\t'; break;
+      case 'v': out += '\v'; break;
+      case '\\': out += '\\'; break;
+      case '\'': out += '\''; break;
+      case 'u': {
+        unsigned code = 0;
+        auto hex = body.substr(i + 1, 4);
+        auto [ptr, ec] = std::from_chars(hex.data(), hex.data() + hex.size(), code, 16);
+        if (hex.size() != 4 || ec != std::errc() || ptr != hex.data() + 4) {
+          SourceLoc loc = token.loc;
+          loc.column += static_cast<int>(i) + 1;
+          throw ParseError(loc, "bad \\u escape: expected four hexadecimal digits",
+                           std::string(file.line_text(loc.line)));
+        }
+        if (code < 0x80) out += static_cast<char>(code); else out += ' ';  // non-ASCII → space, as POV-Ray
+        i += 4;
+        break;
+      }
+      default: {
+        SourceLoc loc = token.loc;
+        loc.column += static_cast<int>(i);
+        throw ParseError(loc, std::string("unknown escape sequence '\\") + e +
+                         "' (expected one of \\a \\b \\f \\n \\r \\t \\v \\\\ \\' \\\" \\uXXXX)",
+                         std::string(file.line_text(loc.line)));
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,189 @@
+// Shapes, CSG and object modifiers (povray-sdl-and-geometry.md §8–§10). Modifiers apply in written order and
+// every transform also moves what is already attached (textures) — a texture added after a transform is not
+// affected by it (§9, [V sdl_tex_order]).
+#include <cmath>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
+  if (!texture) return;
+  auto moved = std::make_shared<Texture>(*texture);
+  for (auto& layer : moved->layers) layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
+  texture = std::move(moved);
+}
+
+// The object's own top texture layer, created from the #default texture when the object has none yet
+// (object-level pigment/finish on an untextured object, §4 #default).
+TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
+  auto tex = std::make_shared<Texture>(object.texture ? *object.texture : defaults);
+  object.texture = tex;
+  return tex->layers.back();
+}
+}  // namespace
+
+void Interpreter::apply_transform(Object& object, const Matrix& m) {
+  object.world_from_object = object.world_from_object * m;
+  transform_texture(object.texture, m);
+}
+
+bool Interpreter::try_object_modifier(const Token& t, Object& object) {
+  Matrix m;
+  if (try_transform(t, m)) { apply_transform(object, m); return true; }
+  const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+  if (k == "texture") {
+    auto tex = parse_texture_block(t);
+    // Each texture statement links its layers on top of what the object already has, so consecutive blocks
+    // stack as layers; the last written is the top (§11, pipeline §2 "Layers").
+    if (object.texture) {
+      auto layered = std::make_shared<Texture>(*object.texture);
+      for (const auto& l : tex->layers) layered->layers.push_back(l);
+      object.texture = std::move(layered);
+    } else {
+      object.texture = std::move(tex);
+    }
+    return true;
+  }
+  if (k == "pigment") {
+    TextureLayer& layer = own_top_layer(object, default_texture());
+    layer.pigment = parse_pigment_block(t, layer.pigment);
+    return true;
+  }
+  if (k == "finish") {
+    TextureLayer& layer = own_top_layer(object, default_texture());
+    layer.finish = parse_finish_block(t, layer.finish);
+    return true;
+  }
+  if (k == "interior") {
+    object.interior = parse_interior_block(t, object.interior.value_or(Interior{}));
+    return true;
+  }
+  if (k == "no_shadow") { object.no_shadow = true; return true; }
+  if (k == "inverse") { object.inverse = !object.inverse; return true; }
+  if (k == "hollow") {
+    // hollow only matters for media and fog inside objects, which povtrace does not render yet; the flag
+    // itself changes nothing in the image otherwise. An optional boolean follows.
+    Token n = peek();
+    if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false")) parse_float();
+    return true;
+  }
+  if (k == "normal") fail_unsupported(t, "'normal { }' perturbation");
+  return false;
+}
+
+void Interpreter::parse_object_modifiers(Object& object) {
+  while (true) {
+    Token t = next();
+    if (t.is("}")) return;
+    if (try_object_modifier(t, object)) continue;
+    if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+      fail_unsupported(t, "the object modifier '" + std::string(t.text) + "'");
+    fail_expected(t, "an object modifier (translate, rotate, scale, matrix, transform, texture, pigment, finish, "
+                     "interior, no_shadow, inverse) or '}'");
+  }
+}
+
+Object Interpreter::parse_sphere(const Token& keyword) {
+  expect("{", " after 'sphere'");
+  Object o;
+  o.loc = keyword.loc;
+  Sphere s;
+  s.centre = parse_vector();
+  expect(",", " between the sphere's centre and radius");
+  s.radius = parse_float();
+  o.shape = s;
+  parse_object_modifiers(o);
+  return o;
+}
+
+Object Interpreter::parse_plane(const Token& keyword) {
+  expect("{", " after 'plane'");
+  Object o;
+  o.loc = keyword.loc;
+  Plane p;
+  Token at = peek();
+  const Vec3 n = parse_vector();
+  if (length(n) == 0) fail_at(at, "the plane's normal is the zero vector (expected a direction)");
+  expect(",", " between the plane's normal and distance");
+  // The normal is normalised first; the distance is measured along the unit normal ([V sdl_plane_side]).
+  p.normal = normalize(n);
+  p.distance = parse_float();
+  o.shape = p;
+  parse_object_modifiers(o);
+  return o;
+}
+
+Object Interpreter::parse_box(const Token& keyword) {
+  expect("{", " after 'box'");
+  Object o;
+  o.loc = keyword.loc;
+  const Vec3 a = parse_vector();
+  expect(",", " between the box's two corners");
+  const Vec3 b = parse_vector();
+  o.shape = Box{min(a, b), max(a, b)};   // corners sorted per axis ([V sdl_promote])
+  parse_object_modifiers(o);
+  return o;
+}
+
+Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
+  fail_unsupported(keyword, "CSG ('" + std::string(keyword.text) + "')");
+  (void)kind;
+}
+
+// object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
+SceneItem Interpreter::parse_object_block(const Token& keyword) {
+  expect("{", " after 'object'");
+  Token t = next();
+  std::optional<SceneItem> item;
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))
+      item = *std::get<std::shared_ptr<const SceneItem>>(*v);
+  }
+  if (!item) item = try_parse_item(t);
+  if (!item) fail_expected(t, "an object identifier or an object inside object { }");
+  if (auto* light = std::get_if<Light>(&*item)) {
+    while (true) {
+      Token m = next();
+      if (m.is("}")) break;
+      if (!try_light_modifier(m, *light)) fail_expected(m, "a light_source modifier or '}'");
+    }
+    return *item;
+  }
+  Object& o = std::get<Object>(*item);
+  (void)keyword;
+  parse_object_modifiers(o);
+  return *item;
+}
+
+std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
+  if (t.kind != TokenKind::identifier) return std::nullopt;
+  const std::string_view k = t.text;
+  if (k == "sphere") return parse_sphere(t);
+  if (k == "plane") return parse_plane(t);
+  if (k == "box") return parse_box(t);
+  if (k == "object") return parse_object_block(t);
+  if (k == "light_source") return parse_light(t);
+  if (k == "union") return parse_csg(t, CsgKind::union_);
+  if (k == "merge") return parse_csg(t, CsgKind::merge);
+  if (k == "intersection") return parse_csg(t, CsgKind::intersection);
+  if (k == "difference") return parse_csg(t, CsgKind::difference);
+  static const std::string_view shapes[] = {
+      "cylinder", "cone", "torus", "disc", "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
+      "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",
+      "sphere_sweep", "bicubic_patch", "quadric", "cubic", "quartic", "poly", "parametric", "ovus", "lemon",
+      "light_group", "polynomial"};
+  for (auto s : shapes)
+    if (k == s) fail_unsupported(t, "the shape '" + std::string(k) + "'");
+  if (!is_reserved_word(k)) {
+    const Value* v = symbols_.find(std::string(k));
+    if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))
+      return *std::get<std::shared_ptr<const SceneItem>>(*v);
+  }
+  return std::nullopt;
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,39 @@
+// The front end's one entry point: scene file in, SceneDescription out.
+//
+// Stages (STYLE.md (a)): PEGTL lexer (lexer.hpp) → token stream with directives, #include and macro calls
+// handled between any two tokens (interpreter, token_stream.cpp / directives.cpp) → expression evaluation and
+// statement parsing into plain description structs → post-processing of textures as POV-Ray's parser does
+// when an object is placed. Throws ParseError (file:line:column, source line, caret, what was expected).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "parser/source.hpp"
+
+namespace povtrace {
+
+struct ParseOptions {
+  // Include search after the working directory (+L paths in order); the standard POV-Ray include directory
+  // is appended by parse_scene when it exists and is not listed already.
+  std::vector<std::filesystem::path> library_paths;
+  std::vector<std::pair<std::string, double>> declares;   // Declare=NAME=VALUE
+  int image_width = 800;
+  int image_height = 600;
+  bool output_alpha = false;
+  // Receives #debug/#warning text and parser warnings (already formatted). Default: stderr.
+  std::function<void(const std::string&)> message_sink;
+};
+
+inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";
+
+SceneDescription parse_scene(const std::filesystem::path& file, const ParseOptions& options);
+
+// The same, from text in memory (tests); `name` is used in messages.
+SceneDescription parse_scene_text(const std::string& text, const std::string& name, const ParseOptions& options);
+
+}  // namespace povtrace

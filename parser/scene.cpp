@@ -1,0 +1,195 @@
+// Top-level statements, global settings, #default, right-hand values, and the entry points.
+#include <iostream>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
+  default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
+}
+
+SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
+  frames_.push_back(Frame{main_file.get(), LexPosition{}, Frame::Kind::main});
+  files_.push_back(std::move(main_file));
+  // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
+  const std::pair<const char*, double> predeclared[] = {
+      {"image_width", options_.image_width}, {"image_height", options_.image_height}, {"clock_delta", 0},
+      {"final_clock", 0}, {"final_frame", 0}, {"frame_number", 0}, {"initial_clock", 0}, {"initial_frame", 0}};
+  for (const auto& [name, value] : predeclared) symbols_.declare(name, Numeric::scalar(value));
+  for (const auto& [name, value] : options_.declares) symbols_.declare(name, Numeric::scalar(value));
+
+  while (true) {
+    Token t = next();
+    if (t.kind == TokenKind::end_of_input) break;
+    parse_statement(t);
+  }
+  if (!controls_.empty()) {
+    const Control& open = controls_.back();
+    fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
+  }
+  return std::move(scene_);
+}
+
+void Interpreter::parse_statement(const Token& t) {
+  statement_seen_ = true;
+  const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+  if (k == "camera") {
+    scene_.camera = parse_camera(t);
+    camera_seen_ = true;
+    return;
+  }
+  if (k == "global_settings") return parse_global_settings(t);
+  if (k == "background") return parse_background(t);
+  if (auto item = try_parse_item(t)) {
+    if (auto* light = std::get_if<Light>(&*item)) scene_.lights.push_back(std::move(*light));
+    else place_object(std::move(std::get<Object>(*item)));
+    return;
+  }
+  static const std::string_view unsupported[] = {"sky_sphere", "fog", "media", "rainbow", "photons", "radiosity",
+                                                 "texture", "pigment", "finish"};
+  for (auto u : unsupported)
+    if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
+  if (k == "declare" || k == "include" || k == "version")
+    fail_at(t, "'" + std::string(k) + "' must be written as a directive: '#" + std::string(k) + "'");
+  if (t.is(";")) fail_at(t, "unexpected ';' (a ';' only ends #declare, #local and #version values)");
+  fail_expected(t, "an object, light_source, camera, background, global_settings or a directive");
+}
+
+void Interpreter::parse_global_settings(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after 'global_settings'");
+  while (true) {
+    Token t = next();
+    if (t.is("}")) return;
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (k == "assumed_gamma") {
+      scene_.settings.assumed_gamma = parse_float();
+      if (*scene_.settings.assumed_gamma <= 0) fail_at(t, "assumed_gamma must be positive");
+    } else if (k == "ambient_light") {
+      Colour c = parse_colour();
+      scene_.settings.ambient_light = Colour{c.r, c.g, c.b, 0, 0};
+    } else if (k == "max_trace_level") {
+      // Clamped to 1…256 (pipeline §4 "Recursion limits").
+      scene_.settings.max_trace_level = std::clamp(static_cast<int>(parse_float()), 1, 256);
+    } else if (k == "adc_bailout") {
+      scene_.settings.adc_bailout = parse_float();
+    } else if (k == "charset" || k == "number_of_waves" || k == "noise_generator") {
+      next();   // accepted: no effect on what povtrace renders so far
+    } else if (!k.empty() && is_reserved_word(k)) {
+      fail_unsupported(t, "the global setting '" + std::string(k) + "'");
+    } else {
+      fail_expected(t, "assumed_gamma, ambient_light, max_trace_level, adc_bailout or '}'");
+    }
+  }
+}
+
+void Interpreter::parse_background(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after 'background'");
+  scene_.background = parse_colour();
+  expect("}", " after the background colour");
+}
+
+// #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
+void Interpreter::parse_default(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after #default");
+  while (true) {
+    Token t = next();
+    if (t.is("}")) return;
+    TextureLayer& layer = default_texture_.layers.back();
+    if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
+    else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
+    else if (t.is("texture")) default_texture_ = *parse_texture_block(t);
+    else if (t.is("normal") || t.is("camera") || t.is("radiosity"))
+      fail_unsupported(t, "#default { " + std::string(t.text) + " }");
+    else fail_expected(t, "texture, pigment or finish in #default { }");
+  }
+}
+
+std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
+  if (starts_string(first)) {
+    unget(first);
+    return parse_string();
+  }
+  const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
+  if (k == "texture") {
+    auto tex = parse_texture_block(first);
+    // Several texture blocks in a row declare a layered texture.
+    while (peek().is("texture")) {
+      Token more = next();
+      auto top = parse_texture_block(more);
+      auto layered = std::make_shared<Texture>(*tex);
+      for (const auto& l : top->layers) layered->layers.push_back(l);
+      tex = std::move(layered);
+    }
+    return Value(tex);
+  }
+  if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
+  if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "interior") return Value(parse_interior_block(first, Interior{}));
+  if (k == "camera") return Value(parse_camera(first));
+  if (first.kind == TokenKind::identifier && !is_reserved_word(k)) {
+    const Value* v = symbols_.find(std::string(k));
+    if (v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) return *v;
+  }
+  if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
+    static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
+                                                   "no", "on", "off", "version", "clock", "clock_on",
+                                                   "clock_delta"};
+    bool is_value_word = false;
+    for (auto w : value_words) is_value_word = is_value_word || k == w;
+    Token after = peek();
+    if (!is_value_word && !after.is("(")) return std::nullopt;
+  }
+  unget(first);
+  return Value(parse_additive());
+}
+
+// Post_Process when a finished top-level object is placed: anything untextured gets the current #default
+// texture (§10 "Texture inheritance").
+void Interpreter::place_object(Object object) {
+  if (!object.texture) object.texture = std::make_shared<const Texture>(default_texture_);
+  scene_.objects.push_back(std::move(object));
+}
+
+}  // namespace povtrace::sdl
+
+namespace povtrace {
+
+namespace {
+ParseOptions with_standard_includes(const ParseOptions& options) {
+  ParseOptions o = options;
+  std::error_code ec;
+  const std::filesystem::path standard(kStandardIncludeDir);
+  if (std::filesystem::is_directory(standard, ec) &&
+      std::find(o.library_paths.begin(), o.library_paths.end(), standard) == o.library_paths.end())
+    o.library_paths.push_back(standard);
+  return o;
+}
+}  // namespace
+
+SceneDescription parse_scene_text(const std::string& text, const std::string& name, const ParseOptions& options) {
+  auto file = std::make_unique<SourceFile>();
+  file->name = std::make_shared<const std::string>(name);
+  file->path = name;
+  file->text = text;
+  const ParseOptions o = with_standard_includes(options);
+  sdl::Interpreter interpreter(o);
+  return interpreter.run(std::move(file));
+}
+
+SceneDescription parse_scene(const std::filesystem::path& path, const ParseOptions& options) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const std::exception& e) {
+    throw ParseError(SourceLoc{std::make_shared<const std::string>(path.string()), 0, 0}, e.what());
+  }
+  return parse_scene_text(text, path.string(), options);
+}
+
+}  // namespace povtrace

@@ -1,0 +1,49 @@
+#include "parser/source.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace povtrace {
+
+std::string_view SourceFile::line_text(int line) const {
+  std::size_t begin = 0;
+  for (int current = 1; current < line; ++current) {
+    begin = text.find('\n', begin);
+    if (begin == std::string::npos) return {};
+    ++begin;
+  }
+  std::size_t end = text.find('\n', begin);
+  if (end == std::string::npos) end = text.size();
+  if (end > begin && text[end - 1] == '\r') --end;
+  return std::string_view(text).substr(begin, end - begin);
+}
+
+std::string format_diagnostic(const SourceLoc& loc, std::string_view severity, std::string_view message,
+                              std::string_view line_text) {
+  std::string out = loc.to_string() + ": " + std::string(severity) + ": " + std::string(message);
+  if (!line_text.empty() || loc.column > 0) {
+    std::string shown(line_text);
+    std::string caret;
+    // Keep tabs in the caret line so the caret lines up under the column in a terminal.
+    for (int i = 1; i < loc.column && i - 1 < static_cast<int>(shown.size()); ++i)
+      caret += shown[i - 1] == '\t' ? '\t' : ' ';
+    for (char& c : shown)
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t') c = ' ';  // never echo control bytes
+    out += "\n" + shown + "\n" + caret + "^";
+  }
+  return out;
+}
+
+ParseError::ParseError(const SourceLoc& loc, const std::string& message, std::string line_text)
+    : std::runtime_error(format_diagnostic(loc, "error", message, line_text)), loc_(loc), message_(message) {}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open '" + path.string() + "'");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw std::runtime_error("cannot read '" + path.string() + "'");
+  return buffer.str();
+}
+
+}  // namespace povtrace

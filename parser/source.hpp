@@ -1,0 +1,45 @@
+// Source files and diagnostics. Every error the front end reports names file:line:column, shows the source
+// line with a caret under the column, and says what was expected (STYLE.md (b) "Throw; don't exit").
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "parser/source_location.hpp"
+
+namespace povtrace {
+
+// One file's text, kept in memory for the whole parse (macros and loops replay it, errors quote it).
+struct SourceFile {
+  std::shared_ptr<const std::string> name;  // as shown in messages
+  std::filesystem::path path;
+  std::string text;
+
+  // The text of line `line` (1-based), without its line terminator.
+  std::string_view line_text(int line) const;
+};
+
+// The one exception type of the front end: a located error with a fully formatted message.
+class ParseError : public std::runtime_error {
+ public:
+  ParseError(const SourceLoc& loc, const std::string& message, std::string line_text = {});
+  const SourceLoc& location() const { return loc_; }
+  const std::string& bare_message() const { return message_; }
+
+ private:
+  SourceLoc loc_;
+  std::string message_;
+};
+
+// "file:line:col: error: message\n<line>\n    ^" (the caret line is omitted when the line is unknown).
+std::string format_diagnostic(const SourceLoc& loc, std::string_view severity, std::string_view message,
+                              std::string_view line_text);
+
+// Reads a whole file; throws std::runtime_error naming the path when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
+}  // namespace povtrace

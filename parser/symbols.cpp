@@ -1,0 +1,76 @@
+#include "parser/symbols.hpp"
+
+namespace povtrace::sdl {
+
+std::string value_type_name(const Value& v) {
+  struct Namer {
+    std::string operator()(const Numeric& n) const {
+      if (n.colour) return "colour";
+      static const char* names[] = {"", "float", "2-D vector", "vector", "4-D vector", "colour"};
+      return names[n.terms];
+    }
+    std::string operator()(const std::string&) const { return "string"; }
+    std::string operator()(const std::shared_ptr<const SceneItem>& s) const {
+      return std::holds_alternative<Light>(*s) ? "light_source" : "object";
+    }
+    std::string operator()(const std::shared_ptr<const Texture>&) const { return "texture"; }
+    std::string operator()(const Pigment&) const { return "pigment"; }
+    std::string operator()(const Finish&) const { return "finish"; }
+    std::string operator()(const Interior&) const { return "interior"; }
+    std::string operator()(const Camera&) const { return "camera"; }
+    std::string operator()(const MacroDefinition&) const { return "macro"; }
+    std::string operator()(const Alias&) const { return "alias"; }
+  };
+  return std::visit(Namer{}, v);
+}
+
+std::optional<std::size_t> SymbolTable::level_of(const std::string& name) const {
+  for (std::size_t i = tables_.size(); i-- > 0;)
+    if (tables_[i].count(name)) return i;
+  return std::nullopt;
+}
+
+Value* SymbolTable::resolve_alias(Value* v) {
+  // Alias chains are finite: an alias always points to an outer (older) table.
+  while (v && std::holds_alternative<Alias>(*v)) {
+    const Alias& a = std::get<Alias>(*v);
+    auto it = tables_[a.table].find(a.name);
+    v = it == tables_[a.table].end() ? nullptr : &it->second;
+  }
+  return v;
+}
+
+const Value* SymbolTable::find(const std::string& name) const {
+  auto level = level_of(name);
+  if (!level) return nullptr;
+  auto* self = const_cast<SymbolTable*>(this);
+  return self->resolve_alias(&self->tables_[*level].at(name));
+}
+
+void SymbolTable::declare(const std::string& name, Value value) {
+  if (auto level = level_of(name)) {
+    Value& slot = tables_[*level][name];
+    if (Value* target = resolve_alias(&slot)) { *target = std::move(value); return; }
+    slot = std::move(value);
+    return;
+  }
+  tables_.front()[name] = std::move(value);
+}
+
+void SymbolTable::local(const std::string& name, Value value) {
+  auto& table = tables_.back();
+  auto it = table.find(name);
+  if (it != table.end()) {
+    if (Value* target = resolve_alias(&it->second)) { *target = std::move(value); return; }
+  }
+  table[name] = std::move(value);
+}
+
+bool SymbolTable::undefine(const std::string& name) {
+  auto level = level_of(name);
+  if (!level) return false;
+  tables_[*level].erase(name);
+  return true;
+}
+
+}  // namespace povtrace::sdl

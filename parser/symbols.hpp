@@ -1,0 +1,41 @@
+// The symbol-table stack (§3): [0] globals, then one table per open include file and per active macro call.
+// Lookup runs newest to oldest (dynamic scope).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/values.hpp"
+
+namespace povtrace::sdl {
+
+class SymbolTable {
+ public:
+  SymbolTable() : tables_(1) {}
+
+  void push_scope() { tables_.emplace_back(); }
+  void pop_scope() { tables_.pop_back(); }
+  std::size_t depth() const { return tables_.size(); }
+
+  // The value visible under `name`, following macro aliases; nullptr if undeclared.
+  const Value* find(const std::string& name) const;
+  // Level of the innermost table that holds `name` (aliases not followed).
+  std::optional<std::size_t> level_of(const std::string& name) const;
+
+  // #declare: overwrite the visible entry wherever it is (through aliases), else create a global.
+  void declare(const std::string& name, Value value);
+  // #local: overwrite in the innermost table (through an alias there), else create there.
+  void local(const std::string& name, Value value);
+  // Binds a name in the innermost table without following aliases (macro parameters, #for variables).
+  void bind(const std::string& name, Value value) { tables_.back()[name] = std::move(value); }
+  // #undef: removes the innermost visible entry; false if there was none.
+  bool undefine(const std::string& name);
+
+ private:
+  Value* resolve_alias(Value* v);
+  std::vector<std::unordered_map<std::string, Value>> tables_;
+};
+
+}  // namespace povtrace::sdl

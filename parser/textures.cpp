@@ -1,0 +1,228 @@
+// pigment, finish, texture and interior blocks, and the transforms shared with objects
+// (povray-sdl-and-geometry.md §9, §11; finish defaults in povray-pixel-pipeline.md §2).
+#include <cmath>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+template <class T> const T* identifier_value(const SymbolTable& symbols, const Token& t) {
+  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return nullptr;
+  const Value* v = symbols.find(std::string(t.text));
+  return v && std::holds_alternative<T>(*v) ? &std::get<T>(*v) : nullptr;
+}
+
+void transform_pigment(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
+}  // namespace
+
+// translate/rotate/scale/matrix/transform: composes into `m` in written order (§9).
+bool Interpreter::try_transform(const Token& t, Matrix& m) {
+  if (t.is("translate")) { m = m * Matrix::translation(parse_vector()); return true; }
+  if (t.is("rotate")) { m = m * Matrix::rotation(parse_vector()); return true; }
+  if (t.is("scale")) {
+    Vec3 s = parse_vector();
+    for (int i = 0; i < 3; ++i)
+      if (s[i] == 0.0) {
+        warn(t.loc, "scale by 0 is changed to 1 in that axis, as POV-Ray does");
+        s[i] = 1.0;
+      }
+    m = m * Matrix::scaling(s);
+    return true;
+  }
+  if (t.is("matrix")) {
+    expect("<", " after 'matrix' (12 values)");
+    Matrix r;
+    for (int i = 0; i < 12; ++i) {
+      if (i > 0) expect(",", " between the 12 matrix values");
+      r.m[static_cast<std::size_t>(i / 3)][static_cast<std::size_t>(i % 3)] = parse_float();
+    }
+    expect(">", " after the 12 matrix values");
+    if (r.determinant() == 0.0) fail_at(t, "this matrix is singular (determinant 0): it cannot place an object");
+    m = m * r;
+    return true;
+  }
+  if (t.is("transform")) { m = m * parse_transform_block(t); return true; }
+  return false;
+}
+
+Matrix Interpreter::parse_transform_block(const Token& keyword) {
+  (void)keyword;
+  Token open = next();
+  if (!open.is("{")) fail_unsupported(open, "the old 'transform Identifier' form without braces");
+  Matrix m;
+  bool inverse = false;
+  while (true) {
+    Token t = next();
+    if (t.is("}")) break;
+    if (t.is("inverse")) { inverse = true; continue; }
+    if (try_transform(t, m)) continue;
+    fail_expected(t, "translate, rotate, scale, matrix, transform, inverse or '}' in transform { }");
+  }
+  return inverse ? m.inverse() : m;
+}
+
+bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
+  if (t.is("checker")) {
+    p.pattern = PatternKind::checker;
+    p.entries.clear();
+    // Optional colours; POV-Ray's defaults are blue and green.
+    Token n = peek();
+    if (starts_colour(n) || (n.kind == TokenKind::symbol && (n.is("<") || n.is("(")))) {
+      p.entries.push_back(parse_colour());
+      accept(",");
+      Token m = peek();
+      if (starts_colour(m) || m.is("<")) p.entries.push_back(parse_colour());
+    }
+    const Colour defaults[2] = {{0, 0, 1, 0, 0}, {0, 1, 0, 0, 0}};
+    while (p.entries.size() < 2) p.entries.push_back(defaults[p.entries.size()]);
+    return true;
+  }
+  if (starts_colour(t)) {
+    unget(t);
+    p.pattern = PatternKind::solid;
+    p.colour = parse_colour();
+    return true;
+  }
+  Matrix m;
+  if (try_transform(t, m)) { transform_pigment(p, m); return true; }
+  return false;
+}
+
+Pigment Interpreter::parse_pigment_block(const Token& keyword, const Pigment& start) {
+  expect("{", " after 'pigment'");
+  Pigment p = start;
+  p.loc = keyword.loc;
+  Token t = next();
+  if (const Pigment* id = identifier_value<Pigment>(symbols_, t)) {
+    p = *id;
+    t = next();
+  }
+  while (!t.is("}")) {
+    if (try_pigment_item(t, p)) { t = next(); continue; }
+    if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+      fail_unsupported(t, "the pigment item '" + std::string(t.text) + "'");
+    fail_expected(t, "a colour, 'checker', a transform or '}' in pigment { }");
+  }
+  return p;
+}
+
+Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start) {
+  expect("{", " after 'finish'");
+  Finish f = start;
+  f.loc = keyword.loc;
+  Token t = next();
+  if (const Finish* id = identifier_value<Finish>(symbols_, t)) {
+    f = *id;
+    t = next();
+  }
+  // Plain RGB parameters accept floats as greys (§5 "Colours").
+  auto rgb_parameter = [this]() {
+    Token at = peek();
+    Numeric n = parse_additive();
+    if (n.terms == 1) return Colour{n.v[0], n.v[0], n.v[0], 0, 0};
+    if (n.terms < 3) fail_at(at, "expected a float or a colour");
+    return Colour{n.v[0], n.v[1], n.v[2], 0, 0};
+  };
+  auto colour_parameter = [&]() {
+    Token n = peek();
+    if (starts_colour(n)) { Colour c = parse_colour(); c.f = c.t = 0; return c; }
+    return rgb_parameter();
+  };
+  while (!t.is("}")) {
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (k == "ambient") f.ambient = colour_parameter();
+    else if (k == "emission") f.emission = colour_parameter();
+    else if (k == "diffuse") {
+      const bool albedo = accept("albedo");
+      f.diffuse = parse_float();
+      if (albedo) fail_unsupported(t, "'diffuse albedo'");
+      if (accept(",")) f.diffuse_back = parse_float();
+    } else if (k == "brilliance") f.brilliance = parse_float();
+    else if (k == "phong") {
+      if (accept("albedo")) fail_unsupported(t, "'phong albedo'");
+      f.phong = parse_float();
+    } else if (k == "phong_size") f.phong_size = parse_float();
+    else if (k == "specular") {
+      if (accept("albedo")) fail_unsupported(t, "'specular albedo'");
+      f.specular = parse_float();
+    } else if (k == "roughness") {
+      f.roughness = parse_float();
+      if (f.roughness == 0) fail_at(t, "roughness must not be 0 (the highlight exponent is 1/roughness)");
+    } else if (k == "metallic") {
+      // `metallic` alone means 1 (§2 defaults).
+      Token n = peek();
+      const bool has_value = n.kind == TokenKind::number || n.is("(") || n.is("-") ||
+                             (n.kind == TokenKind::identifier && !is_reserved_word(n.text));
+      f.metallic = has_value ? parse_float() : 1.0;
+    } else if (k == "crand") {
+      f.crand = parse_float();
+      fail_unsupported(t, "'crand' (random speckle)");
+    } else if (!k.empty() && is_reserved_word(k)) {
+      fail_unsupported(t, "the finish item '" + std::string(k) + "'");
+    } else {
+      fail_expected(t, "a finish item (ambient, emission, diffuse, brilliance, phong, phong_size, specular, "
+                       "roughness, metallic) or '}'");
+    }
+    t = next();
+  }
+  return f;
+}
+
+Interior Interpreter::parse_interior_block(const Token& keyword, const Interior& start) {
+  (void)keyword;
+  expect("{", " after 'interior'");
+  Interior in = start;
+  Token t = next();
+  if (const Interior* id = identifier_value<Interior>(symbols_, t)) {
+    in = *id;
+    t = next();
+  }
+  while (!t.is("}")) {
+    if (t.is("ior")) in.ior = parse_float();
+    else if (t.is("fade_distance")) in.fade_distance = parse_float();
+    else if (t.is("fade_power")) in.fade_power = parse_float();
+    else if (t.is("fade_color") || t.is("fade_colour")) in.fade_colour = parse_colour();
+    else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+      fail_unsupported(t, "the interior item '" + std::string(t.text) + "'");
+    else fail_expected(t, "ior, fade_distance, fade_power, fade_color or '}' in interior { }");
+    t = next();
+  }
+  return in;
+}
+
+// texture { [T_id] pigment{} finish{} transforms }. A declared pigment/finish starts from the current #default
+// (§4 #default).
+std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& keyword) {
+  expect("{", " after 'texture'");
+  Texture tex;
+  tex.loc = keyword.loc;
+  Token t = next();
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
+      tex = *std::get<std::shared_ptr<const Texture>>(*v);
+      t = next();
+    }
+  }
+  if (tex.layers.empty()) tex.layers.push_back(default_texture().layers.front());
+  TextureLayer& layer = tex.layers.back();
+  while (!t.is("}")) {
+    Matrix m;
+    if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
+    else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
+    else if (t.is("normal")) fail_unsupported(t, "'normal { }' perturbation");
+    else if (try_transform(t, m)) {
+      for (auto& l : tex.layers) transform_pigment(l.pigment, m);
+    } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
+      fail_unsupported(t, "the texture item '" + std::string(t.text) + "'");
+    } else {
+      fail_expected(t, "pigment, finish, a transform or '}' in texture { }");
+    }
+    t = next();
+  }
+  return std::make_shared<const Texture>(std::move(tex));
+}
+
+}  // namespace povtrace::sdl

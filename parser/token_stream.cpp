@@ -1,0 +1,184 @@
+// The token stream: a stack of source frames (main file, include files, macro bodies). Directives and macro
+// calls are executed here, inside the token fetcher, so they may stand between any two tokens
+// (povray-sdl-and-geometry.md §1, items 2 and 5).
+#include <iostream>
+
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested files
+constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
+}  // namespace
+
+Token Interpreter::raw() {
+  while (true) {
+    Frame& f = frames_.back();
+    Token t = lex_token(*f.file, f.pos);
+    if (t.kind != TokenKind::end_of_input) {
+      f.pos = t.end;
+      return t;
+    }
+    if (f.kind == Frame::Kind::main) return t;
+    if (f.kind == Frame::Kind::macro)
+      fail(t.loc, "end of file inside a macro body: expected '#end'");
+    // End of an include file: its #local variables die with it (§3).
+    if (!controls_.empty() && controls_.back().frame == frames_.size() - 1)
+      fail(controls_.back().loc,
+           "this directive is not closed in its file: expected '#end' before the end of '" + *f.file->name + "'");
+    frames_.pop_back();
+    symbols_.pop_scope();
+  }
+}
+
+bool Interpreter::is_macro_call(const Token& t) const {
+  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return false;
+  const Value* v = symbols_.find(std::string(t.text));
+  return v && std::holds_alternative<MacroDefinition>(*v);
+}
+
+Token Interpreter::next() {
+  if (!pushed_back_.empty()) {
+    Token t = pushed_back_.back();
+    pushed_back_.pop_back();
+    return t;
+  }
+  while (true) {
+    Token t = raw();
+    if (t.is("#")) { directive(t); continue; }
+    if (is_macro_call(t)) { invoke_macro(t); continue; }
+    return t;
+  }
+}
+
+Token Interpreter::peek() {
+  Token t = next();
+  unget(t);
+  return t;
+}
+
+Token Interpreter::expect(std::string_view symbol, std::string_view context) {
+  Token t = next();
+  if (!t.is(symbol)) fail_expected(t, "'" + std::string(symbol) + "'" + std::string(context));
+  return t;
+}
+
+bool Interpreter::accept(std::string_view symbol) {
+  Token t = next();
+  if (t.is(symbol)) return true;
+  unget(t);
+  return false;
+}
+
+std::string Interpreter::expect_identifier_raw(std::string_view context) {
+  Token t = raw();
+  if (t.kind != TokenKind::identifier) fail_expected(t, std::string("an identifier ") + std::string(context));
+  if (is_reserved_word(t.text))
+    fail_at(t, "'" + std::string(t.text) + "' is a reserved word and cannot be used as an identifier " +
+                   std::string(context));
+  return std::string(t.text);
+}
+
+const SourceFile& Interpreter::file_of(const SourceLoc& loc) const {
+  for (const auto& f : files_)
+    if (f->name == loc.file || (loc.file && *f->name == *loc.file)) return *f;
+  return *files_.front();
+}
+
+void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
+  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)));
+}
+
+void Interpreter::fail_at(const Token& t, const std::string& message) const { fail(t.loc, message); }
+
+std::string Interpreter::describe(const Token& t) const {
+  switch (t.kind) {
+    case TokenKind::end_of_input: return "the end of the file";
+    case TokenKind::number: return "the number " + std::string(t.text);
+    case TokenKind::string: return "the string " + std::string(t.text);
+    case TokenKind::identifier:
+      if (is_reserved_word(t.text)) return "the keyword '" + std::string(t.text) + "'";
+      if (const Value* v = symbols_.find(std::string(t.text)))
+        return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
+      return "the undeclared identifier '" + std::string(t.text) + "'";
+    case TokenKind::symbol: return "'" + std::string(t.text) + "'";
+  }
+  return "?";
+}
+
+void Interpreter::fail_expected(const Token& t, std::string_view expected) const {
+  fail_at(t, "expected " + std::string(expected) + ", found " + describe(t));
+}
+
+void Interpreter::fail_unsupported(const Token& t, std::string_view what) const {
+  fail_at(t, "unsupported: " + std::string(what) + " is a POV-Ray feature that povtrace does not render yet");
+}
+
+void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
+  std::string text = format_diagnostic(loc, "warning", message, file_of(loc).line_text(loc.line));
+  if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
+}
+
+void Interpreter::seek(std::size_t frame, LexPosition pos) {
+  frames_.resize(frame + 1);
+  frames_.back().pos = pos;
+  pushed_back_.clear();
+}
+
+void Interpreter::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
+  if (frames_.size() >= kMaxIncludeDepth)
+    fail_at(at, "too many nested #include files (at most 32; does a file include itself?)");
+  auto file = std::make_unique<SourceFile>();
+  file->path = path;
+  file->name = std::make_shared<const std::string>(path.string());
+  try {
+    file->text = read_text_file(path);
+  } catch (const std::exception& e) {
+    fail_at(at, e.what());
+  }
+  frames_.push_back(Frame{file.get(), LexPosition{}, kind});
+  files_.push_back(std::move(file));
+  symbols_.push_scope();
+}
+
+// A macro call: arguments are bound in a new symbol table, then the body's tokens continue the stream until
+// its #end, which returns to just after the call's ')' (§1 item 4, §4 #macro).
+void Interpreter::invoke_macro(const Token& name) {
+  const MacroDefinition macro = std::get<MacroDefinition>(*symbols_.find(std::string(name.text)));
+  if (controls_.size() > kMaxMacroDepth)
+    fail_at(name, "macro calls nested too deeply (runaway recursion in '" + std::string(name.text) + "'?)");
+  expect("(", " after the macro name '" + std::string(name.text) + "'");
+  std::vector<std::pair<std::string, Value>> bound;
+  for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
+    if (i > 0) accept(",");
+    Token first = next();
+    // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller.
+    if (first.kind == TokenKind::identifier && !is_reserved_word(first.text)) {
+      Token after = peek();
+      auto level = symbols_.level_of(std::string(first.text));
+      if (level && (after.is(",") || after.is(")"))) {
+        bound.emplace_back(macro.parameters[i], Alias{*level, std::string(first.text)});
+        continue;
+      }
+    }
+    auto value = try_parse_rvalue(first);
+    if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
+    bound.emplace_back(macro.parameters[i], std::move(*value));
+  }
+  Token close = next();
+  if (!close.is(")"))
+    fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
+                             std::to_string(macro.parameters.size()) + " parameters)");
+  symbols_.push_scope();
+  for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
+  frames_.push_back(Frame{macro.file, macro.body, Frame::Kind::macro});
+  Control c;
+  c.kind = Control::Kind::macro_call;
+  c.frame = frames_.size() - 1;
+  c.loc = name.loc;
+  controls_.push_back(c);
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,53 @@
+// The values an SDL identifier can hold (povray-sdl-and-geometry.md §3, §4 Parse_RValue). Identifiers are
+// typed by what was last stored in them; the interpreter branches on that type.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "parser/lexer.hpp"
+
+namespace povtrace::sdl {
+
+// Up to five doubles plus a term count (1 float, 2 uv, 3 vector, 4 4-D, 5 colour), §5 "Terms and promotion".
+struct Numeric {
+  std::array<double, 5> v{};
+  int terms = 1;
+  bool colour = false;   // produced by a colour form (rgb…, colour id): a 5-term value
+
+  static Numeric scalar(double x) { Numeric n; n.v[0] = x; return n; }
+  static Numeric vector(Vec3 p) { Numeric n; n.v = {p.x, p.y, p.z, 0, 0}; n.terms = 3; return n; }
+  static Numeric from_colour(const Colour& c) {
+    Numeric n; n.v = {c.r, c.g, c.b, c.f, c.t}; n.terms = 5; n.colour = true; return n;
+  }
+  Vec3 as_vec3() const { return {v[0], v[1], v[2]}; }
+  Colour as_colour() const { return {v[0], v[1], v[2], v[3], v[4]}; }
+};
+
+// Either a geometric object or a light source: `object { L }` works for both, as in POV-Ray.
+using SceneItem = std::variant<Object, Light>;
+
+struct MacroDefinition {
+  const SourceFile* file = nullptr;
+  LexPosition body;                 // first byte after the parameter list's ')'
+  std::vector<std::string> parameters;
+  SourceLoc loc;
+};
+
+// A macro parameter bound to a caller's variable: reads and writes go through to it (§4 #macro).
+struct Alias {
+  std::size_t table = 0;            // symbol table level holding the variable
+  std::string name;
+};
+
+using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
+                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias>;
+
+// A human-readable name of a value's type for error messages ("float", "object", "texture", ...).
+std::string value_type_name(const Value& v);
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,146 @@
+// Render-ready geometry: rays, hits, world-space primitives with their own transforms, and the acceleration
+// structure over them. Built once from the SceneDescription; immutable while rendering (STYLE.md (a) step 4).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "parser/vecmath.hpp"
+
+namespace povtrace::render {
+
+// POV-Ray 3.7's numerical tolerances (povray-pixel-pipeline.md §8). Every tolerance of the renderer lives here.
+namespace tolerance {
+inline constexpr double min_isect_depth = 1e-4;     // MIN_ISECT_DEPTH: any ray ignores hits closer than this
+inline constexpr double shadow = 1e-3;              // SHADOW_TOLERANCE / SMALL_TOLERANCE for shadow rays
+inline constexpr double epsilon = 1e-10;            // "is zero" tests
+inline constexpr double max_distance = 1e7;         // MAX_DISTANCE: sphere/plane roots beyond this are rejected
+inline constexpr double bound_huge = 2e10;          // BOUND_HUGE: initial nearest-hit distance
+inline constexpr double sphere_depth = 1e-6;        // DEPTH_TOLERANCE of sphere, plane, box
+inline constexpr double plane_depth = 1e-6;
+inline constexpr double box_depth = 1e-6;
+}  // namespace tolerance
+
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;  // unit length: every depth is a world distance
+};
+
+struct Bounds {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()};
+  void extend(Vec3 p) { lo = min(lo, p); hi = max(hi, p); }
+  void extend(const Bounds& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+  bool empty() const { return lo.x > hi.x; }
+  bool finite() const;
+  Vec3 centre() const { return (lo + hi) * 0.5; }
+  double surface_area() const;
+};
+
+enum class ShapeType : std::uint8_t { sphere, plane, box };
+
+// One geometric primitive in its own object space plus the transform to world space.
+struct Primitive {
+  ShapeType type = ShapeType::sphere;
+  // Object-space parameters: sphere a = centre, radius; plane a = unit normal N, radius = distance d (surface
+  // N·P = d); box a = lo corner, b = hi corner.
+  Vec3 a, b;
+  double radius = 0;
+  bool transformed = false;      // false: world_from_object is the identity and is skipped
+  Matrix world_from_object;
+  Matrix object_from_world;
+  std::uint32_t material = 0;    // index into the render scene's material table (owned by the shading side)
+  std::uint32_t object = 0;      // index of the top-level scene object this primitive belongs to
+  bool casts_shadow = true;      // false for no_shadow objects
+  bool inverse = false;          // inside/outside flipped
+};
+
+// Nearest surface found along a ray.
+struct Hit {
+  double t = tolerance::bound_huge;
+  std::uint32_t primitive = ~0u;
+  bool found() const { return primitive != ~0u; }
+};
+
+// Every intersection of a ray with one primitive, as CSG will need them (depth-sorted, up to 2 for convex
+// shapes). Depths are world distances along the (unit) world ray; only roots with depth > the shape's
+// DEPTH_TOLERANCE and < max_distance (where POV-Ray applies it) are returned.
+struct Intersections {
+  double t[2];
+  int count = 0;
+};
+Intersections intersect_all(const Primitive& p, const Ray& ray);
+
+// World-space unit normal at a world-space point on the primitive (not flipped toward the ray; `inverse` does
+// not change it either — the shading side flips normals to face the viewer as POV-Ray does).
+Vec3 surface_normal(const Primitive& p, Vec3 world_point);
+
+// POV-Ray's inside test for the primitive at a world point (pipeline docs §8 table), honouring `inverse`.
+bool inside(const Primitive& p, Vec3 world_point);
+
+// World-space bounds; infinite (non-finite) for planes.
+Bounds world_bounds(const Primitive& p);
+
+// The acceleration structure: a binned-SAH BVH over the bounded primitives, with unbounded ones (planes) kept in
+// a separate list tested for every ray. Build is O(n log n); traversal allocates nothing.
+class Accelerator {
+ public:
+  Accelerator() = default;
+  explicit Accelerator(std::vector<Primitive> primitives);
+
+  std::span<const Primitive> primitives() const { return primitives_; }
+
+  // Nearest hit with t in (t_min, t_max): t_min = MIN_ISECT_DEPTH for ordinary rays.
+  Hit closest_hit(const Ray& ray, double t_min, double t_max) const;
+
+  // Calls visit(primitive_index, t) for every intersection with t in (t_min, t_max) of a shadow-casting
+  // primitive, in no particular order; visit returns false to stop early. Used by shadow rays (opaque objects
+  // stop at the first hit; transparent ones are filtered at every crossing).
+  template <class Visit>
+  void for_each_shadow_hit(const Ray& ray, double t_min, double t_max, Visit&& visit) const;
+
+  // Brute-force reference used by tests (same contract as closest_hit).
+  Hit closest_hit_brute_force(const Ray& ray, double t_min, double t_max) const;
+
+ private:
+  struct Node {
+    Bounds bounds;
+    std::uint32_t first = 0;   // leaf: first index into order_; inner: index of the right child
+    std::uint16_t count = 0;   // leaf: number of primitives; 0 for inner nodes
+    std::uint16_t axis = 0;    // inner: split axis (front-to-back traversal order)
+  };
+  std::vector<Primitive> primitives_;
+  std::vector<std::uint32_t> order_;      // bounded primitives in leaf order
+  std::vector<std::uint32_t> unbounded_;  // planes and anything with non-finite bounds
+  std::vector<Node> nodes_;               // nodes_[0] is the root; left child of node i is i + 1
+  // Build and traversal live in renderer/accel/bvh.cpp. for_each_shadow_hit forwards to this non-template walk
+  // through a plain function pointer plus context (no allocation, one indirect call per reported root).
+  using ShadowVisitFn = bool (*)(void* context, std::uint32_t primitive, double t);
+  void shadow_traverse(const Ray& ray, double t_min, double t_max, ShadowVisitFn visit, void* context) const;
+  std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, int depth, const std::vector<Bounds>& bounds,
+                           const std::vector<Vec3>& centroids);
+  friend class AcceleratorTestAccess;
+};
+
+template <class Visit>
+void Accelerator::for_each_shadow_hit(const Ray& ray, double t_min, double t_max, Visit&& visit) const {
+  using V = std::remove_reference_t<Visit>;
+  ShadowVisitFn thunk = [](void* context, std::uint32_t primitive, double t) -> bool {
+    V& v = *static_cast<V*>(context);
+    if constexpr (std::is_void_v<std::invoke_result_t<V&, std::uint32_t, double>>) {
+      v(primitive, t);
+      return true;
+    } else {
+      return static_cast<bool>(v(primitive, t));
+    }
+  };
+  shadow_traverse(ray, t_min, t_max, thunk, const_cast<void*>(static_cast<const void*>(std::addressof(visit))));
+}
+
+}  // namespace povtrace::render

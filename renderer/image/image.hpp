@@ -1,0 +1,63 @@
+// Framebuffer and image files. The renderer produces linear, unclamped RGBA floats; encoding to a file format
+// is separate from shading (STYLE.md (a) step 6). Writers follow POV-Ray 3.7's encodings
+// (povray-pixel-pipeline.md §6).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace povtrace::image {
+
+struct ImageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// How the stored numbers relate to light: `linear` (EXR, and every render) or `encoded` (PNG/PPM values as
+// stored in the file, normalised to [0,1], i.e. sRGB- or gamma-encoded).
+enum class Encoding { linear, encoded };
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  bool has_alpha = false;       // false: alpha is 1 everywhere and writers emit RGB only
+  Encoding encoding = Encoding::linear;
+  std::vector<float> rgba;      // 4 floats per pixel, row-major, top row first; colour premultiplied by alpha
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {
+    for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 1.0f;
+  }
+  float* pixel(int x, int y) { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
+  const float* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
+};
+
+enum class FileFormat { png, exr, ppm };
+
+struct EncodeOptions {
+  FileFormat format = FileFormat::png;
+  int bits_per_channel = 8;     // PNG and PPM: 8 or 16
+  bool exr_full_float = false;  // EXR: 32-bit float instead of POV-Ray's half
+};
+
+// The format named by a file's extension (.png, .exr, .ppm; case-insensitive), if any.
+std::optional<FileFormat> format_from_extension(const std::filesystem::path& path);
+
+// Writes `image` (linear) to `path`: to a temporary file in the same folder, then renamed over `path`, so a
+// failure never leaves a partial file and never destroys an existing one. Throws ImageError.
+void write_image(const Image& image, const std::filesystem::path& path, const EncodeOptions& options);
+
+// Reads an EXR (linear) or PNG/PPM (encoded) file. Throws ImageError for a missing or unreadable file.
+Image read_image(const std::filesystem::path& path);
+
+// sRGB transfer curve (IEC 61966-2-1), POV-Ray's default File_Gamma.
+double srgb_encode(double linear);
+double srgb_decode(double encoded);
+
+// The same image with colour values in linear light (encoded images are sRGB-decoded).
+Image to_linear(const Image& image);
+
+}  // namespace povtrace::image
