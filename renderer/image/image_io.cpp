@@ -1,0 +1,147 @@
+// Format dispatch, the sRGB curve and linearisation. The format writers and readers live in exr_io, png_io and
+// ppm_io; write_image adds validation and the atomic replacement of the destination (atomic_file).
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "renderer/image/atomic_file.hpp"
+#include "renderer/image/exr_io.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/image/png_io.hpp"
+#include "renderer/image/ppm_io.hpp"
+
+namespace povtrace::image {
+namespace {
+
+namespace fs = std::filesystem;
+
+// IEC 61966-2-1 constants.
+constexpr double srgb_linear_limit = 0.0031308;   // encode: below this the curve is a straight line
+constexpr double srgb_encoded_limit = 0.04045;    // decode: the same point on the encoded side
+constexpr double srgb_slope = 12.92;
+constexpr double srgb_scale = 1.055;
+constexpr double srgb_offset = 0.055;
+constexpr double srgb_exponent = 2.4;
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+void check_writable(const Image& image, const EncodeOptions& options) {
+  if (image.width <= 0 || image.height <= 0) throw ImageError("the image is empty");
+  if (image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
+    throw ImageError("the image's pixel buffer does not match its size");
+  }
+  const bool integer_format = options.format != FileFormat::exr;
+  if (integer_format && options.bits_per_channel != 8 && options.bits_per_channel != 16) {
+    throw ImageError("PNG and PPM take 8 or 16 bits per channel, not " + std::to_string(options.bits_per_channel));
+  }
+}
+
+void write_format(const Image& image, const fs::path& file, const EncodeOptions& options) {
+  switch (options.format) {
+    case FileFormat::exr:
+      write_exr(image.encoding == Encoding::linear ? image : to_linear(image), file, options.exr_full_float);
+      return;
+    case FileFormat::png: write_png(image, file, options.bits_per_channel); return;
+    case FileFormat::ppm: write_ppm(image, file, options.bits_per_channel); return;
+  }
+}
+
+// The format named by a file's first bytes, if any.
+std::optional<FileFormat> format_from_magic(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ImageError("cannot read '" + path.string() + "': " + std::strerror(errno));
+  std::array<unsigned char, 8> head{};
+  in.read(reinterpret_cast<char*>(head.data()), head.size());
+  const auto starts_with = [&](std::initializer_list<unsigned char> magic) {
+    return static_cast<std::size_t>(in.gcount()) >= magic.size() &&
+           std::equal(magic.begin(), magic.end(), head.begin());
+  };
+  if (starts_with({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return FileFormat::png;
+  if (starts_with({0x76, 0x2f, 0x31, 0x01})) return FileFormat::exr;
+  if (starts_with({'P', '6'})) return FileFormat::ppm;
+  return std::nullopt;
+}
+
+Image read_format(const fs::path& path, FileFormat format) {
+  switch (format) {
+    case FileFormat::exr: return read_exr(path);
+    case FileFormat::png: return read_png(path);
+    case FileFormat::ppm: return read_ppm(path);
+  }
+  throw ImageError("unknown file format");
+}
+
+std::string unrecognised_message(const fs::path& path) {
+  const std::string message = "cannot read '" + path.string() + "': ";
+  const std::optional<FileFormat> named = format_from_extension(path);
+  if (!named) return message + "not a PNG, EXR or binary PPM (P6) file";
+  const char* names[] = {"PNG", "EXR", "binary PPM (P6)"};
+  return message + "not a valid " + names[static_cast<int>(*named)] + " file (unrecognised signature)";
+}
+
+// Encoded premultiplied colour → linear premultiplied colour, one pixel.
+void linearise_pixel(float* p, bool has_alpha) {
+  const double alpha = has_alpha ? p[3] : 1.0;
+  for (int c = 0; c < 3; ++c) {
+    p[c] = alpha > 0.0 ? static_cast<float>(srgb_decode(p[c] / alpha) * alpha) : 0.0f;
+  }
+}
+
+}  // namespace
+
+std::optional<FileFormat> format_from_extension(const fs::path& path) {
+  const std::string extension = lower(path.extension().string());
+  if (extension == ".png") return FileFormat::png;
+  if (extension == ".exr") return FileFormat::exr;
+  if (extension == ".ppm") return FileFormat::ppm;
+  return std::nullopt;
+}
+
+void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {
+  try {
+    check_writable(image, options);
+  } catch (const ImageError& e) {
+    throw ImageError("cannot write '" + path.string() + "': " + e.what());
+  }
+  write_file_atomically(path, [&](const fs::path& temp) { write_format(image, temp, options); });
+}
+
+Image read_image(const fs::path& path) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) throw ImageError("cannot read '" + path.string() + "': it is a folder");
+  const std::optional<FileFormat> format = format_from_magic(path);
+  if (!format) throw ImageError(unrecognised_message(path));
+  try {
+    return read_format(path, *format);
+  } catch (const ImageError& e) {
+    throw ImageError("cannot read '" + path.string() + "': " + e.what());
+  }
+}
+
+double srgb_encode(double linear) {
+  if (linear <= srgb_linear_limit) return srgb_slope * linear;
+  return srgb_scale * std::pow(linear, 1.0 / srgb_exponent) - srgb_offset;
+}
+
+double srgb_decode(double encoded) {
+  if (encoded <= srgb_encoded_limit) return encoded / srgb_slope;
+  return std::pow((encoded + srgb_offset) / srgb_scale, srgb_exponent);
+}
+
+Image to_linear(const Image& image) {
+  Image result = image;
+  if (image.encoding == Encoding::linear) return result;
+  result.encoding = Encoding::linear;
+  for (std::size_t i = 0; i + 3 < result.rgba.size(); i += 4) linearise_pixel(&result.rgba[i], image.has_alpha);
+  return result;
+}
+
+}  // namespace povtrace::image

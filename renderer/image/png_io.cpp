@@ -1,0 +1,209 @@
+// libpng reports errors by longjmp. Every libpng call that can fail runs inside a small function that calls
+// setjmp and owns no C++ objects, so a longjmp never skips a destructor; C++ buffers are allocated outside.
+#include "renderer/image/png_io.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/image/display_encode.hpp"
+
+namespace povtrace::image {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr png_fixed_point srgb_file_gamma = 45455;  // gAMA value for the sRGB curve, ×100000
+constexpr std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 1 GiB of floats: refuse larger files
+
+// Where libpng's error callback leaves its message before jumping back.
+struct PngErrorText {
+  char text[256] = "unknown libpng error";
+};
+
+void on_png_error(png_structp png, png_const_charp message) {
+  auto* error = static_cast<PngErrorText*>(png_get_error_ptr(png));
+  std::snprintf(error->text, sizeof error->text, "%s", message);
+  png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}  // warnings (e.g. unknown chunks) are not failures
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+FilePtr open_file(const fs::path& file, const char* mode) {
+  FilePtr f(std::fopen(file.c_str(), mode));
+  if (!f) throw ImageError(std::string("cannot open the file: ") + std::strerror(errno));
+  return f;
+}
+
+// ---- writing -------------------------------------------------------------------------------------------------
+
+struct PngWriter {
+  PngErrorText error;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+
+  PngWriter() {
+    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+    if (png != nullptr) info = png_create_info_struct(png);
+    if (info == nullptr) {
+      png_destroy_write_struct(&png, nullptr);
+      throw ImageError("libpng: out of memory");
+    }
+  }
+  ~PngWriter() { png_destroy_write_struct(&png, &info); }
+  PngWriter(const PngWriter&) = delete;
+  PngWriter& operator=(const PngWriter&) = delete;
+};
+
+struct PngLayout {
+  png_uint_32 width, height;
+  int bit_depth, color_type;
+};
+
+bool run_png_write(PngWriter& w, std::FILE* f, const PngLayout& layout, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(w.png))) return false;
+  png_init_io(w.png, f);
+  png_set_IHDR(w.png, w.info, layout.width, layout.height, layout.bit_depth, layout.color_type,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_gAMA_fixed(w.png, w.info, srgb_file_gamma);
+  png_set_sRGB(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(w.png, w.info);
+  png_write_image(w.png, rows);
+  png_write_end(w.png, nullptr);
+  return true;
+}
+
+// Samples as PNG bytes: one byte each at 8 bits, big-endian pairs at 16.
+std::vector<png_byte> to_png_bytes(const std::vector<std::uint16_t>& samples, int bits) {
+  std::vector<png_byte> bytes;
+  bytes.reserve(samples.size() * (bits == 16 ? 2 : 1));
+  for (const std::uint16_t s : samples) {
+    if (bits == 16) bytes.push_back(static_cast<png_byte>(s >> 8));
+    bytes.push_back(static_cast<png_byte>(s & 0xff));
+  }
+  return bytes;
+}
+
+std::vector<png_bytep> row_pointers(std::vector<png_byte>& bytes, std::size_t height) {
+  std::vector<png_bytep> rows(height);
+  const std::size_t stride = height == 0 ? 0 : bytes.size() / height;
+  for (std::size_t y = 0; y < height; ++y) rows[y] = bytes.data() + y * stride;
+  return rows;
+}
+
+// ---- reading -------------------------------------------------------------------------------------------------
+
+struct PngReader {
+  PngErrorText error;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+
+  PngReader() {
+    png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+    if (png != nullptr) info = png_create_info_struct(png);
+    if (info == nullptr) {
+      png_destroy_read_struct(&png, nullptr, nullptr);
+      throw ImageError("libpng: out of memory");
+    }
+  }
+  ~PngReader() { png_destroy_read_struct(&png, &info, nullptr); }
+  PngReader(const PngReader&) = delete;
+  PngReader& operator=(const PngReader&) = delete;
+};
+
+// Reads the header and asks libpng for 8- or 16-bit RGB(A) rows whatever the file's layout.
+bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels) {
+  if (setjmp(png_jmpbuf(r.png))) return false;
+  png_init_io(r.png, f);
+  png_read_info(r.png, r.info);
+  png_set_expand(r.png);  // palette → RGB, grey < 8 bits → 8 bits, tRNS → alpha
+  png_set_gray_to_rgb(r.png);
+  png_set_interlace_handling(r.png);
+  png_read_update_info(r.png, r.info);
+  layout = {png_get_image_width(r.png, r.info), png_get_image_height(r.png, r.info),
+            png_get_bit_depth(r.png, r.info), png_get_color_type(r.png, r.info)};
+  channels = png_get_channels(r.png, r.info);
+  return true;
+}
+
+bool run_png_read_rows(PngReader& r, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(r.png))) return false;
+  png_read_image(r.png, rows);
+  png_read_end(r.png, nullptr);
+  return true;
+}
+
+double sample_at(const png_byte* p, int bits) {
+  return bits == 16 ? double((p[0] << 8) | p[1]) / 65535.0 : double(p[0]) / 255.0;
+}
+
+Image image_from_rows(const std::vector<png_byte>& bytes, const PngLayout& layout, int channels) {
+  Image image(static_cast<int>(layout.width), static_cast<int>(layout.height));
+  image.encoding = Encoding::encoded;
+  image.has_alpha = channels == 4;
+  const std::size_t sample_bytes = layout.bit_depth == 16 ? 2 : 1;
+  for (std::size_t i = 0; i < image.rgba.size() / 4; ++i) {
+    const png_byte* p = &bytes[i * channels * sample_bytes];
+    const double alpha = image.has_alpha ? sample_at(p + 3 * sample_bytes, layout.bit_depth) : 1.0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      image.rgba[i * 4 + c] = static_cast<float>(sample_at(p + c * sample_bytes, layout.bit_depth) * alpha);
+    }
+    image.rgba[i * 4 + 3] = static_cast<float>(alpha);
+  }
+  return image;
+}
+
+void check_layout(const PngLayout& layout, int channels) {
+  const bool supported = (channels == 3 || channels == 4) && (layout.bit_depth == 8 || layout.bit_depth == 16);
+  if (!supported) throw ImageError("unsupported PNG layout after expansion");
+  if (std::uint64_t(layout.width) * layout.height > max_pixels) throw ImageError("PNG too large");
+}
+
+}  // namespace
+
+void write_png(const Image& image, const fs::path& file, int bits_per_channel) {
+  std::vector<png_byte> bytes = to_png_bytes(display_samples(image, bits_per_channel, image.has_alpha),
+                                             bits_per_channel);
+  std::vector<png_bytep> rows = row_pointers(bytes, static_cast<std::size_t>(image.height));
+  const PngLayout layout{static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
+                         bits_per_channel, image.has_alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB};
+  FilePtr f = open_file(file, "wb");
+  PngWriter writer;
+  if (!run_png_write(writer, f.get(), layout, rows.data())) {
+    throw ImageError(std::string("libpng: ") + writer.error.text);
+  }
+  if (std::fflush(f.get()) != 0 || std::ferror(f.get()) != 0) {
+    throw ImageError(std::string("write error: ") + std::strerror(errno));
+  }
+  if (std::fclose(f.release()) != 0) throw ImageError(std::string("write error on close: ") + std::strerror(errno));
+}
+
+Image read_png(const fs::path& file) {
+  FilePtr f = open_file(file, "rb");
+  PngReader reader;
+  PngLayout layout{};
+  int channels = 0;
+  if (!run_png_read_header(reader, f.get(), layout, channels)) {
+    throw ImageError(std::string("libpng: ") + reader.error.text);
+  }
+  check_layout(layout, channels);
+  const std::size_t row_bytes = png_get_rowbytes(reader.png, reader.info);
+  std::vector<png_byte> bytes(row_bytes * layout.height);
+  std::vector<png_bytep> rows = row_pointers(bytes, layout.height);
+  if (!run_png_read_rows(reader, rows.data())) throw ImageError(std::string("libpng: ") + reader.error.text);
+  return image_from_rows(bytes, layout, channels);
+}
+
+}  // namespace povtrace::image
