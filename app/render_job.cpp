@@ -1,0 +1,201 @@
+#include "app/render_job.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "parser/parse_scene.hpp"
+#include "renderer/image/compare.hpp"
+#include "renderer/render.hpp"
+#include "renderer/render_scene.hpp"
+
+namespace povtrace::app {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+ParseOptions parse_options_from(const RenderOptions& o) {
+  ParseOptions p;
+  p.library_paths = o.library_paths;
+  p.declares = o.declares;
+  p.image_width = o.width;
+  p.image_height = o.height;
+  p.output_alpha = o.output_alpha;
+  return p;
+}
+
+render::RenderSettings render_settings_from(const RenderOptions& o) {
+  render::RenderSettings s;
+  s.width = o.width;
+  s.height = o.height;
+  s.threads = o.threads;
+  s.antialias = o.antialias;
+  s.antialias_threshold = o.antialias_threshold;
+  s.antialias_depth = o.antialias_depth;
+  s.sampling_method = o.sampling_method;
+  s.jitter = o.jitter;
+  s.jitter_amount = o.jitter_amount;
+  s.antialias_gamma = o.antialias_gamma;
+  s.output_alpha = o.output_alpha;
+  s.shading = o.lighting == LightingModel::textbook ? render::ShadingModel::textbook : render::ShadingModel::povray;
+  return s;
+}
+
+// A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
+// terminal, a line per quarter otherwise (logs stay short).
+std::function<void(double)> progress_reporter(Clock::time_point start) {
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  auto last_quarter = std::make_shared<int>(0);
+  return [=](double done) {
+    const double elapsed = seconds_since(start);
+    if (elapsed < 1.0 || done <= 0) return;
+    const double eta = elapsed * (1.0 - done) / done;
+    char line[128];
+    std::snprintf(line, sizeof line, "povtrace: rendering %3.0f%%, %.1f s elapsed, ETA %.1f s", done * 100, elapsed, eta);
+    if (tty) {
+      std::cerr << "\r" << line << std::flush;
+    } else if (static_cast<int>(done * 4) > *last_quarter) {
+      *last_quarter = static_cast<int>(done * 4);
+      std::cerr << line << "\n";
+    }
+  };
+}
+
+void print_summary(const RenderOptions& o, const JobResult& r) {
+  std::fprintf(stderr,
+               "povtrace: %dx%d, rays: %llu camera, %llu shadow, %llu secondary; parse %.3f s, build %.3f s, "
+               "render %.3f s, total %.3f s%s%s\n",
+               o.width, o.height, static_cast<unsigned long long>(r.rays.camera),
+               static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.secondary),
+               r.times.parse_s, r.times.build_s, r.times.render_s, r.times.total_s,
+               r.output.empty() ? "" : " -> ", r.output.string().c_str());
+}
+}  // namespace
+
+std::string stats_json(const RenderOptions& o, const JobResult& r) {
+  std::ostringstream j;
+  j.precision(9);
+  const auto total_rays = r.rays.camera + r.rays.shadow + r.rays.secondary;
+  j << "{\n  \"scene\": \"" << o.input.string() << "\",\n  \"width\": " << o.width << ",\n  \"height\": " << o.height
+    << ",\n  \"parse_s\": " << r.times.parse_s << ",\n  \"build_s\": " << r.times.build_s
+    << ",\n  \"render_s\": " << r.times.render_s << ",\n  \"write_s\": " << r.times.write_s
+    << ",\n  \"total_s\": " << r.times.total_s << ",\n  \"rays\": " << total_rays
+    << ",\n  \"camera_rays\": " << r.rays.camera << ",\n  \"shadow_rays\": " << r.rays.shadow
+    << ",\n  \"secondary_rays\": " << r.rays.secondary << "\n}\n";
+  return j.str();
+}
+
+JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
+  JobResult r;
+  const auto start = Clock::now();
+  const SceneDescription description = parse_scene(options.input, parse_options_from(options));
+  r.times.parse_s = seconds_since(start);
+
+  const auto build_start = Clock::now();
+  const render::RenderScene scene = render::build_render_scene(description, {options.output_alpha});
+  r.times.build_s = seconds_since(build_start);
+
+  const auto render_start = Clock::now();
+  render::RenderSettings settings = render_settings_from(options);
+  settings.progress = progress_reporter(render_start);
+  settings.cancel = &interrupted;
+  render::RenderResult rendered = render::render(scene, settings);
+  r.times.render_s = seconds_since(render_start);
+  if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO)) std::cerr << "\n";
+  r.rays = rendered.rays;
+  if (rendered.cancelled) {
+    std::cerr << "povtrace: interrupted; no image written (an existing output file is left as it was)\n";
+    r.exit_status = 1;
+    return r;
+  }
+
+  const auto write_start = Clock::now();
+  if (options.write_file) {
+    r.output = resolved_output_path(options);
+    image::write_image(rendered.image, r.output, resolved_encoding(options));
+  }
+  r.times.write_s = seconds_since(write_start);
+  r.times.total_s = seconds_since(start);
+  r.image = std::move(rendered.image);
+  print_summary(options, r);
+  if (options.stats_json) {
+    std::ofstream out(*options.stats_json);
+    out << stats_json(options, r);
+    if (!out) throw std::runtime_error("cannot write the stats file '" + options.stats_json->string() + "'");
+  }
+  return r;
+}
+
+namespace {
+std::string povray_command(const RenderOptions& o, const std::filesystem::path& exr) {
+  std::ostringstream cmd;
+  auto quote = [](const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  cmd << "povray -D -V +W" << o.width << " +H" << o.height;
+  if (o.antialias) cmd << " +A" << o.antialias_threshold << " +R" << o.antialias_depth << " +AM" << o.sampling_method;
+  else cmd << " -A";
+  cmd << (o.jitter ? " +J" + std::to_string(o.jitter_amount) : std::string(" -J"));
+  if (o.output_alpha) cmd << " +UA";
+  for (const auto& l : o.library_paths) cmd << " " << quote("+L" + l.string());
+  for (const auto& [name, value] : o.declares) cmd << " " << quote("Declare=" + name + "=" + std::to_string(value));
+  cmd << " +FE " << quote("+O" + exr.string()) << " " << quote("+I" + o.input.string()) << " 2>&1";
+  return cmd.str();
+}
+}  // namespace
+
+int run_vs_povray(const RenderOptions& options, const std::atomic<bool>& interrupted) {
+  RenderOptions ours = options;
+  ours.write_file = false;
+  ours.stats_json.reset();
+  const auto ours_start = Clock::now();
+  JobResult job = run_render(ours, interrupted);
+  const double ours_wall = seconds_since(ours_start);
+  if (job.exit_status != 0) return job.exit_status;
+
+  const auto tmp = std::filesystem::temp_directory_path() / ("povtrace_vs_" + std::to_string(getpid()) + ".exr");
+  const auto pov_start = Clock::now();
+  const std::string command = povray_command(options, tmp);
+  std::string log;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, pipe)) log += buf;
+    const int status = pclose(pipe);
+    if (status != 0 || !std::filesystem::exists(tmp)) {
+      std::cerr << "povtrace: povray failed (is it installed? apt-get install povray):\n" << log;
+      return 1;
+    }
+  } else {
+    throw std::runtime_error("cannot run povray");
+  }
+  const double pov_wall = seconds_since(pov_start);
+  const image::Image reference = image::read_image(tmp);
+  std::filesystem::remove(tmp);
+
+  const double threshold = 1.0 / 255.0;
+  const image::CompareReport rep = image::compare_images(reference, job.image, threshold);
+  const image::Image heat = image::difference_heat_map(reference, job.image, threshold);
+  const image::Image strip = image::side_by_side({&job.image, &reference, &heat});
+  std::filesystem::path out = options.output.value_or(options.input.stem().string() + "_vs_povray.png");
+  image::write_image(strip, out, image::EncodeOptions{});
+
+  std::printf("povtrace: %.3f s wall (render %.3f s)\npovray:   %.3f s wall\n", ours_wall, job.times.render_s, pov_wall);
+  std::printf("RMSE %.6g  PSNR %.2f dB  max error %.6g at (%d,%d) channel %d  pixels over 1/255: %zu (%.4f %%)\n",
+              rep.rmse, rep.psnr, rep.max_abs_error, rep.max_x, rep.max_y, rep.max_channel,
+              rep.pixels_over_threshold, rep.share_over_threshold * 100);
+  const bool pass = rep.psnr >= 50.0 && rep.share_over_threshold <= 0.001;
+  std::printf("side by side (povtrace | POV-Ray | heat map): %s\nverdict: %s\n", out.string().c_str(),
+              pass ? "match (PSNR >= 50 dB, <= 0.1 % of pixels off by more than 1/255)" : "DIFFERENT");
+  return pass ? 0 : 1;
+}
+
+}  // namespace povtrace::app

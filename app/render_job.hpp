@@ -1,0 +1,38 @@
+// One render from options to file, with timing, progress, summary and --stats JSON; and the --vs-povray
+// cross-check. Split from main() so tests can run a whole job in-process.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+#include "app/options.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/tracer.hpp"
+
+namespace povtrace::app {
+
+struct RenderTimes {
+  double parse_s = 0, build_s = 0, render_s = 0, write_s = 0, total_s = 0;
+};
+
+struct JobResult {
+  int exit_status = 0;
+  image::Image image;                 // the linear framebuffer that was written
+  RenderTimes times;
+  render::RayCounts rays;
+  std::filesystem::path output;
+};
+
+// Parses, builds, renders and writes per `options`. Throws ParseError / ImageError; returns exit status 1
+// (and writes nothing) when interrupted.
+JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted);
+
+// Renders with povtrace and with `povray` (same options, EXR), prints both times and the comparison, and writes
+// `<stem>_vs_povray.png` (povtrace | POV-Ray | heat map). Exit 0 within the image thresholds, 1 outside.
+int run_vs_povray(const RenderOptions& options, const std::atomic<bool>& interrupted);
+
+// The --stats JSON text for a finished job.
+std::string stats_json(const RenderOptions& options, const JobResult& job);
+
+}  // namespace povtrace::app

@@ -1,0 +1,240 @@
+#include "renderer/render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace povtrace::render {
+
+Ray camera_ray(const RenderCamera& c, double x, double y, int width, int height) {
+  const double u = (x + 0.5) / width - 0.5;
+  const double v = 0.5 - (y + 0.5) / height;
+  if (c.projection == Projection::orthographic)
+    return Ray{c.location + c.right * u + c.up * v, normalize(c.direction)};
+  return Ray{c.location, normalize(c.direction + c.right * u + c.up * v)};
+}
+
+double working_to_linear(const RenderScene& scene, double value) {
+  if (scene.gamma_mode == GammaMode::legacy_srgb) return image::srgb_decode(value);
+  if (scene.assumed_gamma == 1.0 || value <= 0) return value;
+  return std::pow(value, scene.assumed_gamma);
+}
+
+namespace {
+struct Sample {
+  Rgb colour;
+  double transmit = 0;
+  Sample& operator+=(const Sample& o) { colour += o.colour; transmit += o.transmit; return *this; }
+  Sample operator/(double d) const { return {colour / d, transmit / d}; }
+};
+
+// Our own deterministic jitter (not POV-Ray's table): a hash of the sample position gives offsets in
+// [−½, ½], the same for the same position whatever the thread or block order.
+std::pair<double, double> jitter2d(double x, double y) {
+  auto q = [](double v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(v * 4096.0))); };
+  std::uint64_t h = q(x) * 0x9E3779B97F4A7C15ull ^ (q(y) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+  h ^= h >> 31; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 29; h *= 0x94D049BB133111EBull; h ^= h >> 32;
+  const double jx = static_cast<double>(h & 0xFFFFFF) / 16777215.0 - 0.5;
+  const double jy = static_cast<double>((h >> 24) & 0xFFFFFF) / 16777215.0 - 0.5;
+  return {jx, jy};
+}
+
+class BlockRenderer {
+ public:
+  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out)
+      : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading) {}
+
+  void render_block(int x0, int y0, int w, int h) {
+    if (!s_.antialias) plain(x0, y0, w, h);
+    else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
+    else adaptive(x0, y0, w, h);
+  }
+  const RayCounts& counts() const { return tracer_.counts(); }
+
+ private:
+  Sample shade(double x, double y) {
+    const Radiance r = tracer_.trace_camera_ray(camera_ray(scene_.camera, x, y, s_.width, s_.height));
+    return {r.colour, r.transmit};
+  }
+
+  // AA colour distance (§7): decode the working gamma, encode with the AA gamma, sum |Δ| over R, G, B and T.
+  double aa_encode(double v) const {
+    return std::pow(std::max(working_to_linear(scene_, v), 0.0), 1.0 / s_.antialias_gamma);
+  }
+  bool differ(const Sample& a, const Sample& b) const {
+    double d = std::fabs(aa_encode(a.colour.x) - aa_encode(b.colour.x)) +
+               std::fabs(aa_encode(a.colour.y) - aa_encode(b.colour.y)) +
+               std::fabs(aa_encode(a.colour.z) - aa_encode(b.colour.z));
+    if (s_.output_alpha) d += std::fabs(a.transmit - b.transmit);
+    return d >= s_.antialias_threshold;
+  }
+
+  void store(int x, int y, const Sample& s) {
+    float* p = out_.pixel(x, y);
+    const double alpha = s_.output_alpha ? 1.0 - s.transmit : 1.0;
+    p[0] = static_cast<float>(working_to_linear(scene_, s.colour.x));
+    p[1] = static_cast<float>(working_to_linear(scene_, s.colour.y));
+    p[2] = static_cast<float>(working_to_linear(scene_, s.colour.z));
+    p[3] = static_cast<float>(alpha);
+  }
+
+  void plain(int x0, int y0, int w, int h) {
+    for (int y = y0; y < y0 + h; ++y)
+      for (int x = x0; x < x0 + w; ++x) store(x, y, shade(x, y));
+  }
+
+  // Method 1 supersampling of pixel (px, py): n×n sub-samples plus the centre sample, averaged (§7).
+  Sample supersample(double px, double py, const Sample& centre) {
+    const int n = s_.antialias_depth;
+    const double step = 1.0 / n, r = 0.5 - step / 2;
+    const double js = s_.jitter ? s_.jitter_amount / n : 0.0;
+    Sample sum = centre;
+    for (double yy = -r; yy <= r + 1e-10; yy += step)
+      for (double xx = -r; xx <= r + 1e-10; xx += step) {
+        double sx = px + xx, sy = py + yy;
+        if (js > 0) {
+          const auto [jx, jy] = jitter2d(sx, sy);
+          sx += jx * js;
+          sy += jy * js;
+        }
+        sum += shade(sx, sy);
+      }
+    return sum / (n * n + 1);
+  }
+
+  // Method 1 (§7): blocks with a traced frame row above and column to the left; each pixel compared with its
+  // left and top neighbours, supersampling every pixel of a differing pair at most once.
+  void adaptive(int x0, int y0, int w, int h) {
+    const int fw = w + 1;
+    std::vector<Sample> pix(static_cast<std::size_t>(fw) * (h + 1));
+    std::vector<char> done(pix.size(), 0);
+    auto at = [&](int x, int y) { return static_cast<std::size_t>(y - y0 + 1) * fw + (x - x0 + 1); };
+    for (int x = x0; x < x0 + w; ++x) { pix[at(x, y0 - 1)] = shade(x, y0 - 1); done[at(x, y0 - 1)] = 1; }
+    for (int y = y0; y < y0 + h; ++y) {
+      pix[at(x0 - 1, y)] = shade(x0 - 1, y);
+      done[at(x0 - 1, y)] = 1;
+      for (int x = x0; x < x0 + w; ++x) {
+        Sample& c = pix[at(x, y)];
+        c = shade(x, y);
+        const bool left = differ(pix[at(x - 1, y)], c), top = differ(pix[at(x, y - 1)], c);
+        if (left && !done[at(x - 1, y)]) {
+          pix[at(x - 1, y)] = supersample(x - 1, y, pix[at(x - 1, y)]);
+          done[at(x - 1, y)] = 1;
+        }
+        if (top && !done[at(x, y - 1)]) {
+          pix[at(x, y - 1)] = supersample(x, y - 1, pix[at(x, y - 1)]);
+          done[at(x, y - 1)] = 1;
+        }
+        if (left || top) {
+          c = supersample(x, y, c);
+          done[at(x, y)] = 1;
+        }
+      }
+    }
+    for (int y = y0; y < y0 + h; ++y)
+      for (int x = x0; x < x0 + w; ++x) store(x, y, pix[at(x, y)]);
+  }
+
+  // Method 2 (§7): corners of every pixel (shared, unjittered); where any pair differs and depth remains,
+  // trace edge midpoints and centre and recurse into the four quarters.
+  Sample jittered(double x, double y) {
+    const double js = s_.jitter ? s_.jitter_amount / ((1 << s_.antialias_depth) + 1) : 0.0;
+    if (js > 0) {
+      const auto [jx, jy] = jitter2d(x, y);
+      return shade(x + jx * js, y + jy * js);
+    }
+    return shade(x, y);
+  }
+  Sample subdivide(double x, double y, double d, const Sample& c00, const Sample& c01, const Sample& c10,
+                   const Sample& c11, int level) {
+    const Sample* cs[4] = {&c00, &c01, &c10, &c11};
+    bool split = false;
+    for (int i = 0; i < 4 && level > 0 && !split; ++i)
+      for (int j = i + 1; j < 4 && !split; ++j) split = differ(*cs[i], *cs[j]);
+    if (!split) return average4(c00, c01, c10, c11);
+    const Sample l = jittered(x - d, y), t = jittered(x, y - d), r = jittered(x + d, y), b = jittered(x, y + d),
+                 m = jittered(x, y);
+    const double h = d / 2;
+    Sample sum = subdivide(x - h, y - h, h, c00, l, t, m, level - 1);
+    sum += subdivide(x - h, y + h, h, l, c01, m, b, level - 1);
+    sum += subdivide(x + h, y - h, h, t, m, c10, r, level - 1);
+    sum += subdivide(x + h, y + h, h, m, b, r, c11, level - 1);
+    return sum / 4;
+  }
+  static Sample average4(const Sample& a, const Sample& b, const Sample& c, const Sample& d) {
+    Sample s = a;
+    s += b;
+    s += c;
+    s += d;
+    return s / 4;
+  }
+  void recursive(int x0, int y0, int w, int h) {
+    const int cw = w + 1;
+    std::vector<Sample> corners(static_cast<std::size_t>(cw) * (h + 1));
+    for (int j = 0; j <= h; ++j)
+      for (int i = 0; i <= w; ++i) corners[static_cast<std::size_t>(j) * cw + i] = shade(x0 + i - 0.5, y0 + j - 0.5);
+    auto c = [&](int i, int j) -> const Sample& { return corners[static_cast<std::size_t>(j) * cw + i]; };
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i)
+        store(x0 + i, y0 + j, subdivide(x0 + i, y0 + j, 0.5, c(i, j), c(i, j + 1), c(i + 1, j), c(i + 1, j + 1),
+                                        s_.antialias_depth - 1));
+  }
+
+  const RenderScene& scene_;
+  const RenderSettings& s_;
+  image::Image& out_;
+  Tracer tracer_;
+};
+}  // namespace
+
+RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
+  RenderResult result;
+  result.image = image::Image(settings.width, settings.height);
+  result.image.has_alpha = settings.output_alpha;
+  const int bs = std::max(4, settings.block_size);
+  const int bx = (settings.width + bs - 1) / bs, by = (settings.height + bs - 1) / bs;
+  const int blocks = bx * by;
+  std::atomic<int> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const int threads = std::clamp(settings.threads > 0 ? settings.threads : static_cast<int>(hw), 1, std::max(1, blocks));
+  std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
+
+  auto worker = [&](int id) {
+    BlockRenderer br(scene, settings, result.image);
+    // Blocks are handed out one at a time, so no core idles at the end of a frame while work remains.
+    for (int b = next++; b < blocks; b = next++) {
+      if (stop.load(std::memory_order_relaxed) || (settings.cancel && settings.cancel->load())) {
+        stop = true;
+        break;
+      }
+      const int x0 = (b % bx) * bs, y0 = (b / bx) * bs;
+      br.render_block(x0, y0, std::min(bs, settings.width - x0), std::min(bs, settings.height - y0));
+      ++done;
+    }
+    counts[static_cast<std::size_t>(id)] = br.counts();
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(worker, i);
+  if (settings.progress) {
+    // The calling thread reports progress while it works too.
+    std::thread own(worker, 0);
+    while (done.load() < blocks && !stop.load()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      settings.progress(static_cast<double>(done.load()) / blocks);
+      if (settings.cancel && settings.cancel->load()) stop = true;
+    }
+    own.join();
+  } else {
+    worker(0);
+  }
+  for (auto& t : pool) t.join();
+  for (const auto& c : counts) result.rays += c;
+  result.cancelled = stop.load() || (settings.cancel && settings.cancel->load());
+  return result;
+}
+
+}  // namespace povtrace::render

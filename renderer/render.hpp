@@ -1,0 +1,48 @@
+// The pixel loop (STYLE.md (a) step 5), separate from the shading function: camera rays through pixel centres
+// (povray-pixel-pipeline.md §1), POV-Ray's antialiasing methods (§7), 32×32 blocks on a pool of threads, and the
+// working-gamma decode into a linear framebuffer (§6). The image is bit-identical whatever the thread count:
+// every block is computed on its own, including the frame pixels that method 1 compares against.
+#pragma once
+
+#include <atomic>
+#include <functional>
+
+#include "renderer/image/image.hpp"
+#include "renderer/render_scene.hpp"
+#include "renderer/tracer.hpp"
+
+namespace povtrace::render {
+
+struct RenderSettings {
+  int width = 800;
+  int height = 600;
+  int threads = 0;                  // 0: every hardware thread
+  bool antialias = false;
+  double antialias_threshold = 0.3;
+  int antialias_depth = 3;
+  int sampling_method = 1;          // 1 non-recursive (POV-Ray's default), 2 recursive
+  bool jitter = true;
+  double jitter_amount = 1.0;
+  double antialias_gamma = 2.5;
+  bool output_alpha = false;
+  ShadingModel shading = ShadingModel::povray;
+  int block_size = 32;              // POV-Ray's Render_Block_Size; also method 1's comparison blocks
+  std::function<void(double fraction_done)> progress;   // called from the calling thread
+  const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
+};
+
+struct RenderResult {
+  image::Image image;               // linear light, alpha only with output_alpha
+  RayCounts rays;
+  bool cancelled = false;
+};
+
+RenderResult render(const RenderScene& scene, const RenderSettings& settings);
+
+// The camera ray through continuous pixel position (x, y) (integer = pixel centre, y = 0 top row).
+Ray camera_ray(const RenderCamera& camera, double x, double y, int width, int height);
+
+// Working-space value → linear light (pipeline §6).
+double working_to_linear(const RenderScene& scene, double value);
+
+}  // namespace povtrace::render

@@ -1,0 +1,126 @@
+#include "renderer/render_scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace povtrace::render {
+
+namespace {
+RenderPigment make_pigment(const Pigment& p) {
+  RenderPigment r;
+  r.pattern = p.pattern;
+  r.colour = p.colour;
+  for (std::size_t i = 0; i < 2 && i < p.entries.size(); ++i) r.entries[i] = p.entries[i];
+  r.transformed = !(p.world_from_pattern == Matrix::identity());
+  if (r.transformed) r.pattern_from_world = p.world_from_pattern.inverse();
+  return r;
+}
+
+bool pigment_has_transparency(const Pigment& p) {
+  auto clear = [](const Colour& c) { return c.f != 0.0 || c.t != 0.0; };
+  if (p.pattern == PatternKind::solid) return clear(p.colour);
+  for (const auto& e : p.entries)
+    if (clear(e)) return true;
+  return false;
+}
+
+Material make_material(const Texture& texture, const std::optional<Interior>& interior) {
+  Material m;
+  m.interior = interior.value_or(Interior{});
+  m.opaque = false;
+  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
+    RenderLayer layer;
+    layer.pigment = make_pigment(it->pigment);
+    layer.finish = it->finish;
+    layer.specular_exponent = 1.0 / it->finish.roughness;
+    layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
+    // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3).
+    if (!pigment_has_transparency(it->pigment)) m.opaque = true;
+    m.layers.push_back(layer);
+  }
+  return m;
+}
+
+RenderLight make_light(const Light& l) {
+  RenderLight r;
+  r.light = l;
+  r.colour = rgb_of(l.colour);
+  const Vec3 axis = l.point_at - l.location;
+  if (l.parallel) r.parallel_direction = length(axis) > 0 ? -normalize(axis) : Vec3{0, 0, -1};
+  if (l.spotlight) {
+    r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 1};
+    r.cos_radius = std::cos(l.radius * M_PI / 180.0);
+    r.cos_falloff = std::cos(l.falloff * M_PI / 180.0);
+  }
+  r.fades = l.fade_power > 0 && std::fabs(l.fade_distance) > tolerance::epsilon;
+  return r;
+}
+
+// Flattens one description object into world-space primitives (one per shape for now).
+void add_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
+                    std::vector<Primitive>& out) {
+  Primitive p;
+  p.material = material;
+  p.object = object_index;
+  p.casts_shadow = !o.no_shadow;
+  p.inverse = o.inverse;
+  p.transformed = !(o.world_from_object == Matrix::identity());
+  p.world_from_object = o.world_from_object;
+  if (p.transformed) p.object_from_world = o.world_from_object.inverse();
+  if (const auto* s = std::get_if<Sphere>(&o.shape)) {
+    p.type = ShapeType::sphere;
+    p.a = s->centre;
+    p.radius = s->radius;
+  } else if (const auto* pl = std::get_if<Plane>(&o.shape)) {
+    p.type = ShapeType::plane;
+    p.a = pl->normal;
+    p.radius = pl->distance;
+  } else if (const auto* b = std::get_if<Box>(&o.shape)) {
+    p.type = ShapeType::box;
+    p.a = b->corner1;
+    p.b = b->corner2;
+  } else {
+    throw std::logic_error("CSG objects are refused by the parser and cannot reach the renderer");
+  }
+  out.push_back(p);
+}
+}  // namespace
+
+RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
+  RenderScene r;
+  std::vector<Primitive> primitives;
+  primitives.reserve(scene.objects.size());
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& o = scene.objects[i];
+    r.materials.push_back(make_material(*o.texture, o.interior));
+    add_primitives(o, static_cast<std::uint32_t>(r.materials.size() - 1), static_cast<std::uint32_t>(i), primitives);
+  }
+  for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
+  r.accelerator = Accelerator(std::move(primitives));
+  for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
+  r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
+                          scene.camera.right};
+  r.settings = scene.settings;
+  r.language_version = scene.language_version;
+  // Background (pipeline §5): without alpha output a 3.7 scene's background is premultiplied, transmit 0.
+  const Colour& bg = scene.background;
+  if (options.output_alpha) {
+    r.background = rgb_of(bg);
+    r.background_transmit = bg.t;
+  } else {
+    r.background = rgb_of(bg) * (1.0 - bg.t);
+  }
+  // Working gamma (pipeline §6): assumed_gamma if given; #version ≥ 3.7 alone means 1.0; otherwise legacy.
+  if (scene.settings.assumed_gamma) {
+    r.gamma_mode = GammaMode::power;
+    r.assumed_gamma = *scene.settings.assumed_gamma;
+  } else if (scene.version_given && scene.language_version >= 370) {
+    r.gamma_mode = GammaMode::power;
+    r.assumed_gamma = 1.0;
+  } else {
+    r.gamma_mode = GammaMode::legacy_srgb;
+  }
+  return r;
+}
+
+}  // namespace povtrace::render

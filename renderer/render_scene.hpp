@@ -1,0 +1,78 @@
+// The render-ready scene: built once from a SceneDescription (build_render_scene), immutable afterwards.
+// Everything per-ray code needs is precomputed here: world-space primitives in a BVH, materials with their
+// layers top-first, light directions, the camera's vectors, the working-gamma decode of the output.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render {
+
+// RGB triple for shading arithmetic (filter/transmit are carried separately where POV-Ray uses them).
+using Rgb = Vec3;
+inline Rgb rgb_of(const Colour& c) { return {c.r, c.g, c.b}; }
+// POV-Ray's intensity weights (pipeline notation grey()).
+inline double grey(const Rgb& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
+struct RenderPigment {
+  PatternKind pattern = PatternKind::solid;
+  Colour colour;
+  Colour entries[2];
+  bool transformed = false;
+  Matrix pattern_from_world;
+};
+
+struct RenderLayer {
+  RenderPigment pigment;
+  Finish finish;
+  double specular_exponent = 20;   // 1/roughness
+  bool has_highlights = false;     // phong or specular non-zero
+};
+
+struct Material {
+  std::vector<RenderLayer> layers;   // top layer first (the last one written in the scene)
+  Interior interior;
+  bool opaque = true;                // blocks shadow rays outright (pipeline §3 "opaque" flag)
+};
+
+struct RenderLight {
+  Light light;                       // as described (location, colour, kind, spot and fade parameters)
+  Rgb colour;
+  Vec3 parallel_direction;           // unit vector toward the light, for parallel lights
+  Vec3 spot_axis;                    // unit axis location → point_at, for spotlights
+  double cos_radius = 1, cos_falloff = 1;
+  bool fades = false;
+};
+
+struct RenderCamera {
+  Projection projection = Projection::perspective;
+  Vec3 location, direction, up, right;
+};
+
+// How working-space values become linear light for output (pipeline §6).
+enum class GammaMode { power, legacy_srgb };
+
+struct RenderScene {
+  Accelerator accelerator;
+  std::vector<Material> materials;
+  std::vector<RenderLight> lights;
+  RenderCamera camera;
+  GlobalSettings settings;
+  Rgb background;                    // miss colour (already premultiplied when alpha output is off)
+  double background_transmit = 0;    // alpha output only
+  int language_version = 370;
+  GammaMode gamma_mode = GammaMode::power;
+  double assumed_gamma = 1.0;
+  bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
+};
+
+struct BuildOptions {
+  bool output_alpha = false;
+};
+
+RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);
+
+}  // namespace povtrace::render
