@@ -92,7 +92,7 @@ Object Interpreter::parse_sphere(const Token& keyword) {
   o.loc = keyword.loc;
   Sphere s;
   s.centre = parse_vector();
-  expect(",", " between the sphere's centre and radius");
+  accept(",");   // commas between object parameters are optional (§8 Parse_Comma)
   s.radius = parse_float();
   o.shape = s;
   parse_object_modifiers(o);
@@ -107,7 +107,7 @@ Object Interpreter::parse_plane(const Token& keyword) {
   Token at = peek();
   const Vec3 n = parse_vector();
   if (length(n) == 0) fail_at(at, "the plane's normal is the zero vector (expected a direction)");
-  expect(",", " between the plane's normal and distance");
+  accept(",");   // commas between object parameters are optional (§8 Parse_Comma)
   // The normal is normalised first; the distance is measured along the unit normal ([V sdl_plane_side]).
   p.normal = normalize(n);
   p.distance = parse_float();
@@ -121,7 +121,7 @@ Object Interpreter::parse_box(const Token& keyword) {
   Object o;
   o.loc = keyword.loc;
   const Vec3 a = parse_vector();
-  expect(",", " between the box's two corners");
+  accept(",");   // commas between object parameters are optional (§8 Parse_Comma)
   const Vec3 b = parse_vector();
   o.shape = Box{min(a, b), max(a, b)};   // corners sorted per axis ([V sdl_promote])
   parse_object_modifiers(o);
