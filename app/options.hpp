@@ -35,7 +35,9 @@ struct RenderOptions {
   bool output_alpha = false;                    // +UA / Output_Alpha
   std::vector<std::filesystem::path> library_paths;  // +L / Library_Path, in order
   std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
-  int bits_per_channel = 8;                     // +FN16 / +FP16
+  int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)
+  bool exr_full_float = false;                  // --format=exr32 (POV-Ray's own EXR, +FE, is half float)
+  bool write_file = true;                       // +F / -F / Output_To_File: -F renders without writing a file
   int threads = 0;                              // +WT<n> / --threads; 0 = all cores
   std::vector<std::pair<std::string, double>> declares;  // Declare=NAME=VALUE, in order
   bool display = false;                         // +D/-D: accepted, povtrace has no preview window
@@ -47,13 +49,19 @@ struct RenderOptions {
   bool help = false;                            // --help / -h
 };
 
-// Parses argv (argv[0] is skipped). `.ini` arguments are read in place, in order, relative to the current
-// directory. Throws UsageError naming the offending option.
+// Parses argv (argv[0] is skipped). `.ini` arguments (also `file.ini[Section]`) are read in place, in order,
+// relative to the current directory; `Key=Value` arguments are .ini settings, as in POV-Ray; `--` ends the
+// options. A missing scene is not an error here (main decides). Throws UsageError naming the offending option.
 RenderOptions parse_command_line(int argc, const char* const* argv);
 
 // Applies one .ini file's keys to `options` (POV-Ray's INI syntax: Key=Value, ';' comments, [sections] ignored
 // except that only the unnamed/first section is read, as POV-Ray does without a section selector).
 void apply_ini_file(const std::filesystem::path& ini, RenderOptions& options);
+
+// Applies the keys before the first section header plus those of every section named `section`
+// (case-insensitive), as POV-Ray does for the argument `file.ini[section]`. A section that is absent is a
+// UsageError (POV-Ray ignores it silently; a typo there would change a render without warning).
+void apply_ini_section(const std::filesystem::path& ini, const std::string& section, RenderOptions& options);
 
 // Applies one switch such as "+W320", "-A", "+A0.3" or "Declare=N=1" (the INI form). Throws UsageError.
 void apply_switch(const std::string& text, RenderOptions& options);
