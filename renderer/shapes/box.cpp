@@ -1,0 +1,101 @@
+// Box.
+//
+// SDL: `box { <Corner1>, <Corner2>  object_modifiers... }` (POV-Ray 3.7 reference "Box"). The parser sorts the
+// corners per axis; a Primitive stores them as a = lo, b = hi. The solid is the closed axis-aligned box in object
+// space.
+//
+// POV-Ray behaviour reproduced here (facts read from source/backend/shape/boxes.cpp, 3.7-stable):
+// - Slab test in object space with the *unnormalised* object-space direction, so every depth is directly the world
+//   distance along the unit world ray and the tolerances below apply to world depths.
+// - The entry/exit interval starts as [0, BOUND_HUGE]; there is no MAX_DISTANCE for boxes. An axis whose direction
+//   component is within ±EPSILON (1e-10) is treated as parallel: the ray misses unless the origin lies within that
+//   slab (boundary included).
+// - Slabs are processed x, y, z. For y and z a new exit (entry) only replaces the current one when it is smaller
+//   (larger) by more than CLOSE_TOLERANCE (1e-6); near-ties keep the earlier value. This tie rule can move the
+//   reported depth by up to 1e-6 near edges, so we keep it.
+// - The ray misses if the exit depth is < DEPTH_TOLERANCE (1e-6). The entry depth is reported only when it is
+//   > DEPTH_TOLERANCE; the exit depth is always reported.
+// - Inside: the closed box (boundary inside); `inverse` negates the test exactly (boundary outside).
+// - Normal: POV-Ray remembers which face a root came from; our interface gets only the point, so we pick the face
+//   whose plane is nearest to the object-space point (same face everywhere except within ~1e-6 of an edge).
+//   Transformed boxes carry the axis normal to world space by the inverse transpose and normalise it.
+#include <cmath>
+
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render::shapes {
+
+namespace {
+constexpr double close_tolerance = 1e-6;  // boxes.cpp CLOSE_TOLERANCE: slab depths this close count as a tie
+}
+
+Intersections intersect_box(const Primitive& p, const Ray& ray) {
+  Intersections out;
+  const Vec3 origin = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
+  const Vec3 direction = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
+  double t_enter = 0.0;
+  double t_exit = tolerance::bound_huge;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = direction[axis];
+    const double o = origin[axis];
+    const double lo = p.a[axis];
+    const double hi = p.b[axis];
+    if (d < -tolerance::epsilon || d > tolerance::epsilon) {
+      // The x slab takes any strictly better depth; y and z need to beat the current one by the tie tolerance.
+      const double tie = axis == 0 ? 0.0 : close_tolerance;
+      const double exit_plane = d < 0 ? lo : hi;
+      const double enter_plane = d < 0 ? hi : lo;
+      const double t_far = (exit_plane - o) / d;
+      if (t_far < t_enter) return out;
+      if (t_far <= t_exit - tie) t_exit = t_far;
+      const double t_near = (enter_plane - o) / d;
+      if (t_near >= t_enter + tie) {
+        if (t_near > t_exit) return out;
+        t_enter = t_near;
+      }
+    } else if (o < lo || o > hi) {
+      return out;  // parallel to this slab and outside it
+    }
+  }
+  if (t_exit < tolerance::box_depth) return out;
+  if (t_enter > tolerance::box_depth) out.t[out.count++] = t_enter;
+  out.t[out.count++] = t_exit;
+  return out;
+}
+
+Vec3 box_normal(const Primitive& p, Vec3 world_point) {
+  const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
+  int best_axis = 0;
+  double best_sign = -1.0;
+  double best_distance = std::abs(q.x - p.a.x);
+  for (int axis = 0; axis < 3; ++axis) {
+    const double to_lo = std::abs(q[axis] - p.a[axis]);
+    const double to_hi = std::abs(q[axis] - p.b[axis]);
+    if (to_lo < best_distance) {
+      best_distance = to_lo;
+      best_axis = axis;
+      best_sign = -1.0;
+    }
+    if (to_hi < best_distance) {
+      best_distance = to_hi;
+      best_axis = axis;
+      best_sign = 1.0;
+    }
+  }
+  Vec3 n{};
+  n[best_axis] = best_sign;
+  if (!p.transformed) return n;
+  n = p.object_from_world.normal_from_inverse(n);
+  return n * (1.0 / std::sqrt(dot(n, n)));
+}
+
+bool inside_box(const Primitive& p, Vec3 world_point) {
+  const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
+  for (int axis = 0; axis < 3; ++axis)
+    if (q[axis] < p.a[axis] || q[axis] > p.b[axis]) return p.inverse;
+  return !p.inverse;
+}
+
+Bounds box_object_bounds(const Primitive& p) { return Bounds{p.a, p.b}; }
+
+}  // namespace povtrace::render::shapes

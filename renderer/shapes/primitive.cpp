@@ -1,0 +1,93 @@
+// Primitive dispatch: intersect_all / surface_normal / inside / world_bounds switch on ShapeType and forward to the
+// per-shape functions in sphere.cpp, plane.cpp and box.cpp. Each shape applies its own transform because POV-Ray
+// applies the depth tolerances in different spaces per shape (see the header comment of each shape file).
+// Also the two non-inline Bounds members.
+#include <array>
+#include <cmath>
+
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render {
+
+namespace shapes {
+// Per-shape entry points (defined in the shape's own .cpp; there is deliberately no header for them, the public
+// interface is geometry.hpp). All take world-space rays/points; object-space bounds are carried to world here.
+Intersections intersect_sphere(const Primitive& p, const Ray& ray);
+Vec3 sphere_normal(const Primitive& p, Vec3 world_point);
+bool inside_sphere(const Primitive& p, Vec3 world_point);
+Bounds sphere_object_bounds(const Primitive& p);
+
+Intersections intersect_plane(const Primitive& p, const Ray& ray);
+Vec3 plane_normal(const Primitive& p, Vec3 world_point);
+bool inside_plane(const Primitive& p, Vec3 world_point);
+Bounds plane_world_bounds(const Primitive& p);
+
+Intersections intersect_box(const Primitive& p, const Ray& ray);
+Vec3 box_normal(const Primitive& p, Vec3 world_point);
+bool inside_box(const Primitive& p, Vec3 world_point);
+Bounds box_object_bounds(const Primitive& p);
+}  // namespace shapes
+
+bool Bounds::finite() const {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(lo[i]) || !std::isfinite(hi[i])) return false;
+  return !empty();
+}
+
+double Bounds::surface_area() const {
+  if (empty()) return 0.0;
+  const Vec3 e = hi - lo;
+  return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+}
+
+Intersections intersect_all(const Primitive& p, const Ray& ray) {
+  switch (p.type) {
+    case ShapeType::sphere: return shapes::intersect_sphere(p, ray);
+    case ShapeType::plane: return shapes::intersect_plane(p, ray);
+    case ShapeType::box: return shapes::intersect_box(p, ray);
+  }
+  return {};
+}
+
+Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
+  switch (p.type) {
+    case ShapeType::sphere: return shapes::sphere_normal(p, world_point);
+    case ShapeType::plane: return shapes::plane_normal(p, world_point);
+    case ShapeType::box: return shapes::box_normal(p, world_point);
+  }
+  return {};
+}
+
+bool inside(const Primitive& p, Vec3 world_point) {
+  switch (p.type) {
+    case ShapeType::sphere: return shapes::inside_sphere(p, world_point);
+    case ShapeType::plane: return shapes::inside_plane(p, world_point);
+    case ShapeType::box: return shapes::inside_box(p, world_point);
+  }
+  return false;
+}
+
+namespace {
+// World bounds of an object-space box: the box of its 8 transformed corners.
+Bounds to_world(const Primitive& p, const Bounds& object) {
+  if (!p.transformed || object.empty()) return object;
+  Bounds world;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 c{(corner & 1) ? object.hi.x : object.lo.x, (corner & 2) ? object.hi.y : object.lo.y,
+                 (corner & 4) ? object.hi.z : object.lo.z};
+    world.extend(p.world_from_object.point(c));
+  }
+  return world;
+}
+}  // namespace
+
+Bounds world_bounds(const Primitive& p) {
+  switch (p.type) {
+    case ShapeType::sphere: return to_world(p, shapes::sphere_object_bounds(p));
+    case ShapeType::plane: return shapes::plane_world_bounds(p);
+    case ShapeType::box: return to_world(p, shapes::box_object_bounds(p));
+  }
+  return {};
+}
+
+}  // namespace povtrace::render
