@@ -147,7 +147,11 @@ std::string povray_command(const RenderOptions& o, const std::filesystem::path& 
   cmd << (o.jitter ? " +J" + std::to_string(o.jitter_amount) : std::string(" -J"));
   if (o.output_alpha) cmd << " +UA";
   for (const auto& l : o.library_paths) cmd << " " << quote("+L" + l.string());
-  for (const auto& [name, value] : o.declares) cmd << " " << quote("Declare=" + name + "=" + std::to_string(value));
+  for (const auto& [name, value] : o.declares) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%.17g", value);   // exact round trip, not to_string's 6 decimals
+    cmd << " " << quote("Declare=" + name + "=" + number);
+  }
   cmd << " +FE " << quote("+O" + exr.string()) << " " << quote("+I" + o.input.string()) << " 2>&1";
   return cmd.str();
 }
