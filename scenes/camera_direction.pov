@@ -6,4 +6,4 @@ background { color rgb <0.1, 0.15, 0.25> }
 light_source { <-4, 8, -6> color rgb <1, 1, 1> }
 plane { y, 0 pigment { color rgb <0.8, 0.8, 0.7> } finish { ambient 0.1 diffuse 0.7 } }
 sphere { <-1.2, 1, 0>, 1 pigment { color rgb <0.9, 0.3, 0.2> } finish { phong 0.6 } }
-box { <0.4, 0, -0.5>, <1.8, 1.4, 0.5> pigment { color rgb <0.3, 0.4, 0.9> } }
+box { <0.45, 0, -0.55>, <1.85, 1.35, 0.45> pigment { color rgb <0.3, 0.4, 0.9> } }
