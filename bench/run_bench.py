@@ -190,8 +190,10 @@ def run_povtrace(args, scene, image, stats, cwd, scratch):
     except (OSError, ValueError) as e:
         error = f"no readable stats JSON ({e})"
     ok = result["rc"] == 0 and error is None and os.path.exists(image)
-    if not ok and error is None:
-        error = f"exit status {result['rc']}"
+    if result["rc"] != 0:
+        error = "timed out" if result["rc"] is None else f"exit status {result['rc']}"
+    elif not ok and error is None:
+        error = "no output image"
     row = {"tool": "povtrace", "ok": ok, "rc": result["rc"], "wall_s": result["wall_s"],
            "peak_kb": result["peak_kb"], "error": None if ok else error + "; " + tail(result["output"])}
     for key in ("parse_s", "build_s", "render_s", "total_s", "rays"):
