@@ -195,7 +195,7 @@ def run_povtrace(args, scene, image, stats, cwd, scratch):
     elif not ok and error is None:
         error = "no output image"
     row = {"tool": "povtrace", "ok": ok, "rc": result["rc"], "wall_s": result["wall_s"],
-           "peak_kb": result["peak_kb"], "error": None if ok else error + "; " + tail(result["output"])}
+           "peak_kb": result["peak_kb"], "error": None if ok else "; ".join(filter(None, [error, tail(result["output"])]))}
     for key in ("parse_s", "build_s", "render_s", "total_s", "rays"):
         value = data.get(key) if isinstance(data, dict) else None
         row[key] = value if isinstance(value, (int, float)) else None
