@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <cmath>
 #include <cstdint>
 #include <thread>
@@ -217,19 +219,29 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
     }
     counts[static_cast<std::size_t>(id)] = br.counts();
   };
+  // Workers signal when they stop, so the progress monitor never outlives the render by a polling period.
+  std::mutex finished_mutex;
+  std::condition_variable finished_cv;
+  int running = threads;
+  auto run_worker = [&](int id) {
+    worker(id);
+    std::lock_guard lock(finished_mutex);
+    --running;
+    finished_cv.notify_all();
+  };
   std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(worker, i);
+  for (int i = 1; i < threads; ++i) pool.emplace_back(run_worker, i);
   if (settings.progress) {
-    // The calling thread reports progress while it works too.
-    std::thread own(worker, 0);
-    while (done.load() < blocks && !stop.load()) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::thread own(run_worker, 0);
+    std::unique_lock lock(finished_mutex);
+    while (!finished_cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; })) {
       settings.progress(static_cast<double>(done.load()) / blocks);
       if (settings.cancel && settings.cancel->load()) stop = true;
     }
+    lock.unlock();
     own.join();
   } else {
-    worker(0);
+    run_worker(0);
   }
   for (auto& t : pool) t.join();
   for (const auto& c : counts) result.rays += c;
