@@ -101,6 +101,7 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
   const auto build_start = Clock::now();
   const render::RenderScene scene = render::build_render_scene(description, {options.output_alpha});
   r.times.build_s = seconds_since(build_start);
+  for (const auto& w : scene.warnings) std::cerr << "povtrace: warning: " << w << "\n";
 
   const auto render_start = Clock::now();
   render::RenderSettings settings = render_settings_from(options);

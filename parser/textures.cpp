@@ -181,12 +181,11 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
   }
   while (!t.is("}")) {
     if (t.is("ior")) in.ior = parse_float();
-    else if (t.is("fade_distance")) in.fade_distance = parse_float();
-    else if (t.is("fade_power")) in.fade_power = parse_float();
-    else if (t.is("fade_color") || t.is("fade_colour")) in.fade_colour = parse_colour();
+    else if (t.is("fade_distance") || t.is("fade_power") || t.is("fade_color") || t.is("fade_colour"))
+      fail_unsupported(t, "interior '" + std::string(t.text) + "' (attenuation inside transparent objects)");
     else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       fail_unsupported(t, "the interior item '" + std::string(t.text) + "'");
-    else fail_expected(t, "ior, fade_distance, fade_power, fade_color or '}' in interior { }");
+    else fail_expected(t, "ior or '}' in interior { }");
     t = next();
   }
   return in;

@@ -84,6 +84,25 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
   }
   out.push_back(p);
 }
+// Refraction uses ior/1 at every surface (each object seen from air). POV-Ray tracks the list of interiors
+// a ray is in, which differs where refracting objects overlap or nest: say so instead of differing silently.
+void warn_about_nested_refraction(const std::vector<Primitive>& primitives, const std::vector<Material>& materials,
+                                  std::vector<std::string>& warnings) {
+  std::vector<const Primitive*> refracting;
+  for (const auto& p : primitives)
+    if (materials[p.material].interior.ior != 1.0) refracting.push_back(&p);
+  for (std::size_t i = 0; i < refracting.size(); ++i)
+    for (std::size_t j = i + 1; j < refracting.size(); ++j) {
+      const Bounds a = world_bounds(*refracting[i]), b = world_bounds(*refracting[j]);
+      const bool overlap = a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+                           a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
+      if (overlap) {
+        warnings.push_back("objects with an ior overlap or nest; povtrace refracts each surface as seen from air "
+                           "(ior 1), while POV-Ray uses the ior of the enclosing object: the image may differ there");
+        return;
+      }
+    }
+}
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
@@ -96,6 +115,7 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     add_primitives(o, static_cast<std::uint32_t>(r.materials.size() - 1), static_cast<std::uint32_t>(i), primitives);
   }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
+  warn_about_nested_refraction(primitives, r.materials, r.warnings);
   r.accelerator = Accelerator(std::move(primitives));
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,

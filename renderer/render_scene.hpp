@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "parser/description.hpp"
@@ -67,6 +68,7 @@ struct RenderScene {
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;
   bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
+  std::vector<std::string> warnings; // approximations the build had to make, for the user to see
 };
 
 struct BuildOptions {
