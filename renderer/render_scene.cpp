@@ -122,13 +122,16 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
                           scene.camera.right};
   r.settings = scene.settings;
   r.language_version = scene.language_version;
-  // Background (pipeline §5): without alpha output a 3.7 scene's background is premultiplied, transmit 0.
+  // Background (pipeline §5). 3.7 scenes: a miss returns the premultiplied rgb·(1 − t) with or without alpha output
+  // (POV-Ray +UA writes rgbt <.2,.4,.6,.5> as (0.1,0.2,0.3) α 0.5), transmit t only with alpha. Older scenes clear
+  // the background's transmit without alpha output (full rgb) and set it to 1 with alpha (a miss is (0,0,0) α 0).
   const Colour& bg = scene.background;
-  if (options.output_alpha) {
-    r.background = rgb_of(bg);
-    r.background_transmit = bg.t;
+  if (scene.language_version < 370) {
+    r.background = options.output_alpha ? Rgb{0, 0, 0} : rgb_of(bg);
+    r.background_transmit = options.output_alpha ? 1.0 : 0.0;
   } else {
     r.background = rgb_of(bg) * (1.0 - bg.t);
+    r.background_transmit = options.output_alpha ? bg.t : 0.0;
   }
   // Working gamma (pipeline §6): assumed_gamma if given; #version ≥ 3.7 alone means 1.0; otherwise legacy.
   if (scene.settings.assumed_gamma) {
