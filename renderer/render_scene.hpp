@@ -62,8 +62,8 @@ struct RenderScene {
   std::vector<RenderLight> lights;
   RenderCamera camera;
   GlobalSettings settings;
-  Rgb background;                    // miss colour (already premultiplied when alpha output is off)
-  double background_transmit = 0;    // alpha output only
+  Rgb background;                    // colour a missing camera ray returns (pipeline §5: premultiplied by 1 − t)
+  double background_transmit = 0;    // transmit of a miss (non-zero only with alpha output)
   int language_version = 370;
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;
