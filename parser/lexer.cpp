@@ -101,7 +101,9 @@ Token lex_token(const SourceFile& file, LexPosition at) {
   }
   Token t;
   if (!ok) {
-    // Not a token and not the end: an illegal character after the skipped blanks.
+    // Not a token and not the end: an illegal character after the skipped blanks. The failed parse rewound
+    // the input to `at`, so skip the blanks and comments again to point at the character itself.
+    pegtl::parse<grammar::skip>(in);
     const char* bad = in.current();
     LexPosition p = advance(at, begin, bad);
     char hex[8];
