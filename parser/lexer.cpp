@@ -15,19 +15,35 @@ using namespace pegtl;
 // Blanks: isspace characters, plus NUL and Ctrl-Z, which POV-Ray also ignores.
 struct blank_char : one<' ', '\t', '\n', '\r', '\v', '\f', '\0', '\x1a'> {};
 struct line_comment : seq<two<'/'>, until<eolf>> {};
-struct block_comment_open : string<'/', '*'> {};
-struct block_comment_close : string<'*', '/'> {};
-// Block comments nest (Parse_C_Comments recurses on an inner "/*").
-struct block_comment;
-struct block_comment_body : until<block_comment_close, sor<block_comment, any>> {};
-struct block_comment : if_must<block_comment_open, block_comment_body> {};
+// Block comments nest (Parse_C_Comments recurses on an inner "/*"; "*/" is tested first). Matched with a depth
+// counter rather than a recursive rule, so that deeply nested comments cannot overflow the stack.
+inline constexpr const char* kUnterminatedComment =
+    "unterminated block comment: expected '*/' before the end of the file (block comments nest, so every '/*' "
+    "needs its own '*/')";
+struct block_comment {
+  using rule_t = block_comment;
+  using subs_t = empty_list;
+  template <typename ParseInput> static bool match(ParseInput& in) {
+    auto next_is = [&in](char a, char b) { return in.size(2) >= 2 && in.peek_char(0) == a && in.peek_char(1) == b; };
+    if (!next_is('/', '*')) return false;
+    in.bump(2);
+    for (int depth = 1; depth > 0;) {
+      if (in.size(2) < 2) throw parse_error(kUnterminatedComment, in);
+      if (next_is('*', '/')) { in.bump(2); --depth; }
+      else if (next_is('/', '*')) { in.bump(2); ++depth; }
+      else in.bump(1);
+    }
+    return true;
+  }
+};
 struct skip : star<sor<plus<blank_char>, line_comment, block_comment>> {};
 
 struct exponent : seq<one<'e', 'E'>, opt<one<'+', '-'>>, plus<digit>> {};
 struct number : sor<seq<plus<digit>, opt<one<'.'>, star<digit>>, opt<exponent>>,
                     seq<one<'.'>, plus<digit>, opt<exponent>>> {};
 struct identifier : pegtl::identifier {};
-struct string_char : sor<seq<one<'\\'>, not_one<'\n', '\r'>>, not_one<'"', '\n', '\r'>> {};
+// A string may span lines, as in POV-Ray (a literal line break is part of the string).
+struct string_char : sor<seq<one<'\\'>, any>, not_one<'"'>> {};
 struct string_literal : if_must<one<'"'>, until<one<'"'>, string_char>> {};
 struct two_char_symbol : sor<string<'<', '='>, string<'>', '='>, string<'!', '='>> {};
 struct one_char_symbol : one<'{', '}', '(', ')', '[', ']', '<', '>', ',', ';', ':', '?', '!', '=', '+', '-', '*',
@@ -37,10 +53,8 @@ struct token : sor<number, identifier, string_literal, symbol> {};
 struct next_token : seq<skip, sor<eof, token>> {};
 
 template <typename Rule> inline constexpr const char* error_message = nullptr;
-template <> inline constexpr const char* error_message<block_comment_body> =
-    "unterminated block comment: expected '*/' (block comments nest, so every '/*' needs its own '*/')";
 template <> inline constexpr const char* error_message<until<one<'"'>, string_char>> =
-    "unterminated string: expected '\"' before the end of the line";
+    "unterminated string: expected '\"' before the end of the file";
 struct error_control {
   template <typename Rule> static constexpr auto message = error_message<Rule>;
   template <typename Rule> static constexpr auto raise_on_failure = false;
@@ -81,6 +95,31 @@ LexPosition advance(const LexPosition& start, const char* from, const char* to) 
 }
 
 SourceLoc loc_of(const SourceFile& file, const LexPosition& p) { return SourceLoc{file.name, p.line, p.column}; }
+
+// The opening '/*' or '"' of the comment or string that runs to the end of the file: blanks, line comments and
+// closed block comments are skipped the way the grammar skips them ("*/" is tested before "/*").
+const char* unterminated_start(const char* c, const char* end) {
+  auto at = [&](const char* p, char a, char b) { return p + 1 < end && p[0] == a && p[1] == b; };
+  while (c < end) {
+    if (at(c, '/', '/')) {
+      while (c < end && *c != '\n') ++c;
+    } else if (at(c, '/', '*')) {
+      const char* open = c;
+      int depth = 0;
+      while (c < end) {
+        if (at(c, '*', '/')) { c += 2; if (--depth == 0) break; }
+        else if (at(c, '/', '*')) { c += 2; ++depth; }
+        else ++c;
+      }
+      if (depth > 0) return open;
+    } else if (*c == '"') {
+      return c;
+    } else {
+      ++c;
+    }
+  }
+  return end;
+}
 }  // namespace
 
 Token lex_token(const SourceFile& file, LexPosition at) {
@@ -95,8 +134,9 @@ Token lex_token(const SourceFile& file, LexPosition at) {
   try {
     ok = pegtl::parse<grammar::next_token, action, grammar::control>(in, c);
   } catch (const pegtl::parse_error& e) {
-    const auto& p = e.positions().front();
-    SourceLoc loc{file.name, static_cast<int>(p.line), static_cast<int>(p.column)};
+    // Report the opening '/*' or '"' that is never closed: the end of the file, where the terminator was
+    // expected, does not say which one.
+    const SourceLoc loc = loc_of(file, advance(at, begin, unterminated_start(begin, end)));
     throw ParseError(loc, std::string(e.message()), std::string(file.line_text(loc.line)));
   }
   Token t;
