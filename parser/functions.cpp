@@ -135,8 +135,9 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     expect(",", "");
     const double angle = degrees_to_radians(parse_float());
     expect(")", "");
-    // Same sense as `rotate` (vaxis_rotate(x, y, 90) = -z, §5): Rodrigues' formula with the angle negated.
-    const double c = std::cos(-angle), s = std::sin(-angle);
+    // Same sense as `rotate` (vaxis_rotate(x, y, 90) = -z, §5): Rodrigues' formula as it stands, since
+    // cross(y, x) = -z.
+    const double c = std::cos(angle), s = std::sin(angle);
     return Numeric::vector(v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c)));
   }
   if (n == "strlen" || n == "asc" || n == "val" || n == "file_exists") {
