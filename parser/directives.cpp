@@ -47,8 +47,8 @@ void Interpreter::directive(const Token& hash) {
 
 void Interpreter::directive_version(const Token& at) {
   const double v = parse_float();
-  accept(";");
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
+  if (peek_raw().is(";")) next();
   if (!statement_seen_ && frames_.size() == 1) scene_.version_given = true;
   (void)at;
 }
@@ -67,13 +67,13 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
                                    "interior or camera) for " + name);
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
-  if (std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350) {
-    Token semi = next();
-    if (!semi.is(";")) fail_expected(semi, "';' after the value of " + name);
-  } else {
-    accept(";");
-  }
+  const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
+  // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
+  // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   if (local) symbols_.local(name, std::move(*value)); else symbols_.declare(name, std::move(*value));
+  Token semi = peek_raw();
+  if (semi.is(";")) next();
+  else if (needs_semicolon) fail_expected(semi, "';' after the value of " + name);
   (void)at;
 }
 

@@ -67,7 +67,7 @@ Numeric Interpreter::parse_expression() {
   auto comparison = [this]() {
     Numeric left = parse_additive();
     while (true) {
-      Token op = next();
+      Token op = peek_raw();
       static const std::map<std::string_view, std::function<bool(double, double)>> ops = {
           {"<", [](double a, double b) { return a < b; }},
           {">", [](double a, double b) { return a > b; }},
@@ -76,21 +76,24 @@ Numeric Interpreter::parse_expression() {
           {"=", [](double a, double b) { return std::fabs(a - b) <= kEqualEpsilon; }},
           {"!=", [](double a, double b) { return std::fabs(a - b) > kEqualEpsilon; }}};
       auto it = op.kind == TokenKind::symbol ? ops.find(op.text) : ops.end();
-      if (it == ops.end()) { unget(op); return left; }
+      if (it == ops.end()) return left;
+      next();
       Numeric right = parse_additive();
       left = Numeric::scalar(it->second(to_float(left, op), to_float(right, op)) ? 1.0 : 0.0);
     }
   };
   Numeric value = comparison();
   while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
-    Token op = next();
-    if (!op.is("&") && !op.is("|")) { unget(op); break; }
+    Token op = peek_raw();
+    if (!op.is("&") && !op.is("|")) break;
+    next();
     const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
     const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
     value = Numeric::scalar((op.is("&") ? (a && b) : (a || b)) ? 1.0 : 0.0);
   }
-  Token q = next();
-  if (!q.is("?")) { unget(q); return value; }
+  Token q = peek_raw();
+  if (!q.is("?")) return value;
+  next();
   const bool c = std::fabs(to_float(value, q)) > kEqualEpsilon;
   Numeric a = parse_expression();
   expect(":", " in the conditional expression c ? a : b");
@@ -99,20 +102,24 @@ Numeric Interpreter::parse_expression() {
 }
 
 // ---- parameter level -------------------------------------------------------------------------------------
+// After a complete operand the look for an operator is raw (peek_raw): as in POV-Ray, a directive or macro call
+// there runs only once the value is finished — e.g. the next `#declare` after a value without ';' (§1 item 6).
 Numeric Interpreter::parse_additive() {
   Numeric value = parse_multiplicative();
   while (true) {
-    Token op = next();
+    Token op = peek_raw();
+    if (!op.is("+") && !op.is("-")) return value;
+    next();
     if (op.is("+")) value = componentwise(value, parse_multiplicative(), std::plus<>());
-    else if (op.is("-")) value = componentwise(value, parse_multiplicative(), std::minus<>());
-    else { unget(op); return value; }
+    else value = componentwise(value, parse_multiplicative(), std::minus<>());
   }
 }
 
 Numeric Interpreter::parse_multiplicative() {
   Numeric value = parse_unary();
   while (true) {
-    Token op = next();
+    Token op = peek_raw();
+    if (op.is("*") || op.is("/")) next();
     if (op.is("*")) {
       value = componentwise(value, parse_unary(), std::multiplies<>());
     } else if (op.is("/")) {
@@ -123,7 +130,6 @@ Numeric Interpreter::parse_multiplicative() {
         value.v[i] /= divisor.v[i];
       }
     } else {
-      unget(op);
       return value;
     }
   }
@@ -149,8 +155,9 @@ Numeric Interpreter::parse_unary() {
 // .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
 Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
   while (true) {
-    Token dot = next();
-    if (!dot.is(".")) { unget(dot); return value; }
+    Token dot = peek_raw();
+    if (!dot.is(".")) return value;
+    next();
     Token member = next();
     static const std::map<std::string_view, int> components = {
         {"x", 0}, {"u", 0}, {"red", 0}, {"y", 1}, {"v", 1}, {"green", 1}, {"z", 2}, {"blue", 2},
@@ -249,6 +256,10 @@ Colour Interpreter::parse_colour() {
       unget(t);
       break;
     }
+    // Only overrides can follow a complete colour; look raw, as after any operand.
+    const Token after = peek_raw();
+    if (!(after.is("red") || after.is("green") || after.is("blue") || after.is("filter") || after.is("transmit")))
+      break;
     t = next();
   }
   if (!have_base) fail_expected(peek(), "a colour (rgb <r,g,b>, a colour identifier or an expression)");

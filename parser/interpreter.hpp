@@ -46,6 +46,9 @@ class Interpreter {
   Token raw();                   // next token of the frame stack, no directive processing
   Token next();                  // next token after directives and macro calls
   Token peek();
+  // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
+  // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
+  Token peek_raw();
   void unget(const Token& t) { pushed_back_.push_back(t); }
   Token expect(std::string_view symbol, std::string_view context);
   bool accept(std::string_view symbol);   // consumes the token if it is `symbol`

@@ -118,7 +118,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "texture") {
     auto tex = parse_texture_block(first);
     // Several texture blocks in a row declare a layered texture.
-    while (peek().is("texture")) {
+    while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
       Token more = next();
       auto top = parse_texture_block(more);
       auto layered = std::make_shared<Texture>(*tex);

@@ -40,15 +40,44 @@ bool Interpreter::is_macro_call(const Token& t) const {
 }
 
 Token Interpreter::next() {
-  if (!pushed_back_.empty()) {
-    Token t = pushed_back_.back();
-    pushed_back_.pop_back();
-    return t;
-  }
   while (true) {
-    Token t = raw();
+    // A directive may itself look ahead and push a token back: that token comes first, before reading on.
+    // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks.
+    Token t;
+    if (!pushed_back_.empty()) {
+      t = pushed_back_.back();
+      pushed_back_.pop_back();
+    } else {
+      t = raw();
+    }
     if (t.is("#")) { directive(t); continue; }
     if (is_macro_call(t)) { invoke_macro(t); continue; }
+    return t;
+  }
+}
+
+Token Interpreter::peek_raw() {
+  while (true) {
+    Token t;
+    if (!pushed_back_.empty()) {
+      t = pushed_back_.back();
+      pushed_back_.pop_back();
+    } else {
+      t = raw();
+    }
+    // The #end of the running macro is exempt (POV-Ray checks it first): it returns, and the look goes on in
+    // the caller. A `#` comes back raw, so the frame still stands just after it.
+    if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
+        controls_.back().frame == frames_.size() - 1) {
+      Frame& f = frames_.back();
+      const Token word = lex_token(*f.file, f.pos);
+      if (word.is("end")) {
+        f.pos = word.end;
+        directive_end(word);
+        continue;
+      }
+    }
+    unget(t);
     return t;
   }
 }
@@ -154,9 +183,12 @@ void Interpreter::invoke_macro(const Token& name) {
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
     if (i > 0) accept(",");
     Token first = next();
-    // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller.
+    // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
+    // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
+    // of that macro must not run, and drop its locals, before `first` is evaluated.
     if (first.kind == TokenKind::identifier && !is_reserved_word(first.text)) {
-      Token after = peek();
+      const Token after =
+          pushed_back_.empty() ? lex_token(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
       auto level = symbols_.level_of(std::string(first.text));
       if (level && (after.is(",") || after.is(")"))) {
         bound.emplace_back(macro.parameters[i], Alias{*level, std::string(first.text)});
