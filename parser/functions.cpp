@@ -218,9 +218,9 @@ Numeric Interpreter::parse_primary() {
   if (w == "version") return Numeric::scalar(scene_.language_version / 100.0);
   if (w == "clock" || w == "clock_delta") return Numeric::scalar(0);
   if (w == "clock_on") return Numeric::scalar(0);
-  if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w.starts_with("srgb"))
-    return parse_colour_keyword_form(t);
-  if (w == "color" || w == "colour") {
+  // rgb… and color start Parse_Colour, so overrides apply here too (`rgb <1,0,0> filter 0.5`, §5).
+  if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w.starts_with("srgb") || w == "color" ||
+      w == "colour") {
     unget(t);
     return Numeric::from_colour(parse_colour());
   }
