@@ -79,8 +79,14 @@ void Interpreter::parse_object_modifiers(Object& object) {
     Token t = next();
     if (t.is("}")) return;
     if (try_object_modifier(t, object)) continue;
-    if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
-      fail_unsupported(t, "the object modifier '" + std::string(t.text) + "'");
+    // Only real POV-Ray object modifiers are "unsupported"; any other keyword here (often the next object after a
+    // missing '}') is a syntax error.
+    static const std::string_view unsupported[] = {
+        "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate", "sturm",
+        "open", "interior_texture", "material", "uv_mapping", "photons", "radiosity", "split_union",
+        "cutaway_textures", "hierarchy"};
+    for (auto u : unsupported)
+      if (t.is(u)) fail_unsupported(t, "the object modifier '" + std::string(t.text) + "'");
     fail_expected(t, "an object modifier (translate, rotate, scale, matrix, transform, texture, pigment, finish, "
                      "interior, no_shadow, inverse) or '}'");
   }
