@@ -137,6 +137,7 @@ Numeric Interpreter::parse_multiplicative() {
 
 Numeric Interpreter::parse_unary() {
   Token t = next();
+  const NestingGuard guard(*this, t);   // every nested operand passes through here
   if (t.is("-")) {
     Numeric n = parse_unary();
     for (int i = 0; i < n.terms; ++i) n.v[i] = -n.v[i];

@@ -151,6 +151,21 @@ class Interpreter {
   bool camera_seen_ = false;
   bool statement_seen_ = false;
   std::vector<std::uint32_t> rand_streams_;
+
+  // Input nested deeper than this (parentheses, vectors, unary operators, object { object { … } }, transform
+  // blocks) is refused with an error instead of overflowing the C++ stack. POV-Ray itself crashes there.
+  static constexpr int kMaxNesting = 500;
+  int nesting_ = 0;
+  class NestingGuard {
+   public:
+    NestingGuard(Interpreter& in, const Token& at);
+    ~NestingGuard() { --in_.nesting_; }
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+
+   private:
+    Interpreter& in_;
+  };
 };
 
 }  // namespace povtrace::sdl

@@ -141,6 +141,7 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
 
 // object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
 SceneItem Interpreter::parse_object_block(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
   expect("{", " after 'object'");
   Token t = next();
   std::optional<SceneItem> item;

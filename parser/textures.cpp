@@ -48,7 +48,7 @@ bool Interpreter::try_transform(const Token& t, Matrix& m) {
 }
 
 Matrix Interpreter::parse_transform_block(const Token& keyword) {
-  (void)keyword;
+  const NestingGuard guard(*this, keyword);
   Token open = next();
   if (!open.is("{")) fail_unsupported(open, "the old 'transform Identifier' form without braces");
   Matrix m;

@@ -33,6 +33,14 @@ Token Interpreter::raw() {
   }
 }
 
+Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(in) {
+  if (++in_.nesting_ > kMaxNesting) {
+    --in_.nesting_;   // the destructor does not run when the constructor throws
+    in_.fail_at(at, "expressions or blocks nested too deeply (more than " + std::to_string(kMaxNesting) +
+                        " levels)");
+  }
+}
+
 bool Interpreter::is_macro_call(const Token& t) const {
   if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return false;
   const Value* v = symbols_.find(std::string(t.text));
