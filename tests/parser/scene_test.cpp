@@ -1,0 +1,534 @@
+// What the parser puts in the SceneDescription for small scenes: camera (POV-Ray's fixed order of application,
+// povray-pixel-pipeline.md §1), lights (§3), shapes and transforms (povray-sdl-and-geometry.md §8–§9), textures
+// and finishes (§11, pipeline §2), #default, object copies, global settings and background.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "parse_helpers.hpp"
+
+namespace povtrace::test {
+namespace {
+
+constexpr double kTol = 1e-12;
+
+void expect_vec_near(Vec3 got, Vec3 want, double tol = kTol) {
+  EXPECT_NEAR(got.x, want.x, tol) << "x";
+  EXPECT_NEAR(got.y, want.y, tol) << "y";
+  EXPECT_NEAR(got.z, want.z, tol) << "z";
+}
+
+void expect_colour(const Colour& got, const Colour& want) {
+  EXPECT_NEAR(got.r, want.r, kTol) << "r";
+  EXPECT_NEAR(got.g, want.g, kTol) << "g";
+  EXPECT_NEAR(got.b, want.b, kTol) << "b";
+  EXPECT_NEAR(got.f, want.f, kTol) << "f";
+  EXPECT_NEAR(got.t, want.t, kTol) << "t";
+}
+
+void expect_matrix_near(const Matrix& a, const Matrix& b) {
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(a.m[i][j], b.m[i][j], kTol) << "row " << i << " column " << j;
+}
+
+SceneDescription scene(const std::string& body) { return parse("#version 3.7;\n" + body); }
+
+Camera camera_of(const std::string& camera_block) { return scene(camera_block).camera; }
+
+const TextureLayer& top_layer(const Object& o) {
+  EXPECT_TRUE(o.texture);
+  return o.texture->layers.back();
+}
+
+// ---- Camera -------------------------------------------------------------------------------------------------------
+TEST(Camera, DefaultsWithoutACameraAndWithAnEmptyOne) {
+  for (const Camera& c : {scene("").camera, camera_of("camera { }")}) {
+    EXPECT_EQ(c.projection, Projection::perspective);
+    expect_vec_near(c.location, {0, 0, 0});
+    expect_vec_near(c.direction, {0, 0, 1});   // |D| = 1: `angle` is only applied when written
+    expect_vec_near(c.up, {0, 1, 0});
+    expect_vec_near(c.right, {1.33, 0, 0});    // 1.33, not 4/3
+  }
+}
+
+TEST(Camera, AngleIsAppliedAfterDirectionWhateverTheOrder) {
+  // |D| = |R| / (2 tan(a/2)) = 1.33 / 2 for 90°, along the normalised direction.
+  for (const char* block : {"camera { angle 90 direction <0,0,5> }", "camera { direction <0,0,5> angle 90 }"}) {
+    const Camera c = camera_of(block);
+    expect_vec_near(c.direction, {0, 0, 0.665}, 1e-12);
+    expect_vec_near(c.right, {1.33, 0, 0});
+  }
+  const Camera wide = camera_of("camera { right x*2 angle 90 }");
+  expect_vec_near(wide.direction, {0, 0, 1}, 1e-12);
+}
+
+TEST(Camera, LookAtKeepsTheLengthsAndTheHandedness) {
+  const Camera c = camera_of(
+      "camera { location <0,0,-5> direction <0,0,2> up <0,3,0> right <4,0,0> look_at <1,1,0> }");
+  const Vec3 d = normalize(Vec3{1, 1, 5});
+  const Vec3 r = normalize(cross(Vec3{0, 1, 0}, d));
+  const Vec3 u = cross(d, r);
+  expect_vec_near(c.location, {0, 0, -5});
+  expect_vec_near(c.direction, d * 2);
+  expect_vec_near(c.right, r * 4);
+  expect_vec_near(c.up, u * 3);
+  EXPECT_NEAR(length(c.direction), 2, kTol);
+  EXPECT_GT(dot(cross(c.up, c.direction), c.right), 0);   // still left-handed
+}
+
+TEST(Camera, LookAtOrderDoesNotMatter) {
+  const Camera a = camera_of("camera { look_at <1,0,1> location <0,1,0> }");
+  const Camera b = camera_of("camera { location <0,1,0> look_at <1,0,1> }");
+  expect_vec_near(a.direction, b.direction);
+  expect_vec_near(a.right, b.right);
+  expect_vec_near(a.up, b.up);
+}
+
+TEST(Camera, SkySetsTheRoll) {
+  const Camera c = camera_of("camera { sky x look_at <0,0,1> }");
+  // R̂ = sky × D̂ = x × z = -y; Û = D̂ × R̂ = z × -y = x.
+  expect_vec_near(c.right, {0, -1.33, 0});
+  expect_vec_near(c.up, {1, 0, 0});
+}
+
+TEST(Camera, NegativeRightMirrors) {
+  const Camera plain = camera_of("camera { right -x*1.33 }");
+  expect_vec_near(plain.right, {-1.33, 0, 0});
+  // With look_at the handedness sign of the written vectors survives: right points the other way.
+  const Camera c = camera_of("camera { right -x*1.33 look_at <1,0,1> }");
+  const Vec3 d = normalize(Vec3{1, 0, 1});
+  const Vec3 r = normalize(cross(Vec3{0, 1, 0}, d));
+  expect_vec_near(c.right, r * -1.33);
+  EXPECT_LT(dot(cross(c.up, c.direction), c.right), 0);
+  const Camera normal = camera_of("camera { look_at <1,0,1> }");
+  expect_vec_near(normal.right, r * 1.33);
+}
+
+TEST(Camera, OrthographicResize) {
+  // Neither up nor right given: R and U scale by |look_at - location| / |D|.
+  const Camera o = camera_of("camera { orthographic location <0,0,-10> look_at 0 }");
+  EXPECT_EQ(o.projection, Projection::orthographic);
+  expect_vec_near(o.right, {13.3, 0, 0}, 1e-12);
+  expect_vec_near(o.up, {0, 10, 0}, 1e-12);
+  // With an angle the view is 2 d tan(a/2) wide.
+  const Camera a = camera_of("camera { orthographic location <0,0,-10> look_at 0 angle 60 }");
+  EXPECT_NEAR(length(a.right), 20 * std::tan(M_PI / 6), 1e-12);
+  EXPECT_NEAR(length(a.up), 20 * std::tan(M_PI / 6) / 1.33, 1e-12);
+  // Explicit up and right, no angle: the rectangle is used as given.
+  const Camera e = camera_of("camera { orthographic location <0,0,-10> look_at 0 up y*2 right x*4 }");
+  expect_vec_near(e.right, {4, 0, 0});
+  expect_vec_near(e.up, {0, 2, 0});
+  // Without look_at the distance is measured to the default look_at <0,0,1>.
+  const Camera d = camera_of("camera { orthographic location <0,0,-4> }");
+  expect_vec_near(d.right, {1.33 * 5, 0, 0}, 1e-12);
+}
+
+TEST(Camera, OwnTransformsAreAppliedLast) {
+  const Camera t = camera_of("camera { translate <1,0,0> location <0,0,-5> look_at <0,0,0> }");
+  expect_vec_near(t.location, {1, 0, -5});
+  expect_vec_near(t.direction, {0, 0, 1});   // look_at was resolved before the translate
+  // rotate y*90 takes +z to +x and the location <0,0,-5> to <-5,0,0>.
+  const Camera r = camera_of("camera { location <0,0,-5> look_at 0 rotate y*90 }");
+  expect_vec_near(r.location, {-5, 0, 0}, 1e-12);
+  expect_vec_near(r.direction, {1, 0, 0}, 1e-12);
+  expect_vec_near(r.right, {0, 0, -1.33}, 1e-12);
+  expect_vec_near(r.up, {0, 1, 0}, 1e-12);
+}
+
+TEST(Camera, DeclaredCameraIsCopiedAndTheLastCameraWins) {
+  const SceneDescription s = scene(
+      "#declare C = camera { location <0,0,-3> }\n"
+      "camera { location <9,9,9> }\n"
+      "camera { C }\n");
+  expect_vec_near(s.camera.location, {0, 0, -3});
+}
+
+// ---- Lights ------------------------------------------------------------------------------------------------------
+TEST(Lights, PointLightDefaults) {
+  const SceneDescription s = scene("light_source { <1,2,3> color rgb <1,0.5,0.25> }\n");
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& l = s.lights[0];
+  expect_vec_near(l.location, {1, 2, 3});
+  expect_colour(l.colour, {1, 0.5, 0.25, 0, 0});
+  EXPECT_FALSE(l.spotlight);
+  EXPECT_FALSE(l.parallel);
+  EXPECT_FALSE(l.shadowless);
+  EXPECT_EQ(l.fade_distance, 0);
+  EXPECT_EQ(l.fade_power, 0);
+  EXPECT_EQ(l.loc.line, 2);
+  EXPECT_EQ(l.loc.column, 1);
+}
+
+TEST(Lights, SpotlightDefaultsAndValues) {
+  const SceneDescription s = scene(
+      "light_source { <0,10,0> rgb 1 spotlight point_at <0,0,0> }\n"
+      "light_source { <0,10,0>, rgb 1 spotlight radius 10 falloff 25 tightness 5 }\n");
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_TRUE(s.lights[0].spotlight);
+  EXPECT_EQ(s.lights[0].radius, 30);
+  EXPECT_EQ(s.lights[0].falloff, 45);
+  EXPECT_EQ(s.lights[0].tightness, 0);
+  expect_vec_near(s.lights[0].point_at, {0, 0, 0});
+  EXPECT_EQ(s.lights[1].radius, 10);
+  EXPECT_EQ(s.lights[1].falloff, 25);
+  EXPECT_EQ(s.lights[1].tightness, 5);
+  expect_vec_near(s.lights[1].point_at, {0, 0, 1});   // default point_at
+}
+
+TEST(Lights, ParallelShadowlessFade) {
+  const SceneDescription s = scene(
+      "light_source { <0,10,0> color rgb 1 parallel point_at 0 }\n"
+      "light_source { <0,10,0> color rgb 0.5 shadowless fade_distance 5 fade_power 2 }\n");
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_TRUE(s.lights[0].parallel);
+  EXPECT_FALSE(s.lights[0].shadowless);
+  EXPECT_TRUE(s.lights[1].shadowless);
+  EXPECT_EQ(s.lights[1].fade_distance, 5);
+  EXPECT_EQ(s.lights[1].fade_power, 2);
+  expect_colour(s.lights[1].colour, {0.5, 0.5, 0.5, 0, 0});
+}
+
+TEST(Lights, TransformsMoveLocationAndPointAt) {
+  const SceneDescription s = scene(
+      "#declare L = light_source { <1,0,0> rgb 1 spotlight point_at <1,-1,0> }\n"
+      "light_source { L translate y }\n"
+      "object { L rotate y*90 }\n");
+  ASSERT_EQ(s.lights.size(), 2u);
+  expect_vec_near(s.lights[0].location, {1, 1, 0});
+  expect_vec_near(s.lights[0].point_at, {1, 0, 0});
+  EXPECT_TRUE(s.lights[0].spotlight);
+  expect_vec_near(s.lights[1].location, {0, 0, -1}, 1e-12);
+  expect_vec_near(s.lights[1].point_at, {0, -1, -1}, 1e-12);
+}
+
+// ---- Shapes ---------------------------------------------------------------------------------------------------
+TEST(Shapes, SpherePlaneBox) {
+  const SceneDescription s = scene(
+      "sphere { <1,2,3>, 4 }\n"
+      "plane { <0,2,0>, 3 }\n"
+      "plane { <3,0,4>, -1 }\n"
+      "box { <1,-1,2>, <-1,1,-2> }\n");
+  ASSERT_EQ(s.objects.size(), 4u);
+  const auto& sphere = std::get<Sphere>(s.objects[0].shape);
+  expect_vec_near(sphere.centre, {1, 2, 3});
+  EXPECT_EQ(sphere.radius, 4);
+  // The normal is normalised first; the distance is along the unit normal (not divided by |N|).
+  const auto& p1 = std::get<Plane>(s.objects[1].shape);
+  expect_vec_near(p1.normal, {0, 1, 0});
+  EXPECT_EQ(p1.distance, 3);
+  const auto& p2 = std::get<Plane>(s.objects[2].shape);
+  expect_vec_near(p2.normal, {0.6, 0, 0.8});
+  EXPECT_EQ(p2.distance, -1);
+  const auto& b = std::get<Box>(s.objects[3].shape);
+  expect_vec_near(b.corner1, {-1, -1, -2});
+  expect_vec_near(b.corner2, {1, 1, 2});
+  for (const Object& o : s.objects) {
+    EXPECT_FALSE(o.inverse);
+    EXPECT_FALSE(o.no_shadow);
+    EXPECT_FALSE(o.interior.has_value());
+    expect_matrix_near(o.world_from_object, Matrix::identity());
+  }
+  EXPECT_EQ(s.objects[3].loc.line, 5);
+}
+
+TEST(Shapes, ObjectFlagsAndInterior) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 no_shadow inverse hollow interior { ior 1.5 } }\n"
+      "sphere { 0, 1 inverse inverse hollow on }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_TRUE(s.objects[0].no_shadow);
+  EXPECT_TRUE(s.objects[0].inverse);
+  ASSERT_TRUE(s.objects[0].interior.has_value());
+  EXPECT_EQ(s.objects[0].interior->ior, 1.5);
+  EXPECT_FALSE(s.objects[1].inverse);
+}
+
+// ---- Transforms ----------------------------------------------------------------------------------------------
+TEST(Transforms, ComposeInWrittenOrder) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 translate x rotate y*90 }\n"
+      "sphere { 0, 1 rotate y*90 translate x }\n"
+      "sphere { 0, 1 scale 2 translate <1,2,3> }\n"
+      "sphere { 0, 1 translate <1,2,3> scale 2 }\n");
+  ASSERT_EQ(s.objects.size(), 4u);
+  // Row vectors: the total is M1·M2·…; rotate y*90 takes +x to -z.
+  expect_vec_near(s.objects[0].world_from_object.point({0, 0, 0}), {0, 0, -1}, 1e-12);
+  expect_vec_near(s.objects[1].world_from_object.point({0, 0, 0}), {1, 0, 0}, 1e-12);
+  expect_vec_near(s.objects[1].world_from_object.point({1, 0, 0}), {1, 0, -1}, 1e-12);
+  expect_vec_near(s.objects[2].world_from_object.point({1, 1, 1}), {3, 4, 5});
+  expect_vec_near(s.objects[3].world_from_object.point({1, 1, 1}), {4, 6, 8});
+}
+
+TEST(Transforms, RotateMatrixTransformBlockAndScaleZero) {
+  Messages m;
+  const SceneDescription s = parse(
+      "#version 3.7;\n"
+      "sphere { 0, 1 rotate <90,0,90> }\n"
+      "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 1,2,3> }\n"
+      "sphere { 0, 1 transform { translate x scale 2 inverse } }\n"
+      "sphere { 0, 1 scale <2,0,1> }\n",
+      &m);
+  ASSERT_EQ(s.objects.size(), 4u);
+  expect_vec_near(s.objects[0].world_from_object.vector({0, 1, 0}), {0, 0, 1}, 1e-12);   // about x, then z
+  expect_vec_near(s.objects[1].world_from_object.point({0, 0, 0}), {1, 2, 3});
+  // The inverse of "translate x then scale 2" maps <2,0,0> back to <0,0,0>.
+  expect_vec_near(s.objects[2].world_from_object.point({2, 0, 0}), {0, 0, 0});
+  // scale 0 in an axis becomes 1 there, with a warning.
+  expect_matrix_near(s.objects[3].world_from_object, Matrix::scaling({2, 1, 1}));
+  ASSERT_EQ(m.items.size(), 1u);
+  EXPECT_NE(m.items[0].find("test.pov:5:15: warning: scale by 0"), std::string::npos) << m.items[0];
+}
+
+// ---- Textures -------------------------------------------------------------------------------------------------
+TEST(Textures, DefaultTextureAndFinishDefaults) {
+  const SceneDescription s = scene("sphere { 0, 1 }\n");
+  ASSERT_EQ(s.objects.size(), 1u);
+  ASSERT_EQ(s.objects[0].texture->layers.size(), 1u);
+  const TextureLayer& l = top_layer(s.objects[0]);
+  EXPECT_EQ(l.pigment.pattern, PatternKind::solid);
+  expect_colour(l.pigment.colour, {0, 0, 0, 0, 0});
+  const Finish& f = l.finish;
+  expect_colour(f.ambient, {0.1, 0.1, 0.1, 0, 0});
+  expect_colour(f.emission, {0, 0, 0, 0, 0});
+  EXPECT_EQ(f.diffuse, 0.6);
+  EXPECT_EQ(f.diffuse_back, 0);
+  EXPECT_EQ(f.brilliance, 1);
+  EXPECT_EQ(f.phong, 0);
+  EXPECT_EQ(f.phong_size, 40);
+  EXPECT_EQ(f.specular, 0);
+  EXPECT_EQ(f.roughness, 0.05);
+  EXPECT_EQ(f.metallic, 0);
+}
+
+struct FinishCase {
+  std::string finish;
+  double Finish::*field;
+  double expected;
+};
+
+class FinishValue : public ::testing::TestWithParam<FinishCase> {};
+
+TEST_P(FinishValue, IsStored) {
+  const SceneDescription s = scene("sphere { 0, 1 finish { " + GetParam().finish + " } }\n");
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_DOUBLE_EQ(top_layer(s.objects[0]).finish.*(GetParam().field), GetParam().expected) << GetParam().finish;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, FinishValue,
+    ::testing::Values(FinishCase{"metallic", &Finish::metallic, 1}, FinishCase{"metallic 0.3", &Finish::metallic, 0.3},
+                      FinishCase{"metallic phong 1", &Finish::metallic, 1},
+                      FinishCase{"metallic phong 1", &Finish::phong, 1},
+                      FinishCase{"phong 0.5", &Finish::phong_size, 40},   // the rest keeps its default
+                      FinishCase{"phong 1 phong_size 200", &Finish::phong_size, 200},
+                      FinishCase{"specular 0.5 roughness 0.15", &Finish::roughness, 0.15},
+                      FinishCase{"specular 0.5", &Finish::roughness, 0.05},
+                      FinishCase{"diffuse 0.7", &Finish::diffuse, 0.7},
+                      FinishCase{"diffuse 0.7, 0.2", &Finish::diffuse_back, 0.2},
+                      FinishCase{"brilliance 2", &Finish::brilliance, 2},
+                      FinishCase{"ambient 0", &Finish::diffuse, 0.6}));
+
+TEST(Textures, FinishColourParameters) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 finish { ambient 0.3 emission rgb <0.1,0.2,0.3> } }\n"
+      "sphere { 0, 1 finish { ambient <0.1,0.2,0.3> } }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  expect_colour(top_layer(s.objects[0]).finish.ambient, {0.3, 0.3, 0.3, 0, 0});
+  expect_colour(top_layer(s.objects[0]).finish.emission, {0.1, 0.2, 0.3, 0, 0});
+  expect_colour(top_layer(s.objects[1]).finish.ambient, {0.1, 0.2, 0.3, 0, 0});
+}
+
+TEST(Textures, PigmentForms) {
+  const SceneDescription s = scene(
+      "#declare Red = rgb <1,0,0>;\n"
+      "sphere { 0, 1 pigment { checker } }\n"
+      "sphere { 0, 1 pigment { checker rgb 1, rgb <1,0,0> } }\n"
+      "sphere { 0, 1 pigment { checker Red } }\n"
+      "sphere { 0, 1 pigment { Red } }\n"
+      "sphere { 0, 1 pigment { color rgbt <0,1,0,0.5> } }\n");
+  ASSERT_EQ(s.objects.size(), 5u);
+  const Pigment& p0 = top_layer(s.objects[0]).pigment;
+  EXPECT_EQ(p0.pattern, PatternKind::checker);
+  ASSERT_EQ(p0.entries.size(), 2u);
+  expect_colour(p0.entries[0], {0, 0, 1, 0, 0});   // blue
+  expect_colour(p0.entries[1], {0, 1, 0, 0, 0});   // green
+  const Pigment& p1 = top_layer(s.objects[1]).pigment;
+  ASSERT_EQ(p1.entries.size(), 2u);
+  expect_colour(p1.entries[0], {1, 1, 1, 0, 0});
+  expect_colour(p1.entries[1], {1, 0, 0, 0, 0});
+  const Pigment& p2 = top_layer(s.objects[2]).pigment;
+  ASSERT_EQ(p2.entries.size(), 2u);
+  expect_colour(p2.entries[0], {1, 0, 0, 0, 0});
+  expect_colour(p2.entries[1], {0, 1, 0, 0, 0});   // the second stays at its default
+  EXPECT_EQ(top_layer(s.objects[3]).pigment.pattern, PatternKind::solid);
+  expect_colour(top_layer(s.objects[3]).pigment.colour, {1, 0, 0, 0, 0});
+  expect_colour(top_layer(s.objects[4]).pigment.colour, {0, 1, 0, 0, 0.5});
+}
+
+TEST(Textures, ATextureAfterATransformIsNotMovedByIt) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 translate x pigment { checker } }\n"
+      "sphere { 0, 1 pigment { checker } translate x }\n"
+      "sphere { 0, 1 pigment { checker scale 2 } translate x }\n"
+      "sphere { 0, 1 texture { pigment { checker } translate y } rotate z*90 }\n");
+  ASSERT_EQ(s.objects.size(), 4u);
+  expect_matrix_near(top_layer(s.objects[0]).pigment.world_from_pattern, Matrix::identity());
+  expect_matrix_near(s.objects[0].world_from_object, Matrix::translation({1, 0, 0}));
+  expect_matrix_near(top_layer(s.objects[1]).pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
+  expect_matrix_near(top_layer(s.objects[2]).pigment.world_from_pattern,
+                     Matrix::scaling({2, 2, 2}) * Matrix::translation({1, 0, 0}));
+  expect_matrix_near(top_layer(s.objects[3]).pigment.world_from_pattern,
+                     Matrix::translation({0, 1, 0}) * Matrix::rotation({0, 0, 90}));
+}
+
+TEST(Textures, TwoTextureBlocksMakeTwoLayersTheLastOnTop) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1,0,0,0.5> } finish { phong 1 } } }\n"
+      "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbf <0,0,1,1> } }\n"
+      "sphere { 0, 1 texture { T } }\n"
+      "sphere { 0, 1 texture { T finish { phong 1 } } }\n");
+  ASSERT_EQ(s.objects.size(), 3u);
+  const Texture& t0 = *s.objects[0].texture;
+  ASSERT_EQ(t0.layers.size(), 2u);
+  expect_colour(t0.layers[0].pigment.colour, {1, 1, 1, 0, 0});
+  expect_colour(t0.layers[1].pigment.colour, {1, 0, 0, 0, 0.5});
+  EXPECT_EQ(t0.layers[0].finish.phong, 0);
+  EXPECT_EQ(t0.layers[1].finish.phong, 1);
+  const Texture& t1 = *s.objects[1].texture;
+  ASSERT_EQ(t1.layers.size(), 2u);
+  expect_colour(t1.layers[1].pigment.colour, {0, 0, 1, 1, 0});
+  // Editing a declared texture changes its top layer only (and not T itself).
+  const Texture& t2 = *s.objects[2].texture;
+  ASSERT_EQ(t2.layers.size(), 2u);
+  EXPECT_EQ(t2.layers[0].finish.phong, 0);
+  EXPECT_EQ(t2.layers[1].finish.phong, 1);
+  EXPECT_EQ(t1.layers[1].finish.phong, 0);
+}
+
+TEST(Textures, TextureEditsKeepTheOtherValues) {
+  const SceneDescription s = scene(
+      "#declare T = texture { pigment { rgb <1,0,0> } finish { specular 0.5 roughness 0.1 } }\n"
+      "sphere { 0, 1 texture { T finish { phong 1 } } }\n"
+      "sphere { 0, 1 texture { T pigment { rgb <0,1,0> } } }\n"
+      "sphere { 0, 1 texture { T } finish { ambient 0.2 } }\n");
+  ASSERT_EQ(s.objects.size(), 3u);
+  const Finish& f0 = top_layer(s.objects[0]).finish;
+  EXPECT_EQ(f0.phong, 1);
+  EXPECT_EQ(f0.specular, 0.5);
+  EXPECT_EQ(f0.roughness, 0.1);
+  expect_colour(top_layer(s.objects[0]).pigment.colour, {1, 0, 0, 0, 0});
+  expect_colour(top_layer(s.objects[1]).pigment.colour, {0, 1, 0, 0, 0});
+  EXPECT_EQ(top_layer(s.objects[1]).finish.specular, 0.5);
+  // An object-level finish on a textured object edits its top layer in place.
+  ASSERT_EQ(s.objects[2].texture->layers.size(), 1u);
+  expect_colour(top_layer(s.objects[2]).finish.ambient, {0.2, 0.2, 0.2, 0, 0});
+  EXPECT_EQ(top_layer(s.objects[2]).finish.specular, 0.5);
+}
+
+TEST(Textures, DefaultFinishAffectsOnlyLaterObjects) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 }\n"
+      "#declare Early = sphere { 0, 2 }\n"
+      "#declare EarlyFinish = finish { phong 1 }\n"
+      "#default { finish { ambient 0.5 } }\n"
+      "sphere { 0, 1 }\n"
+      "object { Early }\n"
+      "sphere { 0, 1 finish { EarlyFinish } }\n"
+      "sphere { 0, 1 pigment { rgb 1 } }\n");
+  ASSERT_EQ(s.objects.size(), 5u);
+  EXPECT_EQ(top_layer(s.objects[0]).finish.ambient.r, 0.1);
+  EXPECT_EQ(top_layer(s.objects[1]).finish.ambient.r, 0.5);
+  // An untextured declared object gets the default in force where it is placed ([V sdl_tex_order]).
+  EXPECT_EQ(top_layer(s.objects[2]).finish.ambient.r, 0.5);
+  // A finish declared before the #default keeps the old default values.
+  EXPECT_EQ(top_layer(s.objects[3]).finish.ambient.r, 0.1);
+  EXPECT_EQ(top_layer(s.objects[3]).finish.phong, 1);
+  EXPECT_EQ(top_layer(s.objects[4]).finish.ambient.r, 0.5);
+}
+
+TEST(Textures, DefaultPigment) {
+  const SceneDescription s = scene("#default { pigment { rgb <1,0,0> } }\nsphere { 0, 1 }\n");
+  ASSERT_EQ(s.objects.size(), 1u);
+  expect_colour(top_layer(s.objects[0]).pigment.colour, {1, 0, 0, 0, 0});
+}
+
+// ---- Object copies -----------------------------------------------------------------------------------------
+TEST(Objects, ObjectIdentifierIsADeepCopy) {
+  const SceneDescription s = scene(
+      "#declare S = sphere { <1,0,0>, 1 pigment { checker } }\n"
+      "object { S translate y }\n"
+      "object { S }\n"
+      "object { S pigment { rgb 1 } }\n"
+      "object { S texture { pigment { rgbt <1,0,0,0.5> } } }\n"
+      "S\n");
+  ASSERT_EQ(s.objects.size(), 5u);
+  expect_matrix_near(s.objects[0].world_from_object, Matrix::translation({0, 1, 0}));
+  expect_matrix_near(top_layer(s.objects[0]).pigment.world_from_pattern, Matrix::translation({0, 1, 0}));
+  // The declared object itself was not moved by the first copy.
+  expect_matrix_near(s.objects[1].world_from_object, Matrix::identity());
+  expect_matrix_near(top_layer(s.objects[1]).pigment.world_from_pattern, Matrix::identity());
+  EXPECT_EQ(top_layer(s.objects[1]).pigment.pattern, PatternKind::checker);
+  // A pigment edits the copy's top layer; a texture is layered on top of the one it has.
+  EXPECT_EQ(top_layer(s.objects[2]).pigment.pattern, PatternKind::solid);
+  EXPECT_EQ(top_layer(s.objects[4]).pigment.pattern, PatternKind::checker);
+  ASSERT_EQ(s.objects[3].texture->layers.size(), 2u);
+  EXPECT_EQ(s.objects[3].texture->layers[0].pigment.pattern, PatternKind::checker);
+  expect_colour(s.objects[3].texture->layers[1].pigment.colour, {1, 0, 0, 0, 0.5});
+  EXPECT_EQ(std::get<Sphere>(s.objects[4].shape).centre, (Vec3{1, 0, 0}));
+}
+
+TEST(Objects, NestedObjectCopiesCompose) {
+  const SceneDescription s = scene(
+      "#declare A = sphere { 0, 1 translate x }\n"
+      "#declare B = object { A rotate y*90 }\n"
+      "object { B scale 2 }\n");
+  ASSERT_EQ(s.objects.size(), 1u);
+  expect_vec_near(s.objects[0].world_from_object.point({0, 0, 0}), {0, 0, -2}, 1e-12);
+}
+
+// ---- Global settings and background -------------------------------------------------------------------------
+TEST(GlobalSettings, DefaultsAndValues) {
+  const SceneDescription d = scene("");
+  EXPECT_FALSE(d.settings.assumed_gamma.has_value());
+  EXPECT_EQ(d.settings.max_trace_level, 5);
+  EXPECT_NEAR(d.settings.adc_bailout, 1.0 / 255, 1e-15);
+  expect_colour(d.settings.ambient_light, {1, 1, 1, 0, 0});
+
+  const SceneDescription s =
+      scene("global_settings { assumed_gamma 2.2 max_trace_level 12 adc_bailout 0.01 ambient_light rgb 0.5 }\n");
+  ASSERT_TRUE(s.settings.assumed_gamma.has_value());
+  EXPECT_EQ(*s.settings.assumed_gamma, 2.2);
+  EXPECT_EQ(s.settings.max_trace_level, 12);
+  EXPECT_EQ(s.settings.adc_bailout, 0.01);
+  expect_colour(s.settings.ambient_light, {0.5, 0.5, 0.5, 0, 0});
+}
+
+TEST(GlobalSettings, MaxTraceLevelIsClamped) {
+  EXPECT_EQ(scene("global_settings { max_trace_level 1000 }").settings.max_trace_level, 256);
+  EXPECT_EQ(scene("global_settings { max_trace_level 0 }").settings.max_trace_level, 1);
+  EXPECT_EQ(scene("global_settings { max_trace_level 1 }").settings.max_trace_level, 1);
+}
+
+TEST(GlobalSettings, SeveralBlocksAccumulate) {
+  const SceneDescription s =
+      scene("global_settings { assumed_gamma 1 }\nglobal_settings { max_trace_level 7 }\n");
+  EXPECT_EQ(s.settings.assumed_gamma.value_or(0), 1);
+  EXPECT_EQ(s.settings.max_trace_level, 7);
+}
+
+TEST(Background, DefaultIsTransparentBlack) {
+  expect_colour(scene("").background, {0, 0, 0, 0, 1});
+  expect_colour(scene("background { color rgb <1,0.5,0> }").background, {1, 0.5, 0, 0, 0});
+  expect_colour(scene("background { rgbt <0,0,1,0.25> }").background, {0, 0, 1, 0, 0.25});
+}
+
+TEST(Scene, VersionGiven) {
+  EXPECT_TRUE(parse("#version 3.7;\nsphere{0,1}").version_given);
+  EXPECT_FALSE(parse("sphere{0,1}").version_given);
+  EXPECT_FALSE(parse("global_settings { assumed_gamma 1 }\n#version 3.7;\n").version_given);
+  EXPECT_EQ(parse("#version 3.6;\n").language_version, 360);
+}
+
+}  // namespace
+}  // namespace povtrace::test
