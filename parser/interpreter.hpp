@@ -148,6 +148,7 @@ class Interpreter {
   SymbolTable symbols_;
   SceneDescription scene_;
   Texture default_texture_;
+  std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
   bool camera_seen_ = false;
   bool statement_seen_ = false;
   std::vector<std::uint32_t> rand_streams_;

@@ -1,6 +1,7 @@
 #include "parser/lexer.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 #include <tao/pegtl.hpp>
@@ -68,7 +69,6 @@ struct Capture {
   TokenKind kind = TokenKind::end_of_input;
   const char* begin = nullptr;
   const char* end = nullptr;
-  pegtl::position pos{pegtl::internal::iterator{}, ""};
 };
 
 template <typename Rule> struct action : pegtl::nothing<Rule> {};
@@ -77,7 +77,6 @@ template <TokenKind K> struct mark {
     c.kind = K;
     c.begin = in.begin();
     c.end = in.end();
-    c.pos = in.position();
   }
 };
 template <> struct action<grammar::number> : mark<TokenKind::number> {};
@@ -126,9 +125,9 @@ Token lex_token(const SourceFile& file, LexPosition at) {
   const char* base = file.text.data();
   const char* begin = base + at.offset;
   const char* end = base + file.text.size();
-  pegtl::memory_input<pegtl::tracking_mode::eager, pegtl::eol::lf_crlf, std::string> in(
-      begin, end, file.name ? *file.name : std::string(), at.offset, static_cast<std::size_t>(at.line),
-      static_cast<std::size_t>(at.column));
+  // Lazy tracking and a plain `const char*` source: positions are computed from byte offsets below, so
+  // lexing a token allocates nothing (large scenes are millions of tokens).
+  pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(begin, end, "");
   Capture c;
   bool ok = false;
   try {
@@ -158,7 +157,7 @@ Token lex_token(const SourceFile& file, LexPosition at) {
   }
   t.kind = c.kind;
   t.text = std::string_view(c.begin, static_cast<std::size_t>(c.end - c.begin));
-  t.begin = LexPosition{c.pos.byte, static_cast<int>(c.pos.line), static_cast<int>(c.pos.column)};
+  t.begin = advance(at, begin, c.begin);
   t.end = advance(t.begin, c.begin, c.end);
   t.loc = loc_of(file, t.begin);
   if (t.kind == TokenKind::number) {
@@ -166,9 +165,17 @@ Token lex_token(const SourceFile& file, LexPosition at) {
     if (c.end < end && *c.end == '.' && c.end + 1 < end && std::isdigit(static_cast<unsigned char>(c.end[1])))
       throw ParseError(loc_of(file, t.end), "malformed number: a second '.' (expected one decimal point)",
                        std::string(file.line_text(t.end.line)));
-    // from_chars stops at the first character it cannot use; "1." is fine, and so is "1.e3".
-    std::string digits(t.text);
-    t.number = std::strtod(digits.c_str(), nullptr);
+    // The grammar has matched the whole number, so from_chars (correctly rounded, like strtod) reads all of it;
+    // "1." and "1.e3" are fine.
+    const auto [ptr, ec] = std::from_chars(c.begin, c.end, t.number);
+    if (ec == std::errc::result_out_of_range) {
+      // from_chars leaves the value alone when out of range: underflow reads as 0, overflow is an error.
+      t.number = std::strtod(std::string(t.text).c_str(), nullptr);
+      if (std::isinf(t.number))
+        throw ParseError(t.loc, "number out of range: " + std::string(t.text) + " does not fit in a double",
+                         std::string(file.line_text(t.loc.line)));
+    }
+    (void)ptr;
   }
   return t;
 }

@@ -99,6 +99,7 @@ void Interpreter::parse_default(const Token& keyword) {
   while (true) {
     Token t = next();
     if (t.is("}")) return;
+    placed_default_texture_.reset();   // the #default changes: later objects get a new shared copy
     TextureLayer& layer = default_texture_.layers.back();
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
@@ -152,7 +153,11 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
 // Post_Process when a finished top-level object is placed: anything untextured gets the current #default
 // texture (§10 "Texture inheritance").
 void Interpreter::place_object(Object object) {
-  if (!object.texture) object.texture = std::make_shared<const Texture>(default_texture_);
+  if (!object.texture) {
+    // One shared copy per #default state: untextured objects by the thousand must not copy it each.
+    if (!placed_default_texture_) placed_default_texture_ = std::make_shared<const Texture>(default_texture_);
+    object.texture = placed_default_texture_;
+  }
   scene_.objects.push_back(std::move(object));
 }
 

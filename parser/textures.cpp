@@ -201,8 +201,12 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
   if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
     const Value* v = symbols_.find(std::string(t.text));
     if (v && std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
-      tex = *std::get<std::shared_ptr<const Texture>>(*v);
+      const auto declared = std::get<std::shared_ptr<const Texture>>(*v);
       t = next();
+      // `texture { T }` unchanged shares the declared texture: textures are immutable once built, and scenes
+      // that place thousands of objects with a few textures must not copy them.
+      if (t.is("}")) return declared;
+      tex = *declared;
     }
   }
   if (tex.layers.empty()) tex.layers.push_back(default_texture().layers.front());

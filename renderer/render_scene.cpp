@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace povtrace::render {
 
@@ -109,10 +110,20 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   RenderScene r;
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
+  // Objects sharing one texture (and no interior of their own) share one material.
+  std::unordered_map<const Texture*, std::uint32_t> shared_materials;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
-    r.materials.push_back(make_material(*o.texture, o.interior));
-    add_primitives(o, static_cast<std::uint32_t>(r.materials.size() - 1), static_cast<std::uint32_t>(i), primitives);
+    std::uint32_t material;
+    auto found = o.interior ? shared_materials.end() : shared_materials.find(o.texture.get());
+    if (found != shared_materials.end()) {
+      material = found->second;
+    } else {
+      r.materials.push_back(make_material(*o.texture, o.interior));
+      material = static_cast<std::uint32_t>(r.materials.size() - 1);
+      if (!o.interior) shared_materials.emplace(o.texture.get(), material);
+    }
+    add_primitives(o, material, static_cast<std::uint32_t>(i), primitives);
   }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   warn_about_nested_refraction(primitives, r.materials, r.warnings);
