@@ -82,8 +82,11 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     } else if (!try_transform(t, in.transform)) {
       if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
           k == "spherical" || k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
-          k == "normal" || k == "confidence" || k == "variance")
-        fail_unsupported(t, "the camera item '" + std::string(k) + "'");
+          k == "normal" || k == "confidence" || k == "variance") {
+        taint(in.camera.unsupported, skip_unsupported(t, "the camera item '" + std::string(k) + "'"));
+        t = next();
+        continue;
+      }
       fail_expected(t, "a camera item (perspective, orthographic, location, look_at, right, up, direction, sky, "
                        "angle, translate, rotate, scale, matrix) or '}'");
     }
@@ -116,7 +119,7 @@ bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   else if (k == "area_light" || k == "cylinder" || k == "looks_like" || k == "projected_through" ||
            k == "circular" || k == "orient" || k == "adaptive" || k == "jitter" || k == "media_interaction" ||
            k == "media_attenuation" || k == "photons" || k == "area_illumination")
-    fail_unsupported(t, "the light_source item '" + std::string(k) + "'");
+    taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;
 }

@@ -21,6 +21,15 @@ struct Colour {
   friend constexpr bool operator==(const Colour&, const Colour&) = default;
 };
 
+// A POV-Ray feature that povtrace parses but does not render yet (issue 3: standard include files and scenes
+// must parse whole). A value built with one carries it; the parser refuses the value by this name, with both
+// positions, when it reaches the rendered scene. A SceneDescription returned by the parser never holds one.
+struct UnsupportedFeature {
+  std::string name;   // e.g. "the pigment pattern 'granite'"
+  SourceLoc loc;      // where the feature is written
+};
+using Unsupported = std::optional<UnsupportedFeature>;
+
 // ---- Textures -------------------------------------------------------------------------------------------
 enum class PatternKind { solid, checker };
 
@@ -30,6 +39,7 @@ struct Pigment {
   std::vector<Colour> entries;   // checker: the two colours (defaults blue/green as POV-Ray when omitted)
   Matrix world_from_pattern;     // every transform applied to the pigment since it was created
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 // Finish defaults for #version 3.7 (povray-pixel-pipeline.md §2).
@@ -52,6 +62,7 @@ struct Finish {
   bool conserve_energy = false;
   double crand = 0.0;
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 struct TextureLayer {
@@ -63,6 +74,7 @@ struct TextureLayer {
 struct Texture {
   std::vector<TextureLayer> layers;
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 struct Interior {
@@ -70,6 +82,7 @@ struct Interior {
   double fade_distance = 0.0;
   double fade_power = 0.0;
   Colour fade_colour{};
+  Unsupported unsupported;
 };
 
 // ---- Geometry -------------------------------------------------------------------------------------------
@@ -79,9 +92,11 @@ struct Box { Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1}; };     // sorted per ax
 
 enum class CsgKind { union_, merge, intersection, difference };
 struct Object;
+struct Light;
 struct Csg {
   CsgKind kind = CsgKind::union_;
   std::vector<Object> children;
+  std::vector<Light> lights;      // light sources written inside the CSG move with it
 };
 
 using Shape = std::variant<Sphere, Plane, Box, Csg>;
@@ -94,6 +109,7 @@ struct Object {
   bool inverse = false;
   bool no_shadow = false;
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------
@@ -107,6 +123,7 @@ struct Camera {
   Vec3 up{0, 1, 0};
   Vec3 right{1.33, 0, 0};
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 struct Light {
@@ -122,6 +139,7 @@ struct Light {
   double fade_distance = 0.0;
   double fade_power = 0.0;
   SourceLoc loc;
+  Unsupported unsupported;
 };
 
 // ---- Whole scene ----------------------------------------------------------------------------------------

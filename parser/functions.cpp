@@ -202,6 +202,9 @@ Numeric Interpreter::parse_primary() {
   if (!is_reserved_word(w)) {
     const Value* v = symbols_.find(std::string(w));
     if (!v) fail_at(t, "undeclared identifier '" + std::string(w) + "'");
+    // An identifier holding a value povtrace parses but cannot use yet (a function, an array, …) is refused by
+    // the name of that feature.
+    if (const auto* opaque = std::get_if<OpaqueValue>(v)) refuse_if_unsupported(opaque->feature, t.loc, "expression");
     if (!std::holds_alternative<Numeric>(*v))
       fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +
                      std::string(w) + "'");

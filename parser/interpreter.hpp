@@ -125,6 +125,8 @@ class Interpreter {
   void parse_object_modifiers(Object& object);
   bool try_object_modifier(const Token& t, Object& object);
   void apply_transform(Object& object, const Matrix& m);
+  void parse_material_block(const Token& keyword, Object& object);
+  static std::string csg_name(CsgKind kind);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
@@ -132,13 +134,24 @@ class Interpreter {
   bool try_light_modifier(const Token& t, Light& light);
   void apply_transform(Light& light, const Matrix& m);
 
+  // ---- features parsed but not rendered yet (unsupported.cpp) ----
+  UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
+  void skip_balanced(const Token& open);
+  bool continues_arguments(const Token& t);
+  void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
+  static void taint(Unsupported& slot, const Unsupported& feature) {
+    if (!slot && feature) slot = feature;   // the first one found is the one reported
+  }
+
   // ---- scene (scene.cpp) ----
   void parse_statement(const Token& t);
   void parse_global_settings(const Token& keyword);
   void parse_background(const Token& keyword);
   void parse_default(const Token& keyword);
   std::optional<Value> try_parse_rvalue(const Token& first);
-  void place_object(Object object);
+  void place_object(Object object, const SourceLoc& at);
+  void place_light(Light light, const SourceLoc& at);
+  void post_process(Object& object);
 
   const ParseOptions& options_;
   std::vector<std::unique_ptr<SourceFile>> files_;

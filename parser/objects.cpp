@@ -25,9 +25,16 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
+// A transform moves the object, what is attached to it, and for CSG every child and light inside (POV-Ray
+// transforms a CSG by transforming its children; the CSG node itself keeps no matrix).
 void Interpreter::apply_transform(Object& object, const Matrix& m) {
-  object.world_from_object = object.world_from_object * m;
   transform_texture(object.texture, m);
+  if (auto* csg = std::get_if<Csg>(&object.shape)) {
+    for (auto& child : csg->children) apply_transform(child, m);
+    for (auto& light : csg->lights) apply_transform(light, m);
+    return;
+  }
+  object.world_from_object = object.world_from_object * m;
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
@@ -61,8 +68,17 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     object.interior = parse_interior_block(t, object.interior.value_or(Interior{}));
     return true;
   }
+  if (k == "material") {
+    parse_material_block(t, object);
+    return true;
+  }
   if (k == "no_shadow") { object.no_shadow = true; return true; }
-  if (k == "inverse") { object.inverse = !object.inverse; return true; }
+  if (k == "inverse") {
+    object.inverse = !object.inverse;
+    if (const auto* csg = std::get_if<Csg>(&object.shape))
+      taint(object.unsupported, UnsupportedFeature{"'inverse' of a CSG " + csg_name(csg->kind), t.loc});
+    return true;
+  }
   if (k == "hollow") {
     // hollow only matters for media and fog inside objects, which povtrace does not render yet; the flag
     // itself changes nothing in the image otherwise. An optional boolean follows.
@@ -70,8 +86,47 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false")) parse_float();
     return true;
   }
-  if (k == "normal") fail_unsupported(t, "'normal { }' perturbation");
+  // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
+  static const std::string_view unrendered[] = {
+      "normal", "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
+      "sturm", "open", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
+      "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
+  for (auto u : unrendered)
+    if (k == u) {
+      taint(object.unsupported, skip_unsupported(t, k == "normal" ? std::string("'normal { }' perturbation")
+                                                                   : "the object modifier '" + std::string(k) + "'"));
+      return true;
+    }
   return false;
+}
+
+// material { [M_id] texture{} interior{} transforms } (§9): a texture and an interior together.
+void Interpreter::parse_material_block(const Token& keyword, Object& object) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'material'");
+  Object holder;   // collects the material's parts with the object-modifier rules, then hands them over
+  Token t = next();
+  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+    const Value* v = symbols_.find(std::string(t.text));
+    if (v && std::holds_alternative<MaterialValue>(*v)) {
+      const auto& m = std::get<MaterialValue>(*v);
+      holder.texture = m.texture;
+      holder.interior = m.interior;
+      t = next();
+    }
+  }
+  while (!t.is("}")) {
+    Matrix m;
+    if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("finish")) try_object_modifier(t, holder);
+    else if (try_transform(t, m)) transform_texture(holder.texture, m);
+    else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+      taint(holder.unsupported, skip_unsupported(t, "the material item '" + std::string(t.text) + "'"));
+    else fail_expected(t, "texture, interior, a transform or '}' in material { }");
+    t = next();
+  }
+  if (holder.texture) object.texture = holder.texture;
+  if (holder.interior) object.interior = holder.interior;
+  taint(object.unsupported, holder.unsupported);
 }
 
 void Interpreter::parse_object_modifiers(Object& object) {
@@ -79,14 +134,7 @@ void Interpreter::parse_object_modifiers(Object& object) {
     Token t = next();
     if (t.is("}")) return;
     if (try_object_modifier(t, object)) continue;
-    // Only real POV-Ray object modifiers are "unsupported"; any other keyword here (often the next object after a
-    // missing '}') is a syntax error.
-    static const std::string_view unsupported[] = {
-        "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate", "sturm",
-        "open", "interior_texture", "material", "uv_mapping", "photons", "radiosity", "split_union",
-        "cutaway_textures", "hierarchy"};
-    for (auto u : unsupported)
-      if (t.is(u)) fail_unsupported(t, "the object modifier '" + std::string(t.text) + "'");
+    // Any other keyword here (often the next object after a missing '}') is a syntax error.
     fail_expected(t, "an object modifier (translate, rotate, scale, matrix, transform, texture, pigment, finish, "
                      "interior, no_shadow, inverse) or '}'");
   }
@@ -134,9 +182,41 @@ Object Interpreter::parse_box(const Token& keyword) {
   return o;
 }
 
+std::string Interpreter::csg_name(CsgKind kind) {
+  switch (kind) {
+    case CsgKind::union_: return "'union'";
+    case CsgKind::merge: return "'merge'";
+    case CsgKind::intersection: return "'intersection'";
+    case CsgKind::difference: return "'difference'";
+  }
+  return "CSG";
+}
+
+// union/merge/intersection/difference { objects… modifiers } (§10). A union of the shapes povtrace renders is
+// rendered as its children; the other operations are parsed whole and refused when placed (issue 4).
 Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
-  fail_unsupported(keyword, "CSG ('" + std::string(keyword.text) + "')");
-  (void)kind;
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after '" + std::string(keyword.text) + "'");
+  Object o;
+  o.loc = keyword.loc;
+  Csg csg;
+  csg.kind = kind;
+  Token t = next();
+  while (true) {
+    auto item = try_parse_item(t);
+    if (!item) break;
+    if (auto* light = std::get_if<Light>(&*item)) csg.lights.push_back(std::move(*light));
+    else csg.children.push_back(std::move(std::get<Object>(*item)));
+    t = next();
+  }
+  unget(t);
+  if (csg.children.size() + csg.lights.size() < 2)
+    warn(keyword.loc, "a CSG " + csg_name(kind) + " should have at least two objects");
+  if (kind != CsgKind::union_)
+    o.unsupported = UnsupportedFeature{"CSG " + csg_name(kind), keyword.loc};
+  o.shape = std::move(csg);
+  parse_object_modifiers(o);
+  return o;
 }
 
 // object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
@@ -184,7 +264,12 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
       "sphere_sweep", "bicubic_patch", "quadric", "cubic", "quartic", "poly", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)
-    if (k == s) fail_unsupported(t, "the shape '" + std::string(k) + "'");
+    if (k == s) {
+      Object o;
+      o.loc = t.loc;
+      o.unsupported = skip_unsupported(t, "the shape '" + std::string(k) + "'");
+      return o;
+    }
   if (!is_reserved_word(k)) {
     const Value* v = symbols_.find(std::string(k));
     if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))

@@ -37,18 +37,18 @@ void Interpreter::parse_statement(const Token& t) {
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "camera") {
     scene_.camera = parse_camera(t);
+    refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
     camera_seen_ = true;
     return;
   }
   if (k == "global_settings") return parse_global_settings(t);
   if (k == "background") return parse_background(t);
   if (auto item = try_parse_item(t)) {
-    if (auto* light = std::get_if<Light>(&*item)) scene_.lights.push_back(std::move(*light));
-    else place_object(std::move(std::get<Object>(*item)));
+    if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
+    else place_object(std::move(std::get<Object>(*item)), t.loc);
     return;
   }
-  static const std::string_view unsupported[] = {"sky_sphere", "fog", "media", "rainbow", "photons", "radiosity",
-                                                 "texture", "pigment", "finish"};
+  static const std::string_view unsupported[] = {"sky_sphere", "fog", "media", "rainbow", "photons", "radiosity"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
   if (k == "declare" || k == "include" || k == "version")
@@ -132,11 +132,32 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
+  if (k == "transform") return Value(parse_transform_block(first));
+  if (k == "material") {
+    Object holder;
+    parse_material_block(first, holder);
+    if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
+    return Value(MaterialValue{holder.texture, holder.interior});
+  }
   if (first.kind == TokenKind::identifier && !is_reserved_word(k)) {
     const Value* v = symbols_.find(std::string(k));
     if (v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) return *v;
   }
   if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
+  // Any other block value (color_map, normal, media, fog, sky_sphere, spline, array, function, …): parsed
+  // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
+    Token after = peek_raw();
+    if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
+      UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
+      while (true) {
+        Token g = next();
+        if (!(g.is("{") || g.is("[") || g.is("("))) { unget(g); break; }
+        skip_balanced(g);
+      }
+      return Value(OpaqueValue{std::string(k), feature});
+    }
+  }
   if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
     static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
                                                    "no", "on", "off", "version", "clock", "clock_on",
@@ -150,14 +171,59 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   return Value(parse_additive());
 }
 
-// Post_Process when a finished top-level object is placed: anything untextured gets the current #default
-// texture (§10 "Texture inheritance").
-void Interpreter::place_object(Object object) {
+namespace {
+// The first feature povtrace cannot render anywhere in an object: its shape or modifiers, its texture's
+// layers, its interior, or (for CSG) its children and lights.
+Unsupported first_unsupported(const Object& o) {
+  if (o.unsupported) return o.unsupported;
+  if (o.texture) {
+    if (o.texture->unsupported) return o.texture->unsupported;
+    for (const auto& l : o.texture->layers) {
+      if (l.pigment.unsupported) return l.pigment.unsupported;
+      if (l.finish.unsupported) return l.finish.unsupported;
+    }
+  }
+  if (o.interior && o.interior->unsupported) return o.interior->unsupported;
+  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+    for (const auto& c : csg->children)
+      if (auto u = first_unsupported(c)) return u;
+    for (const auto& l : csg->lights)
+      if (l.unsupported) return l.unsupported;
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+void Interpreter::place_light(Light light, const SourceLoc& at) {
+  refuse_if_unsupported(light.unsupported, at, "light_source");
+  scene_.lights.push_back(std::move(light));
+}
+
+// Post_Process when a finished top-level object is placed (§10 "Texture inheritance"): CSG children without a
+// texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow
+// is forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
+// current #default texture.
+void Interpreter::post_process(Object& object) {
+  if (auto* csg = std::get_if<Csg>(&object.shape)) {
+    for (auto& child : csg->children) {
+      if (!child.texture) child.texture = object.texture;
+      if (!child.interior) child.interior = object.interior;
+      if (object.no_shadow) child.no_shadow = true;
+      post_process(child);
+    }
+    for (auto& light : csg->lights) scene_.lights.push_back(light);
+    csg->lights.clear();
+  }
   if (!object.texture) {
     // One shared copy per #default state: untextured objects by the thousand must not copy it each.
     if (!placed_default_texture_) placed_default_texture_ = std::make_shared<const Texture>(default_texture_);
     object.texture = placed_default_texture_;
   }
+}
+
+void Interpreter::place_object(Object object, const SourceLoc& at) {
+  refuse_if_unsupported(first_unsupported(object), at, "object");
+  post_process(object);
   scene_.objects.push_back(std::move(object));
 }
 

@@ -20,6 +20,9 @@ std::string value_type_name(const Value& v) {
     std::string operator()(const Camera&) const { return "camera"; }
     std::string operator()(const MacroDefinition&) const { return "macro"; }
     std::string operator()(const Alias&) const { return "alias"; }
+    std::string operator()(const Matrix&) const { return "transform"; }
+    std::string operator()(const OpaqueValue& o) const { return o.keyword; }
+    std::string operator()(const MaterialValue&) const { return "material"; }
   };
   return std::visit(Namer{}, v);
 }

@@ -50,13 +50,16 @@ bool Interpreter::try_transform(const Token& t, Matrix& m) {
 Matrix Interpreter::parse_transform_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   Token open = next();
-  if (!open.is("{")) fail_unsupported(open, "the old 'transform Identifier' form without braces");
+  // The old form `transform T_id` without braces.
+  if (const Matrix* id = identifier_value<Matrix>(symbols_, open)) return *id;
+  if (!open.is("{")) fail_expected(open, "'{' or a transform identifier after 'transform'");
   Matrix m;
   bool inverse = false;
   while (true) {
     Token t = next();
     if (t.is("}")) break;
     if (t.is("inverse")) { inverse = true; continue; }
+    if (const Matrix* id = identifier_value<Matrix>(symbols_, t)) { m = m * *id; continue; }
     if (try_transform(t, m)) continue;
     fail_expected(t, "translate, rotate, scale, matrix, transform, inverse or '}' in transform { }");
   }
@@ -101,9 +104,12 @@ Pigment Interpreter::parse_pigment_block(const Token& keyword, const Pigment& st
   }
   while (!t.is("}")) {
     if (try_pigment_item(t, p)) { t = next(); continue; }
-    if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
-      fail_unsupported(t, "the pigment item '" + std::string(t.text) + "'");
-    fail_expected(t, "a colour, 'checker', a transform or '}' in pigment { }");
+    if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
+      taint(p.unsupported, skip_unsupported(t, "the pigment item '" + std::string(t.text) + "'"));
+      t = next();
+      continue;
+    }
+    fail_expected(t, "a colour, a pattern, a transform or '}' in pigment { }");
   }
   return p;
 }
@@ -130,22 +136,24 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
     if (starts_colour(n)) { Colour c = parse_colour(); c.f = c.t = 0; return c; }
     return rgb_parameter();
   };
+  // `albedo` forms are rescaled once the whole block is read (pipeline §2: they use the block's brilliance,
+  // phong_size and roughness, wherever those are written).
+  bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
   while (!t.is("}")) {
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
     if (k == "ambient") f.ambient = colour_parameter();
     else if (k == "emission") f.emission = colour_parameter();
     else if (k == "diffuse") {
-      const bool albedo = accept("albedo");
+      diffuse_albedo = accept("albedo");
       f.diffuse = parse_float();
-      if (albedo) fail_unsupported(t, "'diffuse albedo'");
       if (accept(",")) f.diffuse_back = parse_float();
     } else if (k == "brilliance") f.brilliance = parse_float();
     else if (k == "phong") {
-      if (accept("albedo")) fail_unsupported(t, "'phong albedo'");
+      phong_albedo = accept("albedo");
       f.phong = parse_float();
     } else if (k == "phong_size") f.phong_size = parse_float();
     else if (k == "specular") {
-      if (accept("albedo")) fail_unsupported(t, "'specular albedo'");
+      specular_albedo = accept("albedo");
       f.specular = parse_float();
     } else if (k == "roughness") {
       f.roughness = parse_float();
@@ -158,14 +166,20 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
       f.metallic = has_value ? parse_float() : 1.0;
     } else if (k == "crand") {
       f.crand = parse_float();
-      fail_unsupported(t, "'crand' (random speckle)");
+      taint(f.unsupported, UnsupportedFeature{"the finish item 'crand' (random speckle)", t.loc});
     } else if (!k.empty() && is_reserved_word(k)) {
-      fail_unsupported(t, "the finish item '" + std::string(k) + "'");
+      taint(f.unsupported, skip_unsupported(t, "the finish item '" + std::string(k) + "'"));
     } else {
       fail_expected(t, "a finish item (ambient, emission, diffuse, brilliance, phong, phong_size, specular, "
                        "roughness, metallic) or '}'");
     }
     t = next();
+  }
+  if (diffuse_albedo) f.diffuse *= (f.brilliance + 1.0) / 2.0;
+  if (phong_albedo) f.phong *= (f.phong_size + 1.0) / 2.0;
+  if (specular_albedo) {
+    const double n = 1.0 / f.roughness;
+    f.specular *= (n + 2.0) / (4.0 * (2.0 - std::pow(2.0, -n / 2.0)));
   }
   return f;
 }
@@ -181,10 +195,8 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
   }
   while (!t.is("}")) {
     if (t.is("ior")) in.ior = parse_float();
-    else if (t.is("fade_distance") || t.is("fade_power") || t.is("fade_color") || t.is("fade_colour"))
-      fail_unsupported(t, "interior '" + std::string(t.text) + "' (attenuation inside transparent objects)");
     else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
-      fail_unsupported(t, "the interior item '" + std::string(t.text) + "'");
+      taint(in.unsupported, skip_unsupported(t, "the interior item '" + std::string(t.text) + "'"));
     else fail_expected(t, "ior or '}' in interior { }");
     t = next();
   }
@@ -215,15 +227,19 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
     Matrix m;
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
-    else if (t.is("normal")) fail_unsupported(t, "'normal { }' perturbation");
     else if (try_transform(t, m)) {
       for (auto& l : tex.layers) transform_pigment(l.pigment, m);
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
-      fail_unsupported(t, "the texture item '" + std::string(t.text) + "'");
+      taint(tex.unsupported, skip_unsupported(t, t.is("normal") ? "'normal { }' perturbation"
+                                                                : "the texture item '" + std::string(t.text) + "'"));
     } else {
       fail_expected(t, "pigment, finish, a transform or '}' in texture { }");
     }
     t = next();
+  }
+  for (const auto& l : tex.layers) {
+    taint(tex.unsupported, l.pigment.unsupported);
+    taint(tex.unsupported, l.finish.unsupported);
   }
   return std::make_shared<const Texture>(std::move(tex));
 }

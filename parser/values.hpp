@@ -44,8 +44,21 @@ struct Alias {
   std::string name;
 };
 
+// material { texture interior } as a declared value.
+struct MaterialValue {
+  std::shared_ptr<const Texture> texture;
+  std::optional<Interior> interior;
+};
+
+// A declared value povtrace parses but does not use yet (a colour_map, a media, a sky_sphere, …): its
+// keyword and the feature it would need when it reaches the scene.
+struct OpaqueValue {
+  std::string keyword;
+  UnsupportedFeature feature;
+};
+
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
-                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias>;
+                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue, MaterialValue>;
 
 // A human-readable name of a value's type for error messages ("float", "object", "texture", ...).
 std::string value_type_name(const Value& v);

@@ -81,9 +81,39 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.a = b->corner1;
     p.b = b->corner2;
   } else {
-    throw std::logic_error("CSG objects are refused by the parser and cannot reach the renderer");
+    throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }
   out.push_back(p);
+}
+
+// Objects sharing one texture (and no interior of their own) share one material.
+class MaterialTable {
+ public:
+  explicit MaterialTable(std::vector<Material>& materials) : materials_(materials) {}
+  std::uint32_t material_for(const Object& o) {
+    auto found = o.interior ? shared_.end() : shared_.find(o.texture.get());
+    if (found != shared_.end()) return found->second;
+    materials_.push_back(make_material(*o.texture, o.interior));
+    const auto index = static_cast<std::uint32_t>(materials_.size() - 1);
+    if (!o.interior) shared_.emplace(o.texture.get(), index);
+    return index;
+  }
+
+ private:
+  std::vector<Material>& materials_;
+  std::unordered_map<const Texture*, std::uint32_t> shared_;
+};
+
+// A union is its children: every intersection of every child is kept (§10), which is what placing the
+// children side by side gives. The parser has already moved the union's transforms and inherited textures
+// into the children. Other CSG operations are refused by the parser until issue 4.
+void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, std::vector<Primitive>& out) {
+  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+    if (csg->kind != CsgKind::union_) throw std::logic_error("only CSG unions reach the renderer");
+    for (const auto& child : csg->children) add_object(child, object_index, materials, out);
+    return;
+  }
+  add_primitives(o, materials.material_for(o), object_index, out);
 }
 // Refraction uses ior/1 at every surface (each object seen from air). POV-Ray tracks the list of interiors
 // a ray is in, which differs where refracting objects overlap or nest: say so instead of differing silently.
@@ -110,21 +140,9 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   RenderScene r;
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
-  // Objects sharing one texture (and no interior of their own) share one material.
-  std::unordered_map<const Texture*, std::uint32_t> shared_materials;
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const Object& o = scene.objects[i];
-    std::uint32_t material;
-    auto found = o.interior ? shared_materials.end() : shared_materials.find(o.texture.get());
-    if (found != shared_materials.end()) {
-      material = found->second;
-    } else {
-      r.materials.push_back(make_material(*o.texture, o.interior));
-      material = static_cast<std::uint32_t>(r.materials.size() - 1);
-      if (!o.interior) shared_materials.emplace(o.texture.get(), material);
-    }
-    add_primitives(o, material, static_cast<std::uint32_t>(i), primitives);
-  }
+  MaterialTable materials(r.materials);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   warn_about_nested_refraction(primitives, r.materials, r.warnings);
   r.accelerator = Accelerator(std::move(primitives));
