@@ -8,46 +8,14 @@
 #include <random>
 #include <vector>
 
+#include "geometry_kit.hpp"
 #include "renderer/geometry.hpp"
 
 namespace {
 
 using namespace povtrace;
 using namespace povtrace::render;
-
-Primitive box(Vec3 lo, Vec3 hi) {
-  Primitive p;
-  p.type = ShapeType::box;
-  p.a = lo;
-  p.b = hi;
-  return p;
-}
-
-Primitive transformed(Primitive p, const Matrix& world_from_object) {
-  p.transformed = true;
-  p.world_from_object = world_from_object;
-  p.object_from_world = world_from_object.inverse();
-  return p;
-}
-
-Ray ray(Vec3 origin, Vec3 direction) { return Ray{origin, normalize(direction)}; }
-
-Vec3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    const double l = length(v);
-    if (l > 1e-3) return v / l;
-  }
-}
-
-Matrix random_transform(std::mt19937& rng) {
-  std::uniform_real_distribution<double> s(0.3, 3.0), ang(-180.0, 180.0), tr(-5.0, 5.0), coin(0.0, 1.0);
-  Vec3 scale{s(rng), s(rng), s(rng)};
-  if (coin(rng) < 0.2) scale.y = -scale.y;
-  return Matrix::scaling(scale) * Matrix::rotation({ang(rng), ang(rng), ang(rng)}) *
-         Matrix::translation({tr(rng), tr(rng), tr(rng)});
-}
+using namespace povtrace::test;
 
 void expect_vec_near(Vec3 a, Vec3 b, double tol) {
   EXPECT_NEAR(a.x, b.x, tol);
@@ -256,7 +224,7 @@ TEST(Box, RandomRaysMatchWorldSpaceSlabs) {
   for (int k = 0; k < 5000; ++k) {
     const Vec3 lo{corner(rng), corner(rng), corner(rng)};
     Primitive b = box(lo, lo + Vec3{size(rng), size(rng), size(rng)});
-    b = k % 4 == 0 ? transformed(b, Matrix::identity()) : transformed(b, random_transform(rng));
+    b = k % 4 == 0 ? transformed(b, Matrix::identity()) : transformed(b, random_mirroring_transform(rng, 1));
     if (k % 8 == 0) b.transformed = false;  // plain boxes too (world_from_object is the identity)
     const Vec3 origin{pos(rng), pos(rng), pos(rng)};
     const Vec3 centre = b.world_from_object.point((b.a + b.b) * 0.5);
@@ -292,7 +260,7 @@ TEST(Box, ReintersectionFromHitPoint) {
   int checked = 0;
   for (int k = 0; k < 2000; ++k) {
     Primitive b = box({-1, -0.5, -2}, {1.5, 0.5, 2});
-    if (k % 2) b = transformed(b, random_transform(rng));
+    if (k % 2) b = transformed(b, random_mirroring_transform(rng, 1));
     const Accelerator single(std::vector<Primitive>{b});
     const Vec3 origin{pos(rng), pos(rng), pos(rng)};
     if (inside(b, origin)) continue;  // from inside, the reflection legitimately meets the box again

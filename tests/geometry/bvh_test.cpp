@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry_kit.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {
@@ -76,47 +77,8 @@ namespace {
 
 using namespace povtrace;
 using namespace povtrace::render;
+using namespace povtrace::test;
 using Access = AcceleratorTestAccess;
-
-Primitive sphere(Vec3 c, double r) {
-  Primitive p;
-  p.type = ShapeType::sphere;
-  p.a = c;
-  p.radius = r;
-  return p;
-}
-
-Primitive box(Vec3 lo, Vec3 hi) {
-  Primitive p;
-  p.type = ShapeType::box;
-  p.a = lo;
-  p.b = hi;
-  return p;
-}
-
-Primitive plane(Vec3 n, double d) {
-  Primitive p;
-  p.type = ShapeType::plane;
-  p.a = normalize(n);
-  p.radius = d;
-  return p;
-}
-
-Primitive transformed(Primitive p, const Matrix& m) {
-  p.transformed = true;
-  p.world_from_object = m;
-  p.object_from_world = m.inverse();
-  return p;
-}
-
-Vec3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    const double l = length(v);
-    if (l > 1e-3) return v / l;
-  }
-}
 
 // 2,000 random spheres, boxes and transformed versions of both, in a 100-unit cube, plus planes.
 std::vector<Primitive> random_scene(std::mt19937& rng, int count, bool with_planes) {

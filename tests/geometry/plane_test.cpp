@@ -6,44 +6,14 @@
 #include <random>
 #include <vector>
 
+#include "geometry_kit.hpp"
 #include "renderer/geometry.hpp"
 
 namespace {
 
 using namespace povtrace;
 using namespace povtrace::render;
-
-Primitive plane(Vec3 normal, double distance) {
-  Primitive p;
-  p.type = ShapeType::plane;
-  p.a = normalize(normal);
-  p.radius = distance;
-  return p;
-}
-
-Primitive transformed(Primitive p, const Matrix& world_from_object) {
-  p.transformed = true;
-  p.world_from_object = world_from_object;
-  p.object_from_world = world_from_object.inverse();
-  return p;
-}
-
-Ray ray(Vec3 origin, Vec3 direction) { return Ray{origin, normalize(direction)}; }
-
-Vec3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    const double l = length(v);
-    if (l > 1e-3) return v / l;
-  }
-}
-
-Matrix random_transform(std::mt19937& rng) {
-  std::uniform_real_distribution<double> s(0.3, 3.0), ang(-180.0, 180.0), tr(-5.0, 5.0);
-  return Matrix::scaling({s(rng), s(rng), s(rng)}) * Matrix::rotation({ang(rng), ang(rng), ang(rng)}) *
-         Matrix::translation({tr(rng), tr(rng), tr(rng)});
-}
+using namespace povtrace::test;
 
 TEST(Plane, StraightDown) {
   const Primitive p = plane({0, 1, 0}, 0);

@@ -7,46 +7,14 @@
 #include <random>
 #include <vector>
 
+#include "geometry_kit.hpp"
 #include "renderer/geometry.hpp"
 
 namespace {
 
 using namespace povtrace;
 using namespace povtrace::render;
-
-Primitive sphere(Vec3 centre, double radius) {
-  Primitive p;
-  p.type = ShapeType::sphere;
-  p.a = centre;
-  p.radius = radius;
-  return p;
-}
-
-Primitive transformed(Primitive p, const Matrix& world_from_object) {
-  p.transformed = true;
-  p.world_from_object = world_from_object;
-  p.object_from_world = world_from_object.inverse();
-  return p;
-}
-
-Ray ray(Vec3 origin, Vec3 direction) { return Ray{origin, normalize(direction)}; }
-
-Vec3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (;;) {
-    const Vec3 v{g(rng), g(rng), g(rng)};
-    const double l = length(v);
-    if (l > 1e-3) return v / l;
-  }
-}
-
-Matrix random_transform(std::mt19937& rng) {
-  std::uniform_real_distribution<double> s(0.3, 3.0), ang(-180.0, 180.0), tr(-5.0, 5.0), coin(0.0, 1.0);
-  Vec3 scale{s(rng), s(rng), s(rng)};
-  if (coin(rng) < 0.2) scale.x = -scale.x;  // mirror now and then
-  return Matrix::scaling(scale) * Matrix::rotation({ang(rng), ang(rng), ang(rng)}) *
-         Matrix::translation({tr(rng), tr(rng), tr(rng)});
-}
+using namespace povtrace::test;
 
 // Implicit function of the (possibly transformed) sphere at a world point: negative inside.
 double implicit(const Primitive& p, Vec3 world) {
@@ -231,7 +199,7 @@ TEST(Sphere, TransformedDepthToleranceAppliesInObjectSpace) {
 TEST(Sphere, WorldBoundsContainTransformedSphere) {
   std::mt19937 rng(7);
   for (int k = 0; k < 200; ++k) {
-    const Primitive s = transformed(sphere({0.5, -1, 2}, 1.5), random_transform(rng));
+    const Primitive s = transformed(sphere({0.5, -1, 2}, 1.5), random_mirroring_transform(rng, 0));
     const Bounds b = world_bounds(s);
     ASSERT_TRUE(b.finite());
     for (int j = 0; j < 50; ++j) {
@@ -255,7 +223,7 @@ TEST(Sphere, RandomRaysMatchWorldSpaceSolve) {
   int hits = 0, compared = 0;
   for (int k = 0; k < 3000; ++k) {
     Primitive s = sphere({cen(rng), cen(rng), cen(rng)}, rad(rng));
-    if (k % 3 != 0) s = transformed(s, random_transform(rng));
+    if (k % 3 != 0) s = transformed(s, random_mirroring_transform(rng, 0));
     // Aim roughly at the shape so that most rays hit.
     const Vec3 origin{pos(rng), pos(rng), pos(rng)};
     const Vec3 target = (s.transformed ? s.world_from_object.point(s.a) : s.a) + random_unit(rng) * 3.0;
@@ -299,7 +267,7 @@ TEST(Sphere, ReintersectionFromHitPoint) {
   int checked = 0;
   for (int k = 0; k < 2000; ++k) {
     Primitive s = sphere({1, -2, 0.5}, 2.5);
-    if (k % 2) s = transformed(s, random_transform(rng));
+    if (k % 2) s = transformed(s, random_mirroring_transform(rng, 0));
     const Vec3 origin{pos(rng), pos(rng), pos(rng)};
     const Vec3 target = s.transformed ? s.world_from_object.point(s.a) : s.a;
     if (inside(s, origin)) continue;  // from inside, the reflection legitimately meets the sphere again

@@ -10,7 +10,7 @@
 
 #include "renderer/image/atomic_file.hpp"
 #include "renderer/image/image.hpp"
-#include "scratch_folder.hpp"
+#include "tests/common/scratch_folder.hpp"
 
 namespace povtrace::image {
 namespace {

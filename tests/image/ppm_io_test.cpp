@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/image/image.hpp"
-#include "scratch_folder.hpp"
+#include "tests/common/scratch_folder.hpp"
 
 namespace povtrace::image {
 namespace {

@@ -1,20 +1,19 @@
 // Helpers shared by the parser tests: parse text in memory, collect #debug/#warning output through
-// ParseOptions::message_sink, catch the ParseError of a malformed scene, and private temporary folders.
+// ParseOptions::message_sink, catch the ParseError of a malformed scene, and private temporary folders
+// (ScratchFolder, from tests/common/scratch_folder.hpp).
 #pragma once
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "parser/parse_scene.hpp"
+#include "tests/common/scratch_folder.hpp"
 
 namespace povtrace::test {
 
@@ -83,37 +82,6 @@ inline std::vector<double> eval_terms(const std::string& expr, const std::string
   while (in >> v) terms.push_back(v);
   return terms;
 }
-
-// A private temporary folder, removed with its contents at the end of the test.
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    static std::atomic<int> counter{0};
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            (std::string("povtrace_parser_") + (info ? info->name() : "test") + "_" + std::to_string(::getpid()) +
-             "_" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    const auto p = path_ / name;
-    std::filesystem::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
- private:
-  std::filesystem::path path_;
-};
 
 // Changes the working directory for the lifetime of the guard (#include searches it first).
 class WorkingDirectory {
