@@ -19,7 +19,13 @@ bool opens_block(std::string_view word) {
 
 void Interpreter::directive(const Token& hash) {
   Token word = raw();
-  if (word.kind != TokenKind::identifier) fail_expected(word, "a directive name after '#'");
+  // POV-Ray ignores a '#' that no directive name follows: the next token is read as if the '#' were not
+  // there (a sample scene writes `look_at <0,2,0>#` before its closing brace).
+  if (word.kind != TokenKind::identifier) {
+    warn(hash.loc, "'#' without a directive name is ignored");
+    unget(word);
+    return;
+  }
   const std::string_view w = word.text;
   if (w == "version") return directive_version(word);
   if (w == "declare") return directive_declare(word, false);
@@ -41,8 +47,8 @@ void Interpreter::directive(const Token& hash) {
   if (w == "switch" || w == "case" || w == "range" || w == "break" || w == "fopen" || w == "fclose" ||
       w == "read" || w == "write")
     fail_unsupported(word, "the directive #" + std::string(w));
-  (void)hash;
-  fail_at(word, "unknown directive '#" + std::string(w) + "'");
+  warn(hash.loc, "'#" + std::string(w) + "' is not a directive: the '#' is ignored, as POV-Ray does");
+  unget(word);
 }
 
 void Interpreter::directive_version(const Token& at) {

@@ -188,6 +188,7 @@ Numeric Interpreter::parse_vector_literal(const Token& open) {
     Token sep = next();
     if (sep.is(">")) break;
     if (!sep.is(",")) unget(sep);   // commas between components are optional (§5)
+    else if (peek().is(">")) { next(); break; }   // a trailing comma before '>' is accepted, as POV-Ray does
   } while (true);
   if (n.terms < 2) fail_at(open, "a vector needs 2 to 5 components");
   return n;

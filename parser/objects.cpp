@@ -83,7 +83,9 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     // hollow only matters for media and fog inside objects, which povtrace does not render yet; the flag
     // itself changes nothing in the image otherwise. An optional boolean follows.
     Token n = peek();
-    if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false")) parse_float();
+    if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false") || n.is("yes") ||
+        n.is("no") || n.is("("))
+      parse_float();
     return true;
   }
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.

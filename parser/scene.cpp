@@ -42,6 +42,10 @@ void Interpreter::parse_statement(const Token& t) {
     return;
   }
   if (k == "global_settings") return parse_global_settings(t);
+  if (k == "default") {   // the pre-3.0 spelling of #default, still accepted by POV-Ray
+    warn(t.loc, "'default' without '#' is an old form of #default");
+    return parse_default(t);
+  }
   if (k == "background") return parse_background(t);
   if (auto item = try_parse_item(t)) {
     if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);

@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "has no matching #end"},
         ErrorCase{"EndAlone", "#version 3.7;\n#end\n", 2, 2, "#end without a matching #if"},
         ErrorCase{"ElseAlone", "#version 3.7;\n  #else\n", 2, 4, "#else without a matching #if"},
-        ErrorCase{"UnknownDirective", "#version 3.7;\n#foo\n", 2, 2, "unknown directive '#foo'"},
+        ErrorCase{"UnknownDirective", "#version 3.7;\n#foo\n", 2, 2, "found the undeclared identifier 'foo'"},
         ErrorCase{"StraySemicolon", "#version 3.7;\nsphere { 0, 1 };\n", 2, 16, "unexpected ';'"},
         ErrorCase{"DeclareWithoutHash", "#version 3.7;\ndeclare X = 1;\n", 2, 1, "'#declare'"},
         ErrorCase{"MacroCallWithTooManyArguments", "#version 3.7;\n#macro M(A) A #end\n#declare B = M(1, 2);\n", 3,
