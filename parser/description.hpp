@@ -44,7 +44,7 @@ struct Pigment {
 
 // Finish defaults for #version 3.7 (povray-pixel-pipeline.md §2).
 struct Finish {
-  Colour ambient{0.1, 0.1, 0.1};
+  Colour ambient{0.1f, 0.1f, 0.1f};   // a colour, so single precision as in POV-Ray
   Colour emission{};
   double diffuse = 0.6;
   double diffuse_back = 0.0;     // second `diffuse` value

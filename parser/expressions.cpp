@@ -265,7 +265,7 @@ Colour Interpreter::parse_colour() {
     t = next();
   }
   if (!have_base) fail_expected(peek(), "a colour (rgb <r,g,b>, a colour identifier or an expression)");
-  return c.as_colour();
+  return c.stored().as_colour();
 }
 
 bool Interpreter::starts_string(const Token& t) const {

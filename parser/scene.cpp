@@ -172,7 +172,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     if (!is_value_word && !after.is("(")) return std::nullopt;
   }
   unget(first);
-  return Value(parse_additive());
+  return Value(parse_additive().stored());
 }
 
 namespace {

@@ -127,9 +127,11 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
   auto rgb_parameter = [this]() {
     Token at = peek();
     Numeric n = parse_additive();
-    if (n.terms == 1) return Colour{n.v[0], n.v[0], n.v[0], 0, 0};
+    // Finish colours are stored in single precision like every POV-Ray colour.
+    const auto single = [](double d) { return static_cast<double>(static_cast<float>(d)); };
+    if (n.terms == 1) return Colour{single(n.v[0]), single(n.v[0]), single(n.v[0]), 0, 0};
     if (n.terms < 3) fail_at(at, "expected a float or a colour");
-    return Colour{n.v[0], n.v[1], n.v[2], 0, 0};
+    return Colour{single(n.v[0]), single(n.v[1]), single(n.v[2]), 0, 0};
   };
   auto colour_parameter = [&]() {
     Token n = peek();

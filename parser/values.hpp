@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,6 +26,14 @@ struct Numeric {
     Numeric n; n.v = {c.r, c.g, c.b, c.f, c.t}; n.terms = 5; n.colour = true; return n;
   }
   Vec3 as_vec3() const { return {v[0], v[1], v[2]}; }
+  // POV-Ray stores colours in single precision (a declared rgb 0.1 reads back as 0.100000001490) while floats
+  // and vectors stay double: colour values are rounded to float wherever they are stored.
+  Numeric stored() const {
+    if (!colour) return *this;
+    Numeric n = *this;
+    for (double& c : n.v) c = static_cast<float>(c);
+    return n;
+  }
   Colour as_colour() const { return {v[0], v[1], v[2], v[3], v[4]}; }
 };
 
@@ -57,8 +66,32 @@ struct OpaqueValue {
   UnsupportedFeature feature;
 };
 
+struct ArrayValue;   // array[N]… (below: it holds Values)
+struct UserFile;     // a file opened by #fopen (file_io.cpp)
+
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
-                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue, MaterialValue>;
+                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue, MaterialValue,
+                           std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>>;
+
+// array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
+// first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies
+// (deep_copy), element assignment changes the array in place.
+struct ArrayValue {
+  std::vector<std::size_t> sizes;
+  std::vector<std::optional<Value>> elements;
+  std::string type;   // array_type_of() of the stored values; empty while none is stored
+
+  std::shared_ptr<ArrayValue> deep_copy() const;
+};
+
+// The value an array element token stands for (Token::element): `A[i][j]` resolved where it is read.
+struct TokenValue {
+  Value value;
+};
+
+// The type an array element must keep (§3): the numeric types by term count (float, 2-D vector, vector,
+// 4-D vector, colour), "object" for objects and lights, otherwise value_type_name.
+std::string array_type_of(const Value& v);
 
 // A human-readable name of a value's type for error messages ("float", "object", "texture", ...).
 std::string value_type_name(const Value& v);

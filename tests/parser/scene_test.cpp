@@ -19,12 +19,14 @@ void expect_vec_near(Vec3 got, Vec3 want, double tol = kTol) {
   EXPECT_NEAR(got.z, want.z, tol) << "z";
 }
 
+// Colours are stored in single precision, as POV-Ray stores them: compare with the float-rounded value.
+double single(double v) { return static_cast<float>(v); }
 void expect_colour(const Colour& got, const Colour& want) {
-  EXPECT_NEAR(got.r, want.r, kTol) << "r";
-  EXPECT_NEAR(got.g, want.g, kTol) << "g";
-  EXPECT_NEAR(got.b, want.b, kTol) << "b";
-  EXPECT_NEAR(got.f, want.f, kTol) << "f";
-  EXPECT_NEAR(got.t, want.t, kTol) << "t";
+  EXPECT_NEAR(got.r, single(want.r), kTol) << "r";
+  EXPECT_NEAR(got.g, single(want.g), kTol) << "g";
+  EXPECT_NEAR(got.b, single(want.b), kTol) << "b";
+  EXPECT_NEAR(got.f, single(want.f), kTol) << "f";
+  EXPECT_NEAR(got.t, single(want.t), kTol) << "t";
 }
 
 void expect_matrix_near(const Matrix& a, const Matrix& b) {
@@ -437,12 +439,12 @@ TEST(Textures, DefaultFinishAffectsOnlyLaterObjects) {
       "sphere { 0, 1 finish { EarlyFinish } }\n"
       "sphere { 0, 1 pigment { rgb 1 } }\n");
   ASSERT_EQ(s.objects.size(), 5u);
-  EXPECT_EQ(top_layer(s.objects[0]).finish.ambient.r, 0.1);
+  EXPECT_EQ(top_layer(s.objects[0]).finish.ambient.r, static_cast<float>(0.1));   // colours are single precision
   EXPECT_EQ(top_layer(s.objects[1]).finish.ambient.r, 0.5);
   // An untextured declared object gets the default in force where it is placed ([V sdl_tex_order]).
   EXPECT_EQ(top_layer(s.objects[2]).finish.ambient.r, 0.5);
   // A finish declared before the #default keeps the old default values.
-  EXPECT_EQ(top_layer(s.objects[3]).finish.ambient.r, 0.1);
+  EXPECT_EQ(top_layer(s.objects[3]).finish.ambient.r, static_cast<float>(0.1));
   EXPECT_EQ(top_layer(s.objects[3]).finish.phong, 1);
   EXPECT_EQ(top_layer(s.objects[4]).finish.ambient.r, 0.5);
 }

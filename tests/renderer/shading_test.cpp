@@ -45,10 +45,11 @@ double fade_F(double cos_angle) {
 TEST(Finish, DefaultsMatchVerifiedPixel) {
   // [V item2_finish mode 9] finish {} at pixel (3,0) of 4×4: hit (1.5, 1.5, 0); L ∝ (1.5, 0.5, −4), |v| = √18.5,
   // c = 4/√18.5. Colour = S·0.1 (ambient) + 0.6·c·S⊙Lc = (0.52639, 0.36131, 0.21856).
-  const double c = 4 / std::sqrt(18.5);
+  // The default ambient is the single-precision colour 0.1f, as POV-Ray stores it.
+  const double c = 4 / std::sqrt(18.5), ka = static_cast<float>(0.1);
   const Radiance r = shade(rgb(0.8, 0.6, 0.4), Finish{}, 1.5, 1.5);
-  EXPECT_RGB_REL(r.colour, 0.8 * 0.1 + 0.6 * c * 0.8 * 1.0, 0.6 * 0.1 + 0.6 * c * 0.6 * 0.9,
-                 0.4 * 0.1 + 0.6 * c * 0.4 * 0.8);
+  EXPECT_RGB_REL(r.colour, 0.8 * ka + 0.6 * c * 0.8 * 1.0, 0.6 * ka + 0.6 * c * 0.6 * 0.9,
+                 0.4 * ka + 0.6 * c * 0.4 * 0.8);
   EXPECT_NEAR(r.colour.x, 0.52639, 5e-6);
   EXPECT_NEAR(r.colour.y, 0.36131, 5e-6);
   EXPECT_NEAR(r.colour.z, 0.21856, 5e-6);
