@@ -13,6 +13,7 @@ struct CameraInput {
   std::optional<Vec3> look_at;
   std::optional<double> angle;
   bool up_given = false, right_given = false;
+  bool planar = true;   // perspective or orthographic (the other projections are parsed, not rendered)
   Matrix transform;
 };
 
@@ -20,7 +21,7 @@ struct CameraInput {
 // look_at; then the orthographic resize; finally the camera's own transforms.
 Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
   Camera c = in.camera;
-  if (in.angle) {
+  if (in.angle && *in.angle > 0 && in.planar) {   // POV-Ray applies an angle of 0 as no angle
     const double a = *in.angle * M_PI / 180.0;
     c.direction = normalize(c.direction) * (length(c.right) / (2.0 * std::tan(a / 2.0)));
   }
@@ -40,7 +41,8 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
     c.right = r * (handedness > 0 ? rl : -rl);
     c.up = u * ul;
   }
-  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || in.angle)) {
+  const bool angle_applied = in.angle && *in.angle > 0;
+  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || angle_applied)) {
     const Vec3 target = in.look_at.value_or(Vec3{0, 0, 1});
     const double k = length(target - c.location) / length(c.direction);
     c.right = c.right * k;
@@ -58,9 +60,10 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   expect("{", " after 'camera'");
   CameraInput in;
   in.camera.loc = keyword.loc;
+  std::optional<Token> angle_at;
+  bool spherical = false;
   Token t = next();
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
+  if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<Camera>(*v)) {
       in.camera = std::get<Camera>(*v);
       t = next();
@@ -68,8 +71,12 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   }
   while (!t.is("}")) {
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
-    if (k == "perspective") in.camera.projection = Projection::perspective;
-    else if (k == "orthographic") in.camera.projection = Projection::orthographic;
+    if (k == "perspective") { in.camera.projection = Projection::perspective; in.planar = true; spherical = false; }
+    else if (k == "orthographic") {
+      in.camera.projection = Projection::orthographic;
+      in.planar = true;
+      spherical = false;
+    }
     else if (k == "location") in.camera.location = parse_vector();
     else if (k == "direction") in.camera.direction = parse_vector();
     else if (k == "up") { in.camera.up = parse_vector(); in.up_given = true; }
@@ -77,9 +84,26 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     else if (k == "sky") in.sky = parse_vector();
     else if (k == "look_at") in.look_at = parse_vector();
     else if (k == "angle") {
+      // Negative angles are refused at once; the 180° limit only holds for perspective and orthographic cameras
+      // (fisheye and the others take up to 360°), checked once the projection is known.
       in.angle = parse_float();
-      if (*in.angle <= 0 || *in.angle >= 180) fail_at(t, "camera angle must be between 0 and 180 degrees");
+      if (*in.angle < 0) fail_at(t, "the camera angle must not be negative");
+      angle_at = t;
+      // A spherical camera takes a horizontal and an optional vertical angle (`angle 360, 180`).
+      if (spherical) {
+        accept(",");
+        const Token v = peek();
+        const Value* id = lookup(v);
+        if (v.kind == TokenKind::number || v.is("(") || v.is("-") || v.is("+") ||
+            (id && std::holds_alternative<Numeric>(*id)))
+          if (parse_float() < 0) fail_at(v, "the vertical camera angle must not be negative");
+      }
     } else if (!try_transform(t, in.transform)) {
+      if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
+          k == "spherical" || k == "mesh_camera") {
+        in.planar = false;
+        spherical = k == "spherical";
+      }
       if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
           k == "spherical" || k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
           k == "normal" || k == "confidence" || k == "variance") {
@@ -92,6 +116,8 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     }
     t = next();
   }
+  if (in.angle && in.planar && *in.angle >= 180)
+    fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
   return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
 }
 
@@ -130,8 +156,7 @@ Light Interpreter::parse_light(const Token& keyword) {
   light.loc = keyword.loc;
   Token t = next();
   bool copied = false;
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
+  if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v) &&
         std::holds_alternative<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v))) {
       light = std::get<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v));

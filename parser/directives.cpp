@@ -44,9 +44,14 @@ void Interpreter::directive(const Token& hash) {
   if (w == "debug" || w == "warning" || w == "error" || w == "render" || w == "statistics")
     return directive_message(word, std::string(w));
   if (w == "default") return parse_default(word);
-  if (w == "switch" || w == "case" || w == "range" || w == "break" || w == "fopen" || w == "fclose" ||
-      w == "read" || w == "write")
-    fail_unsupported(word, "the directive #" + std::string(w));
+  if (w == "switch") return directive_switch(word);
+  if (w == "case") return directive_case(word, false);
+  if (w == "range") return directive_case(word, true);
+  if (w == "break") return directive_break(word);
+  if (w == "fopen") return directive_fopen(word);
+  if (w == "fclose") return directive_fclose(word);
+  if (w == "read") return directive_read(word);
+  if (w == "write") return directive_write(word);
   warn(hash.loc, "'#" + std::string(w) + "' is not a directive: the '#' is ignored, as POV-Ray does");
   unget(word);
 }
@@ -61,13 +66,28 @@ void Interpreter::directive_version(const Token& at) {
 
 void Interpreter::directive_declare(const Token& at, bool local) {
   Token name_token = raw();
+  // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
+  std::optional<SymbolTable::Deprecation> deprecation;
+  if (name_token.is("deprecated")) {
+    deprecation.emplace();
+    Token t = next();
+    if (t.is("once")) deprecation->once = true; else unget(t);
+    deprecation->message = parse_string();
+    name_token = raw();
+  }
   if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
   if (is_reserved_word(name_token.text))
     fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
   const std::string name(name_token.text);
+  if (deprecation && deprecation->message.empty())
+    deprecation->message = "Identifier '" + name + "' was declared deprecated.";
+  if (!pushed_back_.empty() ? pushed_back_.back().is("[")
+                            : lex_token(*frames_.back().file, frames_.back().pos).is("[")) {
+    const Value* v = symbols_.find(name);
+    if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) return directive_declare_element(name_token, local);
+  }
   Token eq = next();
-  if (!eq.is("[") && !eq.is("=")) fail_expected(eq, "'=' after #declare " + name);
-  if (eq.is("[")) fail_unsupported(eq, "assignment to array elements");
+  if (!eq.is("=")) fail_expected(eq, "'=' after #declare " + name);
   Token first = next();
   auto value = try_parse_rvalue(first);
   if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
@@ -77,6 +97,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   if (local) symbols_.local(name, std::move(*value)); else symbols_.declare(name, std::move(*value));
+  if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
   Token semi = peek_raw();
   if (semi.is(";")) next();
   else if (needs_semicolon) fail_expected(semi, "';' after the value of " + name);
@@ -134,11 +155,7 @@ bool Interpreter::condition_in_parens() {
 
 bool Interpreter::identifier_defined_in_parens() {
   expect("(", " (write #ifdef (Name))");
-  Token name = raw();
-  if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier");
-  const bool defined = !is_reserved_word(name.text) && symbols_.find(std::string(name.text)) != nullptr;
-  expect(")", " after the identifier");
-  return defined;
+  return parse_defined_identifier();
 }
 
 // Skips a false branch: tokens are still lexed (comments and strings must be well formed) but nothing is
@@ -180,6 +197,9 @@ void Interpreter::directive_if(const Token& at, int kind) {
 
 // Reaching #else/#elseif while executing means the branch before it ran: skip to the #end.
 void Interpreter::directive_else(const Token& at, bool is_elseif) {
+  // In a #switch, reaching #else while executing a matched section falls through into it, as C's default does
+  // (POV-Ray 3.7 behaves so, although its documentation says otherwise).
+  if (!is_elseif && !controls_.empty() && controls_.back().kind == Control::Kind::switch_block) return;
   if (controls_.empty() || controls_.back().kind != Control::Kind::if_branch)
     fail_at(at, std::string("#") + (is_elseif ? "elseif" : "else") + " without a matching #if");
   if (is_elseif) {
@@ -205,11 +225,12 @@ void Interpreter::directive_end(const Token& at) {
     case Control::Kind::if_branch:
       controls_.pop_back();
       return;
+    case Control::Kind::switch_block:
+      controls_.pop_back();
+      return;
     case Control::Kind::macro_call:
       if (frames_.size() - 1 != c.frame) fail_at(at, "#end of a macro in another file than its #macro");
-      frames_.pop_back();
-      symbols_.pop_scope();
-      controls_.pop_back();
+      return_from_macro();
       return;
     case Control::Kind::while_loop: {
       if (frames_.size() - 1 != c.frame) fail_at(at, "a #while loop must end in the file it started in");
@@ -234,6 +255,95 @@ void Interpreter::directive_end(const Token& at) {
       controls_.pop_back();
       return;
     }
+  }
+}
+
+void Interpreter::return_from_macro() {
+  frames_.pop_back();
+  symbols_.pop_scope();
+  controls_.pop_back();
+}
+
+// #switch (F) must be followed by #case or #range (§4). A matched section runs and falls through the later
+// #case/#range/#else lines (they are still parsed) until #break or #end; an unmatched one is skipped.
+void Interpreter::directive_switch(const Token& at) {
+  Control c;
+  c.kind = Control::Kind::switch_block;
+  c.frame = frames_.size() - 1;
+  c.loc = at.loc;
+  c.switch_value = [&] {
+    expect("(", " (conditions are written in parentheses)");
+    const double v = parse_float_full();
+    expect(")", " closing the condition");
+    return v;
+  }();
+  Token hash = raw();
+  Token word = hash.is("#") ? raw() : hash;
+  if (!hash.is("#") || !(word.is("case") || word.is("range")))
+    fail_expected(word, "#case or #range after #switch");
+  controls_.push_back(c);
+  if (!case_matches(word)) skip_switch_section(at);
+}
+
+bool Interpreter::case_matches(const Token& word) {
+  const double v = controls_.back().switch_value;
+  expect("(", " (conditions are written in parentheses)");
+  const double a = parse_float_full();
+  if (word.is("case")) {
+    expect(")", " closing the condition");
+    return std::fabs(v - a) < kConditionEpsilon;
+  }
+  expect(",", " between the bounds of #range (Low, High)");
+  const double b = parse_float_full();
+  expect(")", " closing the condition");
+  return v >= a && v <= b;
+}
+
+void Interpreter::skip_switch_section(const Token& at) {
+  int depth = 0;
+  while (true) {
+    Token t = raw();
+    if (t.kind == TokenKind::end_of_input) fail(at.loc, "this #switch has no matching #end");
+    if (!t.is("#")) continue;
+    Token w = raw();
+    if (w.kind != TokenKind::identifier) continue;
+    if (opens_block(w.text)) { ++depth; continue; }
+    if (w.text == "end") {
+      if (depth == 0) { controls_.pop_back(); return; }
+      --depth;
+      continue;
+    }
+    if (depth > 0) continue;
+    if (w.text == "else") return;
+    if ((w.text == "case" || w.text == "range") && case_matches(w)) return;
+  }
+}
+
+// Reached while executing a matched section: the condition is parsed but not tested again (fall-through).
+void Interpreter::directive_case(const Token& at, bool is_range) {
+  if (controls_.empty() || controls_.back().kind != Control::Kind::switch_block)
+    fail_at(at, std::string("#") + (is_range ? "range" : "case") + " without a matching #switch");
+  case_matches(at);
+}
+
+// #break (§4): leaves the innermost #switch, #while or #for — skipping to its #end, through any #if around the
+// #break — or returns from the current macro.
+void Interpreter::directive_break(const Token& at) {
+  while (true) {
+    if (controls_.empty()) fail_at(at, "#break outside a #switch, #while, #for or macro");
+    const Control c = controls_.back();
+    if (c.kind == Control::Kind::macro_call) {
+      if (frames_.size() - 1 != c.frame) fail_at(at, "#break in another file than the macro it returns from");
+      return_from_macro();
+      return;
+    }
+    Token opener = at;
+    opener.loc = c.loc;
+    opener.text = c.kind == Control::Kind::if_branch ? "if" : c.kind == Control::Kind::switch_block ? "switch"
+                  : c.kind == Control::Kind::while_loop ? "while" : "for";
+    skip_branch(opener, false);
+    controls_.pop_back();
+    if (c.kind != Control::Kind::if_branch) return;
   }
 }
 

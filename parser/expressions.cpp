@@ -2,7 +2,9 @@
 // comparisons, & | and ?: inside parentheses and conditions), term counts with promotion, colour forms,
 // built-in functions.
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <map>
 
@@ -63,8 +65,57 @@ Vec3 Interpreter::parse_vector() {
 }
 
 // ---- full level ----------------------------------------------------------------------------------------
+Numeric Interpreter::compare_strings() {
+  const std::string a = parse_string();
+  Token op = next();
+  static const std::string_view ops[] = {"<", "<=", "=", "!=", ">=", ">"};
+  if (op.kind != TokenKind::symbol || std::find(std::begin(ops), std::end(ops), op.text) == std::end(ops))
+    fail_expected(op, "a comparison operator (<, <=, =, !=, >=, >) after a string");
+  const int c = strcmp_value(a, parse_string());
+  const bool r = op.is("<") ? c < 0 : op.is("<=") ? c <= 0 : op.is("=") ? c == 0 : op.is("!=") ? c != 0
+                 : op.is(">=") ? c >= 0 : c > 0;
+  return Numeric::scalar(r ? 1.0 : 0.0);
+}
+
+int Interpreter::strcmp_value(const std::string& a, const std::string& b) {
+  // POV-Ray's UCS2_strcmp: the difference of the first differing characters (0 past the end).
+  for (std::size_t i = 0;; ++i) {
+    const int ca = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+    const int cb = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+    if (ca != cb || ca == 0) return ca - cb;
+  }
+}
+
+// datetime(F [, format]) (§5): F days since 2000-01-01 00:00 UTC, formatted with strftime in UTC; the default
+// format is "%Y-%m-%d %H:%M:%SZ".
+std::string Interpreter::parse_datetime() {
+  expect("(", " after 'datetime'");
+  const double days = parse_float();
+  accept(",");
+  std::string format = "%Y-%m-%d %H:%M:%SZ";
+  Token t = next();
+  if (!t.is(")")) {
+    unget(t);
+    Token at = peek();
+    format = parse_string();
+    if (format.empty()) fail_at(at, "datetime() needs a non-empty format string");
+    if (format.size() > 200) fail_at(at, "the datetime() format string is longer than 200 characters");
+    expect(")", " closing datetime()");
+  }
+  const double seconds = std::floor((days + (365 * 30 + 7)) * 86400.0 + 0.5);
+  if (!(std::fabs(seconds) < 1e15)) fail_at(t, "datetime() of a date out of range");
+  const std::time_t stamp = static_cast<std::time_t>(seconds);
+  std::tm tm{};
+  if (!gmtime_r(&stamp, &tm)) fail_at(t, "datetime() of a date out of range");
+  char buf[201];
+  const std::size_t n = std::strftime(buf, sizeof buf, format.c_str(), &tm);
+  return std::string(buf, n);
+}
+
 Numeric Interpreter::parse_expression() {
   auto comparison = [this]() {
+    // A string operand takes exactly one comparison with another string, in strcmp order (§5).
+    if (starts_string(peek())) return compare_strings();
     Numeric left = parse_additive();
     while (true) {
       Token op = peek_raw();
@@ -223,7 +274,7 @@ bool Interpreter::starts_colour(const Token& t) const {
   for (auto w : words)
     if (t.text == w) return true;
   if (is_reserved_word(t.text)) return false;
-  const Value* v = symbols_.find(std::string(t.text));
+  const Value* v = lookup(t);
   return v && std::holds_alternative<Numeric>(*v) && std::get<Numeric>(*v).colour;
 }
 
@@ -271,11 +322,12 @@ Colour Interpreter::parse_colour() {
 bool Interpreter::starts_string(const Token& t) const {
   if (t.kind == TokenKind::string) return true;
   if (t.kind != TokenKind::identifier) return false;
-  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr"};
+  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr",
+                                         "datetime"};
   for (auto f : fns)
     if (t.text == f) return true;
   if (is_reserved_word(t.text)) return false;
-  const Value* v = symbols_.find(std::string(t.text));
+  const Value* v = lookup(t);
   return v && std::holds_alternative<std::string>(*v);
 }
 
@@ -293,9 +345,8 @@ std::string format_str(double value, int width, int precision) {
 std::string Interpreter::parse_string() {
   Token t = next();
   if (t.kind == TokenKind::string) return string_value(t, file_of(t.loc), true);
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
-    if (v && std::holds_alternative<std::string>(*v)) return std::get<std::string>(*v);
+  if (const Value* v = lookup(t)) {
+    if (std::holds_alternative<std::string>(*v)) return std::get<std::string>(*v);
   }
   if (t.is("concat")) {
     expect("(", " after concat");
@@ -343,6 +394,7 @@ std::string Interpreter::parse_string() {
     for (char& c : s) c = t.is("strupr") ? static_cast<char>(std::toupper(c)) : static_cast<char>(std::tolower(c));
     return s;
   }
+  if (t.is("datetime")) return parse_datetime();
   if (t.is("substr")) {
     expect("(", " after substr");
     std::string s = parse_string();

@@ -1,4 +1,5 @@
 // Primary expressions and the built-in float/vector functions of POV-Ray 3.7 (povray-sdl-and-geometry.md §5).
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -155,16 +156,23 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     expect(",", "");
     std::string b = parse_string();
     expect(")", "");
-    return Numeric::scalar(static_cast<double>(a.compare(b) < 0 ? -1 : (a.compare(b) > 0 ? 1 : 0)));
+    return Numeric::scalar(static_cast<double>(strcmp_value(a, b)));
   }
   if (n == "defined") {
-    expect("(", "");
-    Token id = raw();
-    expect(")", "");
-    return Numeric::scalar(id.kind == TokenKind::identifier && !is_reserved_word(id.text) &&
-                                   symbols_.find(std::string(id.text))
-                               ? 1.0 : 0.0);
+    expect("(", " after 'defined'");
+    return Numeric::scalar(parse_defined_identifier() ? 1.0 : 0.0);
   }
+  if (n == "dimensions" || n == "dimension_size") return parse_dimensions(name);
+  if (n == "inside" || n == "min_extent" || n == "max_extent") return parse_object_query(name);
+  if (n == "now") {
+    // Days since 2000-01-01 00:00 UTC (§5), with POV-Ray's microsecond resolution.
+    const auto since_epoch = std::chrono::duration_cast<std::chrono::microseconds>(
+        std::chrono::system_clock::now().time_since_epoch());
+    constexpr double kY2kSeconds = 946684800.0;
+    return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
+  }
+  // Built-ins that need the renderer or noise functions: refused by name.
+  if (n == "trace" || n == "vturbulence") fail_unsupported(name, "the function '" + std::string(n) + "'");
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
     rand_streams_.push_back(static_cast<std::uint32_t>(static_cast<long long>(a[0])));
@@ -200,7 +208,7 @@ Numeric Interpreter::parse_primary() {
   }
   const std::string_view w = t.text;
   if (!is_reserved_word(w)) {
-    const Value* v = symbols_.find(std::string(w));
+    const Value* v = lookup(t);
     if (!v) fail_at(t, "undeclared identifier '" + std::string(w) + "'");
     // An identifier holding a value povtrace parses but cannot use yet (a function, an array, …) is refused by
     // the name of that feature.

@@ -8,6 +8,9 @@
 //   objects.cpp       shapes, CSG, object modifiers and transforms
 //   camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
 //   scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+//   arrays.cpp        array declarations, subscripts, element assignment, dimensions()
+//   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
+//   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 #pragma once
 
 #include <functional>
@@ -36,11 +39,12 @@ class Interpreter {
     enum class Kind { main, include, macro } kind = Kind::main;
   };
   struct Control {
-    enum class Kind { if_branch, while_loop, for_loop, macro_call } kind = Kind::if_branch;
+    enum class Kind { if_branch, while_loop, for_loop, macro_call, switch_block } kind = Kind::if_branch;
     std::size_t frame = 0;       // frame the construct started in (loops must end there)
     LexPosition resume;          // while: start of the condition; for: first byte of the body
     std::string for_variable;
     double for_end = 0, for_step = 1;
+    double switch_value = 0;     // #switch: the value #case/#range compare with
     SourceLoc loc;
   };
   Token raw();                   // next token of the frame stack, no directive processing
@@ -61,6 +65,11 @@ class Interpreter {
   std::string describe(const Token& t) const;
   const SourceFile& file_of(const SourceLoc& loc) const;
   bool is_macro_call(const Token& t) const;
+  // The value an identifier token stands for: an array element's value (Token::element), else the symbol
+  // visible under its name; nullptr for anything else. Every identifier lookup goes through here.
+  const Value* lookup(const Token& t) const;
+  // next() on a fresh identifier: the deprecation warning, and `A[i]…` resolved to its element.
+  void process_identifier(Token& t, const Value* v);
 
   // ---- directives (directives.cpp) ----
   void directive(const Token& hash);
@@ -74,6 +83,13 @@ class Interpreter {
   void directive_while(const Token& at);
   void directive_for(const Token& at);
   void directive_macro(const Token& at);
+  void directive_switch(const Token& at);
+  void directive_case(const Token& at, bool is_range);
+  void directive_break(const Token& at);
+  bool case_matches(const Token& word);   // parses #case (F) / #range (Lo, Hi) against the current #switch
+  // A #switch section that did not match: skips to the next #case/#range that matches, an #else (then runs it)
+  // or the #end (then leaves the #switch).
+  void skip_switch_section(const Token& at);
   void directive_message(const Token& at, const std::string& kind);
   void invoke_macro(const Token& name);
   bool condition_in_parens();
@@ -83,6 +99,7 @@ class Interpreter {
   std::string skip_branch(const Token& opener, bool stop_at_else);
   void seek(std::size_t frame, LexPosition pos);
   void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind);
+  void return_from_macro();
   std::optional<std::filesystem::path> find_include(const std::string& name) const;
 
   // ---- expressions (expressions.cpp) ----
@@ -101,9 +118,41 @@ class Interpreter {
   Colour parse_colour();                 // Parse_Colour: optional colour keyword, forms, overrides
   bool starts_colour(const Token& t) const;
   std::string parse_string();
+  std::string parse_datetime();
+  Numeric compare_strings();   // "a" < "b" and the other comparisons of two strings
+  static int strcmp_value(const std::string& a, const std::string& b);   // POV-Ray's strcmp(): a char difference
   bool starts_string(const Token& t) const;
   double to_float(const Numeric& n, const Token& at) const;
   std::vector<double> parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+
+  // ---- arrays (arrays.cpp) ----
+  Value parse_array_declaration(const Token& keyword);
+  void parse_array_initialiser(ArrayValue& a, std::size_t dim, std::size_t base);
+  void store_element(ArrayValue& a, std::size_t index, Value value, const Token& at, const std::string& name);
+  // `[i][j]…` after an array name: the flat element index. Subscripts are truncated floats (§3).
+  std::size_t parse_subscripts(const ArrayValue& a, const std::string& name, Token& last);
+  // `Name[i]…` read raw (an lvalue or #ifdef): the array and element index, or nullopt if Name is no array.
+  struct ElementRef {
+    std::shared_ptr<ArrayValue> array;
+    std::size_t index = 0;
+  };
+  std::optional<ElementRef> parse_element_reference(const Token& name);
+  void directive_declare_element(const Token& name, bool local);
+  Numeric parse_dimensions(const Token& name);   // dimensions(A), dimension_size(A, k)
+  // defined(Id) / #ifdef (Id): Id may be an array element, defined iff assigned. Reads from after '('.
+  bool parse_defined_identifier();
+
+  // ---- file I/O (file_io.cpp) ----
+  void directive_fopen(const Token& at);
+  void directive_fclose(const Token& at);
+  void directive_read(const Token& at);
+  void directive_write(const Token& at);
+  // The absolute, symlink-resolved path of a user file, refused unless it lies under the scene file's directory or
+  // the working directory.
+  std::filesystem::path confined_path(const std::string& name, const Token& at) const;
+
+  // ---- object queries (object_queries.cpp) ----
+  Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
 
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string_view>
 
 #include "parser/source.hpp"
@@ -11,6 +12,8 @@
 namespace povtrace::sdl {
 
 enum class TokenKind { end_of_input, number, string, identifier, symbol };
+
+struct TokenValue;   // values.hpp
 
 // Where the lexer stands in one file: byte offset plus the line and column of that byte (both 1-based).
 struct LexPosition {
@@ -26,6 +29,12 @@ struct Token {
   SourceLoc loc;
   LexPosition begin;       // position of the token's first byte
   LexPosition end;         // position just after the token
+  // Set by the interpreter's token stream: `processed` once directives, macro calls, array subscripts and
+  // deprecation warnings have been dealt with (a token put back and read again is not processed twice);
+  // `element` when the token is an array element `A[i]…` (text then spans the whole reference if it lies in one
+  // file), holding the element's value.
+  bool processed = false;
+  std::shared_ptr<const TokenValue> element;
 
   bool is(std::string_view symbol_or_word) const {
     return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text == symbol_or_word;

@@ -108,8 +108,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   expect("{", " after 'material'");
   Object holder;   // collects the material's parts with the object-modifier rules, then hands them over
   Token t = next();
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
+  if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<MaterialValue>(*v)) {
       const auto& m = std::get<MaterialValue>(*v);
       holder.texture = m.texture;
@@ -227,8 +226,7 @@ SceneItem Interpreter::parse_object_block(const Token& keyword) {
   expect("{", " after 'object'");
   Token t = next();
   std::optional<SceneItem> item;
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
+  if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))
       item = *std::get<std::shared_ptr<const SceneItem>>(*v);
   }
@@ -272,8 +270,7 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
       o.unsupported = skip_unsupported(t, "the shape '" + std::string(k) + "'");
       return o;
     }
-  if (!is_reserved_word(k)) {
-    const Value* v = symbols_.find(std::string(k));
+  if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))
       return *std::get<std::shared_ptr<const SceneItem>>(*v);
   }

@@ -143,9 +143,11 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
     return Value(MaterialValue{holder.texture, holder.interior});
   }
-  if (first.kind == TokenKind::identifier && !is_reserved_word(k)) {
-    const Value* v = symbols_.find(std::string(k));
-    if (v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) return *v;
+  if (k == "array") return parse_array_declaration(first);
+  if (const Value* v = lookup(first);
+      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) {
+    if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
+    return *v;
   }
   if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
   // Any other block value (color_map, normal, media, fog, sky_sphere, spline, array, function, …): parsed
@@ -154,10 +156,9 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     Token after = peek_raw();
     if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
       UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
-      while (true) {
-        Token g = next();
-        if (!(g.is("{") || g.is("[") || g.is("("))) { unget(g); break; }
-        skip_balanced(g);
+      while (true) {   // raw look: a directive after the value runs only once it is stored (§1 item 6)
+        if (Token g = peek_raw(); !(g.is("{") || g.is("[") || g.is("("))) break;
+        skip_balanced(next());
       }
       return Value(OpaqueValue{std::string(k), feature});
     }
@@ -165,7 +166,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
     static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
                                                    "no", "on", "off", "version", "clock", "clock_on",
-                                                   "clock_delta"};
+                                                   "clock_delta", "now"};
     bool is_value_word = false;
     for (auto w : value_words) is_value_word = is_value_word || k == w;
     Token after = peek();

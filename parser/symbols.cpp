@@ -23,8 +23,27 @@ std::string value_type_name(const Value& v) {
     std::string operator()(const Matrix&) const { return "transform"; }
     std::string operator()(const OpaqueValue& o) const { return o.keyword; }
     std::string operator()(const MaterialValue&) const { return "material"; }
+    std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "array"; }
+    std::string operator()(const std::shared_ptr<UserFile>&) const { return "file"; }
   };
   return std::visit(Namer{}, v);
+}
+
+std::string array_type_of(const Value& v) {
+  if (const auto* n = std::get_if<Numeric>(&v)) {
+    static const char* names[] = {"", "float", "2-D vector", "vector", "4-D vector", "colour"};
+    return n->colour ? "colour" : names[n->terms];
+  }
+  if (std::holds_alternative<std::shared_ptr<const SceneItem>>(v)) return "object";
+  return value_type_name(v);
+}
+
+std::shared_ptr<ArrayValue> ArrayValue::deep_copy() const {
+  auto copy = std::make_shared<ArrayValue>(*this);
+  for (auto& e : copy->elements)
+    if (e)
+      if (auto* inner = std::get_if<std::shared_ptr<ArrayValue>>(&*e)) *inner = (*inner)->deep_copy();
+  return copy;
 }
 
 std::optional<std::size_t> SymbolTable::level_of(const std::string& name) const {
@@ -73,7 +92,23 @@ bool SymbolTable::undefine(const std::string& name) {
   auto level = level_of(name);
   if (!level) return false;
   tables_[*level].erase(name);
+  deprecations_[*level].erase(name);
   return true;
+}
+
+void SymbolTable::deprecate(const std::string& name, Deprecation d) {
+  auto level = level_of(name);
+  if (!level) return;
+  deprecations_[*level][name] = std::move(d);
+  any_deprecated_ = true;
+}
+
+SymbolTable::Deprecation* SymbolTable::deprecation(const std::string& name) {
+  if (!any_deprecated_) return nullptr;
+  auto level = level_of(name);
+  if (!level) return nullptr;
+  auto it = deprecations_[*level].find(name);
+  return it == deprecations_[*level].end() ? nullptr : &it->second;
 }
 
 }  // namespace povtrace::sdl

@@ -13,10 +13,10 @@ namespace povtrace::sdl {
 
 class SymbolTable {
  public:
-  SymbolTable() : tables_(1) {}
+  SymbolTable() : tables_(1), deprecations_(1) {}
 
-  void push_scope() { tables_.emplace_back(); }
-  void pop_scope() { tables_.pop_back(); }
+  void push_scope() { tables_.emplace_back(); deprecations_.emplace_back(); }
+  void pop_scope() { tables_.pop_back(); deprecations_.pop_back(); }
   std::size_t depth() const { return tables_.size(); }
 
   // The value visible under `name`, following macro aliases; nullptr if undeclared.
@@ -33,9 +33,23 @@ class SymbolTable {
   // #undef: removes the innermost visible entry; false if there was none.
   bool undefine(const std::string& name);
 
+  // `#declare deprecated [once] "message" Name = …` (§4): marks the entry now visible under `name`. Reading
+  // it later warns with the message (only the first time with `once`). The mark stays with the entry when it is
+  // assigned again, as in POV-Ray.
+  struct Deprecation {
+    std::string message;
+    bool once = false;
+    bool shown = false;
+  };
+  void deprecate(const std::string& name, Deprecation d);
+  // The deprecation of the entry visible under `name`, if any (cheap while nothing was ever deprecated).
+  Deprecation* deprecation(const std::string& name);
+
  private:
   Value* resolve_alias(Value* v);
   std::vector<std::unordered_map<std::string, Value>> tables_;
+  std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // parallel to tables_
+  bool any_deprecated_ = false;
 };
 
 }  // namespace povtrace::sdl

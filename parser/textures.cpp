@@ -8,9 +8,7 @@
 namespace povtrace::sdl {
 
 namespace {
-template <class T> const T* identifier_value(const SymbolTable& symbols, const Token& t) {
-  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return nullptr;
-  const Value* v = symbols.find(std::string(t.text));
+template <class T> const T* identifier_value(const Value* v) {
   return v && std::holds_alternative<T>(*v) ? &std::get<T>(*v) : nullptr;
 }
 
@@ -51,7 +49,7 @@ Matrix Interpreter::parse_transform_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   Token open = next();
   // The old form `transform T_id` without braces.
-  if (const Matrix* id = identifier_value<Matrix>(symbols_, open)) return *id;
+  if (const Matrix* id = identifier_value<Matrix>(lookup(open))) return *id;
   if (!open.is("{")) fail_expected(open, "'{' or a transform identifier after 'transform'");
   Matrix m;
   bool inverse = false;
@@ -59,7 +57,7 @@ Matrix Interpreter::parse_transform_block(const Token& keyword) {
     Token t = next();
     if (t.is("}")) break;
     if (t.is("inverse")) { inverse = true; continue; }
-    if (const Matrix* id = identifier_value<Matrix>(symbols_, t)) { m = m * *id; continue; }
+    if (const Matrix* id = identifier_value<Matrix>(lookup(t))) { m = m * *id; continue; }
     if (try_transform(t, m)) continue;
     fail_expected(t, "translate, rotate, scale, matrix, transform, inverse or '}' in transform { }");
   }
@@ -98,7 +96,7 @@ Pigment Interpreter::parse_pigment_block(const Token& keyword, const Pigment& st
   Pigment p = start;
   p.loc = keyword.loc;
   Token t = next();
-  if (const Pigment* id = identifier_value<Pigment>(symbols_, t)) {
+  if (const Pigment* id = identifier_value<Pigment>(lookup(t))) {
     p = *id;
     t = next();
   }
@@ -119,7 +117,7 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
   Finish f = start;
   f.loc = keyword.loc;
   Token t = next();
-  if (const Finish* id = identifier_value<Finish>(symbols_, t)) {
+  if (const Finish* id = identifier_value<Finish>(lookup(t))) {
     f = *id;
     t = next();
   }
@@ -191,7 +189,7 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
   expect("{", " after 'interior'");
   Interior in = start;
   Token t = next();
-  if (const Interior* id = identifier_value<Interior>(symbols_, t)) {
+  if (const Interior* id = identifier_value<Interior>(lookup(t))) {
     in = *id;
     t = next();
   }
@@ -212,9 +210,8 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
   Texture tex;
   tex.loc = keyword.loc;
   Token t = next();
-  if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-    const Value* v = symbols_.find(std::string(t.text));
-    if (v && std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
+  if (const Value* v = lookup(t)) {
+    if (std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
       const auto declared = std::get<std::shared_ptr<const Texture>>(*v);
       t = next();
       // `texture { T }` unchanged shares the declared texture: textures are immutable once built, and scenes

@@ -42,15 +42,21 @@ Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(
 }
 
 bool Interpreter::is_macro_call(const Token& t) const {
-  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return false;
-  const Value* v = symbols_.find(std::string(t.text));
+  const Value* v = lookup(t);
   return v && std::holds_alternative<MacroDefinition>(*v);
+}
+
+const Value* Interpreter::lookup(const Token& t) const {
+  if (t.element) return &t.element->value;
+  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return nullptr;
+  return symbols_.find(std::string(t.text));
 }
 
 Token Interpreter::next() {
   while (true) {
     // A directive may itself look ahead and push a token back: that token comes first, before reading on.
-    // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks.
+    // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks; tokens put
+    // back after next() are, and are not processed twice (no second deprecation warning).
     Token t;
     if (!pushed_back_.empty()) {
       t = pushed_back_.back();
@@ -58,9 +64,40 @@ Token Interpreter::next() {
     } else {
       t = raw();
     }
+    if (t.processed) return t;
     if (t.is("#")) { directive(t); continue; }
-    if (is_macro_call(t)) { invoke_macro(t); continue; }
+    if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
+      const Value* v = symbols_.find(std::string(t.text));
+      if (v && std::holds_alternative<MacroDefinition>(*v)) { invoke_macro(t); continue; }
+      if (v) process_identifier(t, v);
+    }
+    t.processed = true;
     return t;
+  }
+}
+
+void Interpreter::process_identifier(Token& t, const Value* v) {
+  const std::string name(t.text);
+  if (auto* d = symbols_.deprecation(name); d && !d->shown) {
+    if (d->once) d->shown = true;
+    warn(t.loc, d->message);
+  }
+  // POV-Ray resolves `A[i]…` where it reads the name (Read_Symbol): the token then stands for the element, so
+  // every place that takes an identifier of some type takes an element of that type.
+  while (const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
+    const Token after =
+        pushed_back_.empty() ? lex_token(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
+    if (!after.is("[")) return;
+    const std::shared_ptr<ArrayValue> keep = *array;   // the subscripts may run code that reassigns the name
+    Token last = t;
+    const std::size_t index = parse_subscripts(*keep, std::string(t.text), last);
+    const auto& element = keep->elements[index];
+    if (last.loc.file == t.loc.file && last.end.offset > t.begin.offset)
+      t.text = std::string_view(t.text.data(), last.end.offset - t.begin.offset);
+    if (!element)
+      fail_at(t, "the array element " + std::string(t.text) + " is read before any value was assigned to it");
+    t.element = std::make_shared<const TokenValue>(TokenValue{*element});
+    v = &t.element->value;
   }
 }
 
@@ -137,7 +174,7 @@ std::string Interpreter::describe(const Token& t) const {
     case TokenKind::string: return "the string " + std::string(t.text);
     case TokenKind::identifier:
       if (is_reserved_word(t.text)) return "the keyword '" + std::string(t.text) + "'";
-      if (const Value* v = symbols_.find(std::string(t.text)))
+      if (const Value* v = lookup(t))
         return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
       return "the undeclared identifier '" + std::string(t.text) + "'";
     case TokenKind::symbol: return "'" + std::string(t.text) + "'";
@@ -194,7 +231,7 @@ void Interpreter::invoke_macro(const Token& name) {
     // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
     // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
     // of that macro must not run, and drop its locals, before `first` is evaluated.
-    if (first.kind == TokenKind::identifier && !is_reserved_word(first.text)) {
+    if (first.kind == TokenKind::identifier && !first.element && !is_reserved_word(first.text)) {
       const Token after =
           pushed_back_.empty() ? lex_token(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
       auto level = symbols_.level_of(std::string(first.text));

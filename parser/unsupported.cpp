@@ -12,7 +12,8 @@ namespace {
 // Reserved words that are values inside argument expressions, not the start of the next item.
 bool is_value_word(std::string_view w) {
   static const std::string_view words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes", "no",
-                                           "on", "off", "version", "clock", "clock_on", "clock_delta", "tau"};
+                                           "on", "off", "version", "clock", "clock_on", "clock_delta", "tau",
+                                           "now"};
   for (auto v : words)
     if (w == v) return true;
   return false;

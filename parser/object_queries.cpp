@@ -1,0 +1,210 @@
+// Geometric queries the SDL evaluates at parse time on declared objects (povray-sdl-and-geometry.md §5, §8, §10):
+// inside(O, P), min_extent(O), max_extent(O). Parser-side only — no renderer code: the inside tests of the
+// shapes povtrace describes (sphere, box, plane, CSG) and POV-Ray's bounding boxes, which it stores in single
+// precision (BBOX_VAL is a float).
+//
+// Bounding boxes follow POV-Ray's rules: a sphere moved by translations, rotations and uniform scales keeps a
+// tight box around its moved centre; any other transform (and any transform of a box) takes the box of the 8
+// transformed corners of the object-space box; a plane's box is the huge ±1e10 box; a union's box encloses its
+// children's boxes and becomes the huge box when wider than 1e6. One approximation: POV-Ray transforms a union's
+// box itself when the union is transformed after it is built, povtrace recomputes it from the transformed
+// children — identical for translations and scales, tighter after rotations.
+#include <cmath>
+
+#include "parser/interpreter.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr double kInsideEpsilon = 1e-10;
+constexpr double kBoundHuge = 2.0e10;        // POV-Ray's BOUND_HUGE
+constexpr double kCriticalLength = 1.0e6;    // CRITICAL_LENGTH: wider CSG boxes become the huge box
+
+// POV-Ray's BBOX: lower-left corner and lengths, single precision.
+struct BBox {
+  std::array<float, 3> lower{}, lengths{};
+
+  static BBox make(Vec3 lower, Vec3 lengths) {
+    BBox b;
+    for (int i = 0; i < 3; ++i) {
+      b.lower[i] = static_cast<float>(lower[i]);
+      b.lengths[i] = static_cast<float>(lengths[i]);
+    }
+    return b;
+  }
+  static BBox from_min_max(Vec3 lo, Vec3 hi) { return make(lo, hi - lo); }
+  static BBox huge() {
+    return make({-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2}, {kBoundHuge, kBoundHuge, kBoundHuge});
+  }
+  Vec3 lo() const { return {lower[0], lower[1], lower[2]}; }
+  // As POV-Ray's Make_min_max_from_BBox on doubles: the lower corner plus the lengths.
+  Vec3 hi() const {
+    return {double(lower[0]) + lengths[0], double(lower[1]) + lengths[1], double(lower[2]) + lengths[2]};
+  }
+  // max_extent(): the float sum, as POV-Ray computes it.
+  Vec3 max_extent() const {
+    return {lower[0] + lengths[0], lower[1] + lengths[1], lower[2] + lengths[2]};
+  }
+
+  // Recompute_BBox: the box of the 8 transformed corners, clipped to ±BOUND_HUGE/2.
+  BBox transformed(const Matrix& m) const {
+    Vec3 lo_w{kBoundHuge, kBoundHuge, kBoundHuge}, hi_w{-kBoundHuge, -kBoundHuge, -kBoundHuge};
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 corner{double(lower[0]) + ((i & 1) ? double(lengths[0]) : 0.0),
+                        double(lower[1]) + ((i & 2) ? double(lengths[1]) : 0.0),
+                        double(lower[2]) + ((i & 4) ? double(lengths[2]) : 0.0)};
+      const Vec3 p = m.point(corner);
+      lo_w = min(lo_w, p);
+      hi_w = max(hi_w, p);
+    }
+    const Vec3 limit{kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
+    return from_min_max(max(lo_w, -limit), min(hi_w, limit));
+  }
+};
+
+bool is_identity(const Matrix& m) { return m == Matrix::identity(); }
+
+// A similarity: the linear part is a rotation times a uniform scale (orthogonal rows of one length). Returns the
+// scale factor, or 0 if the matrix is not one.
+double similarity_scale(const Matrix& m) {
+  const Vec3 r[3] = {{m.m[0][0], m.m[0][1], m.m[0][2]}, {m.m[1][0], m.m[1][1], m.m[1][2]},
+                     {m.m[2][0], m.m[2][1], m.m[2][2]}};
+  const double s = length(r[0]);
+  const double tol = 1e-12 * std::max(1.0, s * s);
+  if (s == 0) return 0;
+  for (int i = 0; i < 3; ++i) {
+    if (std::fabs(dot(r[i], r[i]) - s * s) > tol) return 0;
+    for (int j = i + 1; j < 3; ++j)
+      if (std::fabs(dot(r[i], r[j])) > tol) return 0;
+  }
+  return s;
+}
+
+// Features of an object that change what inside() or the bounding box would be, which povtrace does not model:
+// the first found is named. The harmless ones (appearance, flags) are ignored. (A parsed object records only its
+// first unsupported feature; a later clipped_by behind a harmless one goes unseen.)
+std::optional<std::string> unmodelled_geometry(const Object& o) {
+  if (o.unsupported) {
+    const std::string& n = o.unsupported->name;
+    static const char* const harmless[] = {
+        "'normal { }' perturbation", "the object modifier 'no_image'", "the object modifier 'no_reflection'",
+        "the object modifier 'no_radiosity'", "the object modifier 'double_illuminate'",
+        "the object modifier 'sturm'", "the object modifier 'interior_texture'", "the object modifier 'uv_mapping'",
+        "the object modifier 'photons'", "the object modifier 'radiosity'", "the object modifier 'split_union'",
+        "the object modifier 'cutaway_textures'", "the object modifier 'hierarchy'", "the material item",
+        "CSG '"};
+    bool ok = false;
+    for (const char* h : harmless) ok = ok || n.starts_with(h);
+    if (std::holds_alternative<Csg>(o.shape) && n.starts_with("'inverse' of a CSG")) ok = true;
+    if (!ok) return n;
+  }
+  if (const auto* csg = std::get_if<Csg>(&o.shape))
+    for (const auto& c : csg->children)
+      if (auto u = unmodelled_geometry(c)) return u;
+  return std::nullopt;
+}
+
+bool inside(const Object& o, Vec3 p, bool invert) {
+  invert = invert != o.inverse;
+  struct Test {
+    const Object& o;
+    Vec3 p;
+    bool invert;
+    bool operator()(const Sphere& s) const {
+      const Vec3 q = o.world_from_object.inverse().point(p) - s.centre;
+      const double d2 = dot(q, q), r2 = s.radius * s.radius;
+      return invert ? d2 > r2 : d2 < r2;   // the surface is inside neither way
+    }
+    bool operator()(const Box& b) const {
+      const Vec3 q = o.world_from_object.inverse().point(p);
+      const bool in = q.x >= b.corner1.x && q.x <= b.corner2.x && q.y >= b.corner1.y && q.y <= b.corner2.y &&
+                      q.z >= b.corner1.z && q.z <= b.corner2.z;
+      return in != invert;
+    }
+    bool operator()(const Plane& pl) const {
+      // In world space with the unit normal, as POV-Ray keeps a transformed plane.
+      const Matrix inv = o.world_from_object.inverse();
+      const Vec3 n = inv.normal_from_inverse(pl.normal);
+      const Vec3 on = o.world_from_object.point(pl.normal * pl.distance);
+      const double value = dot(n, p - on) / length(n);
+      return invert ? value > -kInsideEpsilon : value < kInsideEpsilon;
+    }
+    bool operator()(const Csg& c) const {
+      // Difference = intersection with the later children inverted; an inverted CSG swaps any and all (§10).
+      const bool all = (c.kind == CsgKind::intersection || c.kind == CsgKind::difference) != invert;
+      for (std::size_t i = 0; i < c.children.size(); ++i) {
+        const bool child_inverted = (c.kind == CsgKind::difference && i > 0) != invert;
+        const bool in = inside(c.children[i], p, child_inverted);
+        if (all && !in) return false;
+        if (!all && in) return true;
+      }
+      return all;
+    }
+  };
+  return std::visit(Test{o, p, invert}, o.shape);
+}
+
+BBox bounding_box(const Object& o) {
+  struct Box_ {
+    const Object& o;
+    BBox operator()(const Sphere& s) const {
+      const Matrix& m = o.world_from_object;
+      if (const double k = similarity_scale(m); k > 0) {
+        const Vec3 c = m.point(s.centre);
+        const double r = s.radius * k;
+        return BBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r});
+      }
+      const BBox local = BBox::make(s.centre - Vec3{s.radius, s.radius, s.radius},
+                                    {2 * s.radius, 2 * s.radius, 2 * s.radius});
+      return local.transformed(m);
+    }
+    BBox operator()(const Box& b) const {
+      const BBox local = BBox::make(b.corner1, b.corner2 - b.corner1);
+      return is_identity(o.world_from_object) ? local : local.transformed(o.world_from_object);
+    }
+    BBox operator()(const Plane&) const { return BBox::huge(); }
+    BBox operator()(const Csg& c) const {
+      Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
+      for (const auto& child : c.children) {
+        const BBox b = bounding_box(child);
+        lo = min(lo, b.lo());
+        hi = max(hi, b.hi());
+      }
+      if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return BBox::huge();   // no children: the initial box
+      BBox u = BBox::from_min_max(lo, hi);
+      for (int i = 0; i < 3; ++i)
+        if (u.lengths[i] > kCriticalLength) return BBox::huge();
+      return u;
+    }
+  };
+  return std::visit(Box_{o}, o.shape);
+}
+}  // namespace
+
+// inside(O, P) → 1 or 0; min_extent(O), max_extent(O) → the corners of O's bounding box. O must be an object
+// identifier (§5).
+Numeric Interpreter::parse_object_query(const Token& name) {
+  const std::string n(name.text);
+  expect("(", " after '" + n + "'");
+  Token id = next();
+  const Value* v = lookup(id);
+  const auto* item = v ? std::get_if<std::shared_ptr<const SceneItem>>(v) : nullptr;
+  if (!item || !std::holds_alternative<Object>(**item))
+    fail_expected(id, "an object identifier in " + n + "()");
+  const Object& object = std::get<Object>(**item);
+  if (auto u = unmodelled_geometry(object)) fail_unsupported(id, n + "() of " + *u);
+  if (n == "inside") {
+    accept(",");
+    const Vec3 p = parse_vector();
+    expect(")", " closing inside()");
+    return Numeric::scalar(inside(object, p, false) ? 1.0 : 0.0);
+  }
+  expect(")", " closing " + n + "()");
+  if (const auto* csg = std::get_if<Csg>(&object.shape); csg && csg->kind != CsgKind::union_ &&
+                                                          csg->kind != CsgKind::merge)
+    fail_unsupported(id, n + "() of a CSG " + csg_name(csg->kind));
+  const BBox box = bounding_box(object);
+  return Numeric::vector(n == "min_extent" ? box.lo() : box.max_extent());
+}
+
+}  // namespace povtrace::sdl
