@@ -141,7 +141,13 @@ void Interpreter::directive_declare_element(const Token& name, bool local) {
   auto value = try_parse_rvalue(first);
   if (!value) fail_expected(first, "a value for an element of " + shown);
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
-  store_element(*ref->array, ref->index, std::move(*value), first, shown);
+  // POV-Ray stores `#local A[i] = …` of an array that is not in the innermost table (a global array, from inside
+  // a macro or an include file) in a new local entry nothing can read: the array stays unchanged.
+  if (local && symbols_.level_of(shown) != symbols_.depth() - 1)
+    warn(name.loc, "#local of an element of '" + shown + "', an array declared outside this macro or file, has "
+                   "no effect (as in POV-Ray); #declare assigns it");
+  else
+    store_element(*ref->array, ref->index, std::move(*value), first, shown);
   Token semi = peek_raw();
   if (semi.is(";")) next();
   else if (needs_semicolon) fail_expected(semi, "';' after the value of " + shown + "[…]");

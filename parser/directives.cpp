@@ -70,10 +70,18 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   std::optional<SymbolTable::Deprecation> deprecation;
   if (name_token.is("deprecated")) {
     deprecation.emplace();
-    Token t = next();
-    if (t.is("once")) deprecation->once = true; else unget(t);
-    deprecation->message = parse_string();
-    name_token = raw();
+    if (peek_raw().is("once")) {
+      next();
+      deprecation->once = true;
+    }
+    if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
+    // The name is read raw (it is being declared): take it back from the look-ahead.
+    if (!pushed_back_.empty()) {
+      name_token = pushed_back_.back();
+      pushed_back_.pop_back();
+    } else {
+      name_token = raw();
+    }
   }
   if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
   if (is_reserved_word(name_token.text))

@@ -69,7 +69,7 @@ double signed_number(UserFile& f, Token t) {
   return sign * t.number;
 }
 
-// One data item, then the comma after it (POV-Ray's Parse_Comma). `at_end` is set when the file ends — also right
+// One data item, then the token after it (POV-Ray's Parse_Comma). `at_end` is set when the file ends — also right
 // after a last item that has no comma behind it, which is why a loop reading one item at a time runs once per
 // item.
 std::optional<Value> read_item(UserFile& f, bool& at_end) {
@@ -99,9 +99,9 @@ std::optional<Value> read_item(UserFile& f, bool& at_end) {
   } else {
     fail_in_data(f, t, "expected a float, a vector or a string literal in the data file \"" + f.name + "\"");
   }
-  const Token after = lex_token(f.data, f.pos);
-  if (after.is(",")) f.pos = after.end;
-  else if (after.kind == TokenKind::end_of_input) at_end = true;
+  // POV-Ray reads the token after an item looking for a comma and drops it whatever it is: items must be
+  // separated by commas, anything else there is lost.
+  if (lex_data(f).kind == TokenKind::end_of_input) at_end = true;
   return item;
 }
 }  // namespace
