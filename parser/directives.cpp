@@ -31,7 +31,7 @@ void Interpreter::directive(const Token& hash) {
   if (w == "declare") return directive_declare(word, false);
   if (w == "local") return directive_declare(word, true);
   if (w == "undef") return directive_undef();
-  if (w == "include") return directive_include(word);
+  if (w == "include") return directive_include(hash);   // the chain of an error names the #include
   if (w == "if") return directive_if(word, 0);
   if (w == "ifdef") return directive_if(word, 1);
   if (w == "ifndef") return directive_if(word, 2);

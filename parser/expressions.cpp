@@ -344,6 +344,7 @@ std::string format_str(double value, int width, int precision) {
 
 std::string Interpreter::parse_string() {
   Token t = next();
+  const NestingGuard guard(*this, t);   // concat(concat(…)), strupr(strlwr(…)) nest without an expression level
   if (t.kind == TokenKind::string) return string_value(t, file_of(t.loc), true);
   if (const Value* v = lookup(t)) {
     if (std::holds_alternative<std::string>(*v)) return std::get<std::string>(*v);

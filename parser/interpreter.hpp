@@ -37,6 +37,8 @@ class Interpreter {
     const SourceFile* file = nullptr;
     LexPosition pos;
     enum class Kind { main, include, macro } kind = Kind::main;
+    SourceLoc origin;                // the #include or the macro call that opened this frame (error chains)
+    std::string_view macro_name;     // points into the calling file's text, which lives as long as the parse
   };
   struct Control {
     enum class Kind { if_branch, while_loop, for_loop, macro_call, switch_block } kind = Kind::if_branch;
@@ -62,6 +64,9 @@ class Interpreter {
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
+  // How the current position was reached, innermost first ("  in macro M called from f:l:c", "  included from
+  // f:l:c"), one line each, for diagnostics; empty in the main file.
+  std::string reached_from() const;
   std::string describe(const Token& t) const;
   const SourceFile& file_of(const SourceLoc& loc) const;
   bool is_macro_call(const Token& t) const;

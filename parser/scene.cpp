@@ -11,7 +11,7 @@ Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
 }
 
 SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
-  frames_.push_back(Frame{main_file.get(), LexPosition{}, Frame::Kind::main});
+  frames_.push_back(Frame{main_file.get(), LexPosition{}, Frame::Kind::main, {}, {}});
   files_.push_back(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
@@ -20,10 +20,17 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
   for (const auto& [name, value] : predeclared) symbols_.declare(name, Numeric::scalar(value));
   for (const auto& [name, value] : options_.declares) symbols_.declare(name, Numeric::scalar(value));
 
-  while (true) {
-    Token t = next();
-    if (t.kind == TokenKind::end_of_input) break;
-    parse_statement(t);
+  try {
+    while (true) {
+      Token t = next();
+      if (t.kind == TokenKind::end_of_input) break;
+      parse_statement(t);
+    }
+  } catch (const ParseError& e) {
+    // Errors from below the interpreter (the lexer: an unterminated string in an include file) get the chain of
+    // includes and macro calls that fail() gives the others; the frame stack is still as it was at the throw.
+    if (!e.context().empty() || frames_.size() < 2) throw;
+    throw ParseError(e, reached_from());
   }
   if (!controls_.empty()) {
     const Control& open = controls_.back();

@@ -34,8 +34,18 @@ std::string format_diagnostic(const SourceLoc& loc, std::string_view severity, s
   return out;
 }
 
-ParseError::ParseError(const SourceLoc& loc, const std::string& message, std::string line_text)
-    : std::runtime_error(format_diagnostic(loc, "error", message, line_text)), loc_(loc), message_(message) {}
+ParseError::ParseError(const SourceLoc& loc, const std::string& message, std::string line_text,
+                       const std::string& context)
+    : std::runtime_error(format_diagnostic(loc, "error", message, line_text) + (context.empty() ? "" : "\n") + context),
+      loc_(loc),
+      message_(message),
+      context_(context) {}
+
+ParseError::ParseError(const ParseError& inner, const std::string& context)
+    : std::runtime_error(std::string(inner.what()) + (context.empty() ? "" : "\n") + context),
+      loc_(inner.loc_),
+      message_(inner.message_),
+      context_(inner.context_.empty() ? context : inner.context_ + "\n" + context) {}
 
 std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

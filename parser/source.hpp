@@ -23,16 +23,23 @@ struct SourceFile {
   std::string_view line_text(int line) const;
 };
 
-// The one exception type of the front end: a located error with a fully formatted message.
+// The one exception type of the front end: a located error with a fully formatted message. `context` is how the
+// error was reached ("  in macro M called from f.pov:3:1", "  included from f.pov:1:1", innermost first, one per
+// line); what() shows it after the caret block.
 class ParseError : public std::runtime_error {
  public:
-  ParseError(const SourceLoc& loc, const std::string& message, std::string line_text = {});
+  ParseError(const SourceLoc& loc, const std::string& message, std::string line_text = {},
+             const std::string& context = {});
+  // `inner` with `context` appended (for errors raised below the interpreter, e.g. by the lexer).
+  ParseError(const ParseError& inner, const std::string& context);
   const SourceLoc& location() const { return loc_; }
   const std::string& bare_message() const { return message_; }
+  const std::string& context() const { return context_; }
 
  private:
   SourceLoc loc_;
   std::string message_;
+  std::string context_;
 };
 
 // "file:line:col: error: message\n<line>\n    ^" (the caret line is omitted when the line is unknown).

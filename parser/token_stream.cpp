@@ -1,7 +1,10 @@
 // The token stream: a stack of source frames (main file, include files, macro bodies). Directives and macro
 // calls are executed here, inside the token fetcher, so they may stand between any two tokens
 // (povray-sdl-and-geometry.md §1, items 2 and 5).
+#include <algorithm>
 #include <iostream>
+
+#include <pthread.h>
 
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
@@ -33,11 +36,45 @@ Token Interpreter::raw() {
   }
 }
 
+namespace {
+// The lowest address of the calling thread's stack (null where it cannot be known). Found once per thread:
+// for the main thread glibc reads /proc/self/maps.
+const char* stack_lowest_address() {
+#if defined(__GLIBC__)
+  thread_local const char* lowest = [] {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return static_cast<const char*>(nullptr);
+    void* address = nullptr;
+    std::size_t size = 0;
+    const bool ok = pthread_attr_getstack(&attr, &address, &size) == 0;
+    pthread_attr_destroy(&attr);
+    return ok ? static_cast<const char*>(address) : nullptr;
+  }();
+  return lowest;
+#else
+  return nullptr;
+#endif
+}
+
+// Stack kept free below the deepest nesting level: what runs between two levels, the error message and the
+// unwinding of the exception.
+constexpr std::ptrdiff_t kStackReserve = 256 * 1024;
+}  // namespace
+
+// The level count makes the limit the same everywhere; the stack check is the safety net for builds with much
+// larger frames (sanitizers, -O0) and for threads with small stacks, where 500 levels may not fit.
 Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(in) {
-  if (++in_.nesting_ > kMaxNesting) {
+  ++in_.nesting_;
+  const char* lowest = stack_lowest_address();
+  const char* here = static_cast<const char*>(__builtin_frame_address(0));
+  const bool stack_full = lowest && here - lowest < kStackReserve;
+  if (in_.nesting_ > kMaxNesting || stack_full) {
+    const int levels = in_.nesting_;
     --in_.nesting_;   // the destructor does not run when the constructor throws
-    in_.fail_at(at, "expressions or blocks nested too deeply (more than " + std::to_string(kMaxNesting) +
-                        " levels)");
+    in_.fail_at(at, "expressions or blocks nested too deeply (" +
+                        (stack_full ? "the stack is full at " + std::to_string(levels) + " levels"
+                                    : "more than " + std::to_string(kMaxNesting) + " levels") +
+                        ")");
   }
 }
 
@@ -65,10 +102,20 @@ Token Interpreter::next() {
       t = raw();
     }
     if (t.processed) return t;
-    if (t.is("#")) { directive(t); continue; }
+    // A directive or macro call reads its operands with next(), which may run another directive or call before
+    // the first one returns (`#declare A = #declare B = …`, `M(M(M(…)))`): they nest like expressions.
+    if (t.is("#")) {
+      const NestingGuard guard(*this, t);
+      directive(t);
+      continue;
+    }
     if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
       const Value* v = symbols_.find(std::string(t.text));
-      if (v && std::holds_alternative<MacroDefinition>(*v)) { invoke_macro(t); continue; }
+      if (v && std::holds_alternative<MacroDefinition>(*v)) {
+        const NestingGuard guard(*this, t);
+        invoke_macro(t);
+        continue;
+      }
       if (v) process_identifier(t, v);
     }
     t.processed = true;
@@ -77,11 +124,11 @@ Token Interpreter::next() {
 }
 
 void Interpreter::process_identifier(Token& t, const Value* v) {
-  const std::string name(t.text);
-  if (auto* d = symbols_.deprecation(name); d && !d->shown) {
-    if (d->once) d->shown = true;
-    warn(t.loc, d->message);
-  }
+  if (symbols_.any_deprecated())
+    if (auto* d = symbols_.deprecation(std::string(t.text)); d && !d->shown) {
+      if (d->once) d->shown = true;
+      warn(t.loc, d->message);
+    }
   // POV-Ray resolves `A[i]…` where it reads the name (Read_Symbol): the token then stands for the element, so
   // every place that takes an identifier of some type takes an element of that type.
   while (const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
@@ -162,7 +209,28 @@ const SourceFile& Interpreter::file_of(const SourceLoc& loc) const {
 }
 
 void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
-  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)));
+  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
+}
+
+std::string Interpreter::reached_from() const {
+  // Runaway recursion can stack hundreds of frames: the innermost and outermost levels say enough.
+  constexpr std::size_t kInner = 10, kOuter = 5;
+  const std::size_t levels = frames_.empty() ? 0 : frames_.size() - 1;
+  std::string out;
+  for (std::size_t k = 0; k < levels; ++k) {
+    if (levels > kInner + kOuter + 1 && k == kInner) {
+      out += "\n  ... " + std::to_string(levels - kInner - kOuter) + " more levels ...";
+      k = levels - kOuter - 1;
+      continue;
+    }
+    const Frame& f = frames_[frames_.size() - 1 - k];
+    if (!out.empty()) out += '\n';
+    if (f.kind == Frame::Kind::macro)
+      out += "  in macro " + std::string(f.macro_name) + " called from " + f.origin.to_string();
+    else
+      out += "  included from " + f.origin.to_string();
+  }
+  return out;
 }
 
 void Interpreter::fail_at(const Token& t, const std::string& message) const { fail(t.loc, message); }
@@ -192,6 +260,7 @@ void Interpreter::fail_unsupported(const Token& t, std::string_view what) const 
 
 void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
   std::string text = format_diagnostic(loc, "warning", message, file_of(loc).line_text(loc.line));
+  if (const std::string chain = reached_from(); !chain.empty()) text += "\n" + chain;
   if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
 }
 
@@ -202,8 +271,11 @@ void Interpreter::seek(std::size_t frame, LexPosition pos) {
 }
 
 void Interpreter::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
-  if (frames_.size() >= kMaxIncludeDepth)
-    fail_at(at, "too many nested #include files (at most 32; does a file include itself?)");
+  const auto includes = std::count_if(frames_.begin(), frames_.end(),
+                                      [](const Frame& f) { return f.kind == Frame::Kind::include; });
+  if (static_cast<std::size_t>(includes) >= kMaxIncludeDepth)
+    fail_at(at, "too many nested #include files (at most " + std::to_string(kMaxIncludeDepth) +
+                    "; does a file include itself?)");
   auto file = std::make_unique<SourceFile>();
   file->path = path;
   file->name = std::make_shared<const std::string>(path.string());
@@ -212,7 +284,7 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
   } catch (const std::exception& e) {
     fail_at(at, e.what());
   }
-  frames_.push_back(Frame{file.get(), LexPosition{}, kind});
+  frames_.push_back(Frame{file.get(), LexPosition{}, kind, at.loc, {}});
   files_.push_back(std::move(file));
   symbols_.push_scope();
 }
@@ -221,8 +293,11 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
 // its #end, which returns to just after the call's ')' (§1 item 4, §4 #macro).
 void Interpreter::invoke_macro(const Token& name) {
   const MacroDefinition macro = std::get<MacroDefinition>(*symbols_.find(std::string(name.text)));
-  if (controls_.size() > kMaxMacroDepth)
-    fail_at(name, "macro calls nested too deeply (runaway recursion in '" + std::string(name.text) + "'?)");
+  const auto calls = std::count_if(frames_.begin(), frames_.end(),
+                                   [](const Frame& f) { return f.kind == Frame::Kind::macro; });
+  if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
+    fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
+                      " levels: runaway recursion in '" + std::string(name.text) + "'?)");
   expect("(", " after the macro name '" + std::string(name.text) + "'");
   std::vector<std::pair<std::string, Value>> bound;
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
@@ -250,7 +325,7 @@ void Interpreter::invoke_macro(const Token& name) {
                              std::to_string(macro.parameters.size()) + " parameters)");
   symbols_.push_scope();
   for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
-  frames_.push_back(Frame{macro.file, macro.body, Frame::Kind::macro});
+  frames_.push_back(Frame{macro.file, macro.body, Frame::Kind::macro, name.loc, name.text});
   Control c;
   c.kind = Control::Kind::macro_call;
   c.frame = frames_.size() - 1;

@@ -42,7 +42,8 @@ TEST_P(Errors, LocationCaretAndMessage) {
   }
   const std::string expected = "test.pov:" + std::to_string(c.line) + ":" + std::to_string(c.column) +
                                ": error: " + e.bare_message() + "\n" + line_text + "\n" +
-                               std::string(static_cast<std::size_t>(std::max(0, c.column - 1)), ' ') + "^";
+                               std::string(static_cast<std::size_t>(std::max(0, c.column - 1)), ' ') + "^" +
+                               (e.context().empty() ? "" : "\n" + e.context());
   EXPECT_EQ(std::string(e.what()), expected);
 }
 
@@ -171,7 +172,7 @@ TEST(IncludeErrors, ErrorInAnIncludeNamesThatFile) {
   EXPECT_EQ(e.location().line, 2);
   EXPECT_EQ(e.location().column, 15);
   EXPECT_EQ(std::string(e.what()), inc.string() + ":2:15: error: " + e.bare_message() +
-                                       "\n  sphere { 0, Nope }\n              ^");
+                                       "\n  sphere { 0, Nope }\n              ^\n  included from test.pov:2:1");
 }
 
 TEST(IncludeErrors, IfOpenedInAnIncludeMustCloseThere) {
@@ -192,6 +193,97 @@ TEST(IncludeErrors, MissingSceneFile) {
   } catch (const ParseError& e) {
     EXPECT_NE(e.bare_message().find("absent.pov"), std::string::npos) << e.what();
   }
+}
+
+// ---- Error chains: how an error inside an include file or a macro body was reached ------------------------------
+// After the caret block, one line per level, innermost first (issue 3 item 8).
+TEST(ErrorChains, ErrorInAMacroNamesTheCall) {
+  const ParseError e = parse_error("#version 3.7;\n#macro Foo()\n  sphere { 0, Q }\n#end\n  Foo()\n");
+  EXPECT_EQ(std::string(e.what()), "test.pov:3:15: error: " + e.bare_message() +
+                                       "\n  sphere { 0, Q }\n              ^\n  in macro Foo called from test.pov:5:3");
+  EXPECT_EQ(e.context(), "  in macro Foo called from test.pov:5:3");
+}
+
+TEST(ErrorChains, MacroCalledFromAMacroInAnInclude) {
+  ScratchFolder lib;
+  const auto inc = lib.write("ptest_chain.inc",
+                             "#macro Inner(A)\n"
+                             "  sphere { 0, A + Nope }\n"
+                             "#end\n"
+                             "#macro Outer(B)\n"
+                             "  union { Inner(B) sphere { 0, 1 } }\n"
+                             "#end\n"
+                             "Outer(2)\n");
+  ParseOptions o;
+  o.library_paths = {lib.path()};
+  const ParseError e = parse_error("#version 3.7;\n#include \"ptest_chain.inc\"\n", o);
+  EXPECT_EQ(std::string(e.what()), inc.string() + ":2:19: error: undeclared identifier 'Nope'\n"
+                                                  "  sphere { 0, A + Nope }\n"
+                                                  "                  ^\n"
+                                                  "  in macro Inner called from " + inc.string() + ":5:11\n"
+                                                  "  in macro Outer called from " + inc.string() + ":7:1\n"
+                                                  "  included from test.pov:2:1");
+}
+
+TEST(ErrorChains, MacrosFromAnIncludeCalledInTheScene) {
+  // The include file is finished when the macro runs: the chain is the calls, not the #include.
+  ScratchFolder lib;
+  const auto inc = lib.write("ptest_chain2.inc", "#macro Inner(A) #error concat(\"bad \", str(A, 0, 0)) #end\n"
+                                                 "#macro Outer(B) Inner(B + 1) #end\n");
+  ParseOptions o;
+  o.library_paths = {lib.path()};
+  const ParseError e = parse_error("#version 3.7;\n#include \"ptest_chain2.inc\"\n#declare X = 1;\nOuter(X)\n", o);
+  EXPECT_EQ(e.bare_message(), "#error: bad 2");
+  EXPECT_EQ(e.context(), "  in macro Inner called from " + inc.string() + ":2:17\n"
+                         "  in macro Outer called from test.pov:4:1");
+}
+
+TEST(ErrorChains, NestedIncludes) {
+  ScratchFolder lib;
+  const auto outer = lib.write("ptest_outer.inc", "#declare A = 1;\n  #include \"ptest_inner.inc\"\n");
+  const auto inner = lib.write("ptest_inner.inc", "#error \"stop\"\n");
+  ParseOptions o;
+  o.library_paths = {lib.path()};
+  const ParseError e = parse_error("#version 3.7;\n\n#include \"ptest_outer.inc\"\n", o);
+  EXPECT_EQ(std::string(e.what()), inner.string() + ":1:2: error: #error: stop\n#error \"stop\"\n ^\n"
+                                   "  included from " + outer.string() + ":2:3\n"
+                                   "  included from test.pov:3:1");
+}
+
+TEST(ErrorChains, LexerErrorsInAnIncludeHaveTheChainToo) {
+  ScratchFolder lib;
+  const auto inc = lib.write("ptest_lex.inc", "#declare A = 1;\n#declare S = \"open\n");
+  ParseOptions o;
+  o.library_paths = {lib.path()};
+  const ParseError e = parse_error("#version 3.7;\n#include \"ptest_lex.inc\"\n", o);
+  EXPECT_EQ(e.location().file_name(), inc.string());
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_EQ(e.context(), "  included from test.pov:2:1");
+  EXPECT_TRUE(std::string(e.what()).ends_with("^\n  included from test.pov:2:1")) << e.what();
+}
+
+TEST(ErrorChains, WarningsInAMacroNameTheCall) {
+  Messages m;
+  parse("#version 3.7;\n#macro Half(A) (A / 0) #end\n#declare H = Half(1);\n", &m);
+  ASSERT_EQ(m.items.size(), 1u);
+  EXPECT_EQ(m.items[0], "test.pov:2:19: warning: division by zero\n#macro Half(A) (A / 0) #end\n                  ^\n"
+                        "  in macro Half called from test.pov:3:14");
+}
+
+TEST(ErrorChains, RunawayRecursionShowsTheInnermostAndOutermostCalls) {
+  const ParseError e = parse_error("#version 3.7;\n#macro R(N) R(N+1) #end\nR(0)\n");
+  const std::string& c = e.context();
+  std::vector<std::string> lines;
+  for (std::size_t b = 0; b <= c.size();) {
+    std::size_t end = c.find('\n', b);
+    if (end == std::string::npos) end = c.size();
+    lines.push_back(c.substr(b, end - b));
+    b = end + 1;
+  }
+  ASSERT_EQ(lines.size(), 16u) << c;
+  EXPECT_EQ(lines[0], "  in macro R called from test.pov:2:13");
+  EXPECT_EQ(lines[10], "  ... 241 more levels ...");
+  EXPECT_EQ(lines[15], "  in macro R called from test.pov:3:1");
 }
 
 // ---- Runaway recursion, garbage, long lines -------------------------------------------------------------------
@@ -316,8 +408,66 @@ INSTANTIATE_TEST_SUITE_P(
                       NestingCase{"FunctionCalls", "abs(", "1", ")", "#declare A = ", ";"},
                       NestingCase{"VectorComponents", "<", "1,2", ">.x,0", "#declare A = <", ">;"},
                       NestingCase{"ObjectBlocks", "object { ", "S", " }", "", ""},
-                      NestingCase{"TransformBlocks", "transform { ", "", " }", "sphere { 0, 1 ", " }"}),
+                      NestingCase{"TransformBlocks", "transform { ", "", " }", "sphere { 0, 1 ", " }"},
+                      NestingCase{"Unions", "union { ", "object { S }", " }", "", ""},
+                      NestingCase{"StringFunctions", "concat(\"x\", ", "strupr(\"a\")", ")", "#declare A = ", ";"},
+                      NestingCase{"MacroArguments", "M(", "1", ")", "#macro M(P) P #end #declare A = ", ";"}),
     [](const auto& p) { return p.param.name; });
+
+// Issue 3 item 7: input far deeper than any scene — a result or an error, never a stack overflow.
+TEST(Limits, TwoHundredThousandParentheses) {
+  const ParseError e = parse_error("#version 3.7;\n#declare A = " + repeat("(", 200000) + "1" + repeat(")", 200000) +
+                                   ";\n");
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_NE(e.bare_message().find("nested too deeply"), std::string::npos) << e.bare_message();
+}
+
+TEST(Limits, HundredThousandNestedUnions) {
+  const ParseError e = parse_error("#version 3.7;\n" + repeat("union { ", 100000) + "sphere { 0, 1 }" +
+                                   repeat(" }", 100000) + "\n");
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_NE(e.bare_message().find("nested too deeply"), std::string::npos) << e.bare_message();
+}
+
+// Directives read their operands through the token stream, which runs the directives it meets: they nest too.
+TEST(Limits, DirectivesInsideDirectives) {
+  std::string declares;
+  for (int i = 0; i < 100000; ++i) declares += "#declare A" + std::to_string(i) + " = ";
+  for (const std::string& text : {"#version 3.7;\n" + declares + "1;\n", "#version 3.7;\n" + repeat("#if (", 100000) + "1)\n",
+                                  "#version 3.7;\n" + repeat("#debug ", 100000) + "\"x\"\n"}) {
+    const ParseError e = parse_error(text);
+    EXPECT_EQ(e.location().line, 2);
+    EXPECT_NE(e.bare_message().find("nested too deeply"), std::string::npos) << e.bare_message();
+  }
+}
+
+TEST(Limits, IncludeDepth) {
+  // a0.inc includes a1.inc … : 32 nested files are fine, the 33rd is refused at its #include.
+  ScratchFolder lib;
+  for (int i = 0; i < 40; ++i)
+    lib.write("ptest_n" + std::to_string(i) + ".inc",
+              i == 39 ? "#declare Deepest = 1;\n" : "#include \"ptest_n" + std::to_string(i + 1) + ".inc\"\n");
+  ParseOptions o;
+  o.library_paths = {lib.path()};
+  const ParseError e = parse_error("#version 3.7;\n#include \"ptest_n0.inc\"\n", o);
+  EXPECT_EQ(e.bare_message(), "too many nested #include files (at most 32; does a file include itself?)");
+  EXPECT_EQ(e.location().file_name(), (lib.path() / "ptest_n31.inc").string());
+  EXPECT_EQ(e.location().line, 1);
+  EXPECT_EQ(e.location().column, 1);
+  Messages m;
+  ParseOptions ok = options_into(m);
+  ok.library_paths = {lib.path()};
+  lib.write("ptest_n32.inc", "#debug \"deep enough\"\n");
+  EXPECT_NO_THROW(parse_scene_text("#version 3.7;\n#include \"ptest_n1.inc\"\n", "test.pov", ok));
+  EXPECT_EQ(m.joined(), "deep enough");
+}
+
+TEST(Limits, MacroCallsInsideIfsAndLoopsDoNotCountAsNesting) {
+  // The macro-depth limit counts macro calls only: deep recursion that stays under it works inside #if/#while.
+  const std::string text = "#version 3.7;\n#macro Count(N) #if (N > 0) #local I = 0; #while (I < 1) "
+                           "#local I = I + 1; Count(N - 1) #end #else #debug \"bottom\" #end #end\nCount(200)\n";
+  EXPECT_EQ(debug_output(text), "bottom");
+}
 
 TEST(Robustness, DeeplyNestedCommentsAreFine) {
   const std::string text = "#version 3.7;\n" + repeat("/* ", 100000) + repeat("*/ ", 100000) + "sphere { 0, 1 }\n";
