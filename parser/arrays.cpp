@@ -12,7 +12,9 @@ namespace povtrace::sdl {
 namespace {
 constexpr double kSubscriptEpsilon = 1e-10;   // POV-Ray truncates (int)(value + 1e-10)
 constexpr std::size_t kMaxDimensions = 5;
-constexpr double kMaxElements = 1 << 28;       // far beyond any real scene; refuses absurd sizes cleanly
+// Every element slot holds a whole Value (a few hundred bytes): beyond this many elements (about 1.5 GB) an
+// array is refused cleanly instead of exhausting memory. The sample scenes' largest arrays hold ~10^4 elements.
+constexpr double kMaxElements = 1 << 22;
 
 std::string number_text(double v) {
   char buf[64];
@@ -37,7 +39,9 @@ Value Interpreter::parse_array_declaration(const Token& keyword) {
     const double n = std::trunc(size + kSubscriptEpsilon);
     if (!(n >= 1)) fail_at(at, "an array dimension must be at least 1, found " + number_text(size));
     total *= n;
-    if (total > kMaxElements) fail_at(at, "this array would have more than 2^28 elements");
+    if (total > kMaxElements)
+      fail_at(at, "this array would have more than " + std::to_string(static_cast<long>(kMaxElements)) +
+                      " elements, povtrace's limit");
     a->sizes.push_back(static_cast<std::size_t>(n));
   }
   if (a->sizes.empty()) fail_expected(peek(), "'[' and a dimension size after 'array'");

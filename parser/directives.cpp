@@ -115,6 +115,12 @@ void Interpreter::directive_declare(const Token& at, bool local) {
 void Interpreter::directive_undef() {
   Token name = raw();
   if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier after #undef");
+  // #undef A[i] makes the element unassigned again.
+  if (lex_token(*frames_.back().file, frames_.back().pos).is("["))
+    if (auto ref = parse_element_reference(name)) {
+      ref->array->elements[ref->index].reset();
+      return;
+    }
   if (!symbols_.undefine(std::string(name.text)))
     warn(name.loc, "#undef of '" + std::string(name.text) + "', which is not declared");
 }

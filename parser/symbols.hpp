@@ -44,6 +44,7 @@ class SymbolTable {
   void deprecate(const std::string& name, Deprecation d);
   // The deprecation of the entry visible under `name`, if any (cheap while nothing was ever deprecated).
   Deprecation* deprecation(const std::string& name);
+  bool any_deprecated() const { return any_deprecated_; }
 
  private:
   Value* resolve_alias(Value* v);

@@ -144,6 +144,13 @@ TEST(Arrays, DefinedOfElements) {
             "1010");
 }
 
+TEST(Arrays, UndefOfAnElementUnassignsIt) {
+  // povray: 01.
+  EXPECT_EQ(out("#declare A = array[2]{1,2};\n#undef A[1]\n#debug concat(str(defined(A[1]),0,0), "
+                "str(defined(A[0]),0,0))\n"),
+            "01");
+}
+
 TEST(Arrays, DeclareWithoutSemicolonThenAssign) {
   // The element assignment on the next line runs after the array is stored (povray: E1=5).
   EXPECT_EQ(out("#declare E = array[2]\n#declare E[1] = 5;\n#debug str(E[1],0,0)\n"), "5");
