@@ -92,7 +92,8 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   if (!pushed_back_.empty() ? pushed_back_.back().is("[")
                             : lex_token(*frames_.back().file, frames_.back().pos).is("[")) {
     const Value* v = symbols_.find(name);
-    if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) return directive_declare_element(name_token, local);
+    if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v))
+      return directive_declare_element(name_token, local);
   }
   Token eq = next();
   if (!eq.is("=")) fail_expected(eq, "'=' after #declare " + name);
