@@ -1,6 +1,7 @@
 // Language directives (povray-sdl-and-geometry.md §4). Conditionals and loops keep a control stack; loops and
 // macros replay source by seeking the frame back to a remembered position (§1 item 4).
 #include <cmath>
+#include <functional>
 #include <iostream>
 
 #include "parser/interpreter.hpp"
@@ -10,6 +11,17 @@ namespace povtrace::sdl {
 
 namespace {
 constexpr double kConditionEpsilon = 1e-10;   // #if is true iff |F| > 1e-10 (§4)
+
+// POV-Ray warns about a deprecated identifier wherever it reads the name — also as the target of #declare,
+// #local and #undef — but not in #ifdef or defined().
+void warn_if_deprecated(SymbolTable& symbols, const Token& name,
+                        const std::function<void(const SourceLoc&, const std::string&)>& warn) {
+  if (!symbols.any_deprecated() || name.kind != TokenKind::identifier) return;
+  if (auto* d = symbols.deprecation(std::string(name.text)); d && !d->shown) {
+    if (d->once) d->shown = true;
+    warn(name.loc, d->message);
+  }
+}
 
 bool opens_block(std::string_view word) {
   return word == "if" || word == "ifdef" || word == "ifndef" || word == "while" || word == "for" ||
@@ -89,6 +101,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   const std::string name(name_token.text);
   if (deprecation && deprecation->message.empty())
     deprecation->message = "Identifier '" + name + "' was declared deprecated.";
+  warn_if_deprecated(symbols_, name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
   if (!pushed_back_.empty() ? pushed_back_.back().is("[")
                             : lex_token(*frames_.back().file, frames_.back().pos).is("[")) {
     const Value* v = symbols_.find(name);
@@ -116,6 +129,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
 void Interpreter::directive_undef() {
   Token name = raw();
   if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier after #undef");
+  warn_if_deprecated(symbols_, name, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
   // #undef A[i] makes the element unassigned again.
   if (lex_token(*frames_.back().file, frames_.back().pos).is("["))
     if (auto ref = parse_element_reference(name)) {

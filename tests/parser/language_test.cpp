@@ -319,6 +319,18 @@ TEST(Deprecated, LaterReadsWarnOnceOrEveryTime) {
   EXPECT_EQ(m.items[4], "ifdef does not warn");
 }
 
+TEST(Deprecated, TargetsOfDeclareAndUndefWarnToo) {
+  // povray: "line 3: old A", "line 4: old A", "line 7: old B" — nothing for #ifdef nor defined().
+  Messages m;
+  parse("#version 3.7;\n#declare deprecated \"old A\" A = 1;\n#declare A = 2;\n#undef A\n#ifdef (A) #end\n"
+        "#declare deprecated \"old B\" B = array[2];\n#declare B[0] = 1;\n#declare X = defined(B);\n",
+        &m);
+  ASSERT_EQ(m.items.size(), 3u) << m.joined();
+  EXPECT_EQ(m.items[0].substr(0, 31), "test.pov:3:10: warning: old A\n#");
+  EXPECT_EQ(m.items[1].substr(0, 30), "test.pov:4:8: warning: old A\n#");
+  EXPECT_EQ(m.items[2].substr(0, 31), "test.pov:7:10: warning: old B\n#");
+}
+
 TEST(Deprecated, TheValueIsUsable) {
   const SceneDescription s = parse("#version 3.7;\n#declare deprecated once \"old\" T = texture { pigment { rgb 1 } }\n"
                                    "sphere { 0, 1 texture { T } }\n");
