@@ -106,7 +106,7 @@ std::size_t Interpreter::parse_subscripts(const ArrayValue& a, const std::string
     last = expect("]", " closing the array subscript");
     if (v < -kSubscriptEpsilon) fail_at(at, "negative subscript " + number_text(v) + " for " + name);
     const double k = std::trunc(v + kSubscriptEpsilon);
-    if (k >= static_cast<double>(a.sizes[d]))
+    if (!(k < static_cast<double>(a.sizes[d])))   // also NaN
       fail_at(at, "subscript " + number_text(k) + " is out of range for " + name + " (dimension " +
                       std::to_string(d + 1) + " has size " + std::to_string(a.sizes[d]) + ": 0 to " +
                       std::to_string(a.sizes[d] - 1) + ")");
@@ -191,7 +191,7 @@ Numeric Interpreter::parse_dimensions(const Token& name) {
   accept(",");
   const double k = std::trunc(parse_float()) - 1;
   expect(")", " closing dimension_size()");
-  if (k < 0 || k >= static_cast<double>(a.sizes.size())) return Numeric::scalar(0);
+  if (!(k >= 0 && k < static_cast<double>(a.sizes.size()))) return Numeric::scalar(0);   // also NaN
   return Numeric::scalar(static_cast<double>(a.sizes[static_cast<std::size_t>(k)]));
 }
 

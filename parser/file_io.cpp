@@ -244,7 +244,7 @@ void Interpreter::directive_write(const Token& at) {
       if (next_token.is(")") || next_token.is(",")) continue;
       const Numeric n = parse_expression();
       for (int i = 0; i < n.terms; ++i) {
-        const double x = n.v[i] <= lo ? lo : n.v[i] >= hi ? hi : std::floor(n.v[i] + 0.5);
+        const double x = std::isnan(n.v[i]) ? 0 : n.v[i] <= lo ? lo : n.v[i] >= hi ? hi : std::floor(n.v[i] + 0.5);
         const auto bits = static_cast<std::uint32_t>(static_cast<std::int64_t>(x));
         for (int b = 0; b < bytes; ++b) {
           const int shift = (big_endian ? bytes - 1 - b : b) * 8;
