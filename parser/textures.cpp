@@ -80,6 +80,19 @@ bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
     while (p.entries.size() < 2) p.entries.push_back(defaults[p.entries.size()]);
     return true;
   }
+  // brick and hexagon take a list of colours like checker; povtrace does not render them yet, but their
+  // colours belong to the pattern (not to a following solid colour), so they are read here (up to 2 and 3).
+  if (t.is("brick") || t.is("hexagon")) {
+    taint(p.unsupported, UnsupportedFeature{"the pigment pattern '" + std::string(t.text) + "'", t.loc});
+    const int count = t.is("brick") ? 2 : 3;
+    for (int i = 0; i < count; ++i) {
+      if (i > 0) accept(",");
+      Token n = peek();
+      if (!(starts_colour(n) || n.is("<"))) break;
+      parse_colour();
+    }
+    return true;
+  }
   if (starts_colour(t)) {
     unget(t);
     p.pattern = PatternKind::solid;

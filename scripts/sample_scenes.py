@@ -14,6 +14,7 @@ import collections
 import csv
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -52,8 +53,11 @@ def main():
         sys.exit("no scenes under %s (apt-get install povray-examples)" % a.root)
     rows, counts, features = [], collections.Counter(), collections.Counter()
     with tempfile.TemporaryDirectory() as tmp:
+        # Scenes run in a private copy of the examples: some #write files next to themselves.
+        copy = os.path.join(tmp, "examples")
+        shutil.copytree(a.root, copy)
         for s in scenes:
-            status, detail = classify(povtrace, s, a.timeout, tmp)
+            status, detail = classify(povtrace, os.path.join(copy, os.path.relpath(s, a.root)), a.timeout, tmp)
             counts[status] += 1
             if status == "unsupported":
                 features[detail] += 1
