@@ -212,6 +212,7 @@ class Interpreter {
   std::vector<Frame> frames_;
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
+  std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
   SymbolTable symbols_;
   SceneDescription scene_;
   Texture default_texture_;

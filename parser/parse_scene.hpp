@@ -6,6 +6,7 @@
 // when an object is placed. Throws ParseError (file:line:column, source line, caret, what was expected).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -27,6 +28,9 @@ struct ParseOptions {
   bool output_alpha = false;
   // Receives #debug/#warning text and parser warnings (already formatted). Default: stderr.
   std::function<void(const std::string&)> message_sink;
+  // Stop with a ParseError after reading this many tokens (0: no limit). POV-Ray runs a runaway #while forever,
+  // and so does povtrace by default; the fuzzer (fuzz/) needs every input to end.
+  std::uint64_t max_tokens = 0;
 };
 
 inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";

@@ -22,6 +22,9 @@ Token Interpreter::raw() {
     Token t = lex_token(*f.file, f.pos);
     if (t.kind != TokenKind::end_of_input) {
       f.pos = t.end;
+      if (options_.max_tokens && ++tokens_read_ > options_.max_tokens)
+        fail(t.loc, "the parse read more than " + std::to_string(options_.max_tokens) +
+                        " tokens (the token limit of this run)");
       return t;
     }
     if (f.kind == Frame::Kind::main) return t;
