@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 
+#include "parser/int_cast.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -335,6 +336,11 @@ namespace {
 std::string format_str(double value, int width, int precision) {
   // str(F, L, P) (§5): L > 0 space-padded width, L < 0 zero-padded width |L|, P < 0 the default 6 decimals.
   if (precision < 0) precision = 6;
+  // The text is cut at 511 characters anyway; larger widths and precisions only made snprintf fail (a width of
+  // 2^31) or allocate gigabytes (a precision of 2·10^9).
+  constexpr int kLimit = 4096;
+  width = std::clamp(width, -kLimit, kLimit);
+  precision = std::min(precision, kLimit);
   char buf[512];
   if (width < 0) std::snprintf(buf, sizeof buf, "%0*.*f", -width, precision, value);
   else std::snprintf(buf, sizeof buf, "%*.*f", width, precision, value);
@@ -364,25 +370,25 @@ std::string Interpreter::parse_string() {
     expect(",", " in str(value, width, precision)");
     const double precision = parse_float();
     expect(")", " closing str(...)");
-    return format_str(value, static_cast<int>(width), static_cast<int>(precision));
+    return format_str(value, saturating_cast<int>(width), saturating_cast<int>(precision));
   }
   if (t.is("chr")) {
     expect("(", " after chr");
     const double code = parse_float();
     expect(")", " closing chr(...)");
-    return std::string(1, static_cast<char>(static_cast<int>(code) & 0x7f));
+    return std::string(1, static_cast<char>(saturating_cast<int>(code) & 0x7f));
   }
   if (t.is("vstr")) {
     expect("(", " after vstr");
-    const int n = std::clamp(static_cast<int>(parse_float()), 2, 5);
+    const int n = std::clamp(saturating_cast<int>(parse_float()), 2, 5);
     expect(",", " in vstr");
     Numeric v = promoted_to(parse_additive(), n);
     expect(",", " in vstr");
     const std::string sep = parse_string();
     expect(",", " in vstr");
-    const int width = static_cast<int>(parse_float());
+    const int width = saturating_cast<int>(parse_float());
     expect(",", " in vstr");
-    const int precision = static_cast<int>(parse_float());
+    const int precision = saturating_cast<int>(parse_float());
     expect(")", " closing vstr(...)");
     std::string s;
     for (int i = 0; i < n; ++i) s += (i ? sep : "") + format_str(v.v[i], width, precision);
@@ -392,7 +398,10 @@ std::string Interpreter::parse_string() {
     expect("(", "");
     std::string s = parse_string();
     expect(")", "");
-    for (char& c : s) c = t.is("strupr") ? static_cast<char>(std::toupper(c)) : static_cast<char>(std::tolower(c));
+    for (char& c : s) {
+      const int byte = static_cast<unsigned char>(c);   // toupper/tolower of a negative char is undefined
+      c = static_cast<char>(t.is("strupr") ? std::toupper(byte) : std::tolower(byte));
+    }
     return s;
   }
   if (t.is("datetime")) return parse_datetime();
@@ -400,11 +409,11 @@ std::string Interpreter::parse_string() {
     expect("(", " after substr");
     std::string s = parse_string();
     expect(",", "");
-    const int start = static_cast<int>(parse_float());
+    const int start = saturating_cast<int>(parse_float());
     expect(",", "");
-    const int len = static_cast<int>(parse_float());
+    const int len = saturating_cast<int>(parse_float());
     expect(")", " closing substr(...)");
-    if (start < 1 || len < 0 || start - 1 + len > static_cast<int>(s.size()))
+    if (start < 1 || len < 0 || static_cast<long long>(start) - 1 + len > static_cast<long long>(s.size()))
       fail_at(t, "substr(…, " + std::to_string(start) + ", " + std::to_string(len) + ") is out of range");
     return s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(len));
   }

@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 
+#include "parser/int_cast.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -53,18 +54,18 @@ const std::map<std::string_view, FloatFunction>& float_functions() {
          return a[0] < 0 ? a[1] : (a[0] == 0 ? a[2] : a[3]);
        }}},
       {"bitwise_and", {2, 64, [](const Args& a) {
-         long long r = static_cast<long long>(a[0]);
-         for (std::size_t i = 1; i < a.size(); ++i) r &= static_cast<long long>(a[i]);
+         long long r = saturating_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r &= saturating_cast<long long>(a[i]);
          return static_cast<double>(r);
        }}},
       {"bitwise_or", {2, 64, [](const Args& a) {
-         long long r = static_cast<long long>(a[0]);
-         for (std::size_t i = 1; i < a.size(); ++i) r |= static_cast<long long>(a[i]);
+         long long r = saturating_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r |= saturating_cast<long long>(a[i]);
          return static_cast<double>(r);
        }}},
       {"bitwise_xor", {2, 64, [](const Args& a) {
-         long long r = static_cast<long long>(a[0]);
-         for (std::size_t i = 1; i < a.size(); ++i) r ^= static_cast<long long>(a[i]);
+         long long r = saturating_cast<long long>(a[0]);
+         for (std::size_t i = 1; i < a.size(); ++i) r ^= saturating_cast<long long>(a[i]);
          return static_cast<double>(r);
        }}},
   };
@@ -175,13 +176,15 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   if (n == "trace" || n == "vturbulence") fail_unsupported(name, "the function '" + std::string(n) + "'");
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
-    rand_streams_.push_back(static_cast<std::uint32_t>(static_cast<long long>(a[0])));
+    rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));
     return Numeric::scalar(static_cast<double>(rand_streams_.size() - 1));
   }
   if (n == "rand") {
     Args a = parse_call_arguments(name, 1, 1);
+    // Checked before the conversion: a negative, huge or NaN stream number does not convert to an index.
+    if (!(a[0] >= 0 && a[0] < static_cast<double>(rand_streams_.size())))
+      fail_at(name, "rand() of a stream that seed() did not create");
     const auto index = static_cast<std::size_t>(a[0]);
-    if (a[0] < 0 || index >= rand_streams_.size()) fail_at(name, "rand() of a stream that seed() did not create");
     // POV-Ray's generator (§5 "Random numbers"): a 32-bit LCG, result scaled to [0,1].
     std::uint32_t& s = rand_streams_[index];
     s = s * 1812433253u + 12345u;

@@ -1,6 +1,7 @@
 // Top-level statements, global settings, #default, right-hand values, and the entry points.
 #include <iostream>
 
+#include "parser/int_cast.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -83,7 +84,7 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       scene_.settings.ambient_light = Colour{c.r, c.g, c.b, 0, 0};
     } else if (k == "max_trace_level") {
       // Clamped to 1…256 (pipeline §4 "Recursion limits").
-      scene_.settings.max_trace_level = std::clamp(static_cast<int>(parse_float()), 1, 256);
+      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(parse_float()), 1, 256);
     } else if (k == "adc_bailout") {
       scene_.settings.adc_bailout = parse_float();
     } else if (k == "charset" || k == "number_of_waves" || k == "noise_generator") {
