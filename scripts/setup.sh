@@ -9,6 +9,7 @@ packages=(
   libgtest-dev                     # unit tests
   povray povray-includes           # reference renders, standard include files, bench comparison
   python3                          # reference/bench scripts
+  clang libclang-rt-14-dev         # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes come with clang's
 )
 missing=()
 for p in "${packages[@]}"; do
