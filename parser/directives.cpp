@@ -116,6 +116,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
                                    "interior or camera) for " + name);
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
+  check_function_redeclaration(name_token, local, *value);
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   if (local) symbols_.local(name, std::move(*value)); else symbols_.declare(name, std::move(*value));

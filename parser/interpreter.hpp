@@ -159,6 +159,14 @@ class Interpreter {
   // ---- object queries (object_queries.cpp) ----
   Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
 
+  // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
+  friend class FunctionParser;
+  // `function …` (a definition) or `F(…)` (a call of a declared function) as a right-hand value.
+  std::optional<Value> try_parse_function_rvalue(const Token& first);
+  Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
+  // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
+  void check_function_redeclaration(const Token& name, bool local, const Value& value);
+
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
   Finish parse_finish_block(const Token& keyword, const Finish& start);

@@ -152,6 +152,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     return Value(MaterialValue{holder.texture, holder.interior});
   }
   if (k == "array") return parse_array_declaration(first);
+  if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
       v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) {
     if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value

@@ -25,6 +25,7 @@ std::string value_type_name(const Value& v) {
     std::string operator()(const MaterialValue&) const { return "material"; }
     std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "array"; }
     std::string operator()(const std::shared_ptr<UserFile>&) const { return "file"; }
+    std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "function"; }
   };
   return std::visit(Namer{}, v);
 }

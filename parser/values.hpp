@@ -68,10 +68,12 @@ struct OpaqueValue {
 
 struct ArrayValue;   // array[N]… (below: it holds Values)
 struct UserFile;     // a file opened by #fopen (file_io.cpp)
+struct FunctionValue;   // function { … } (function_value.hpp)
 
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
                            Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue,
-                           MaterialValue, std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>>;
+                           MaterialValue, std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
+                           std::shared_ptr<const FunctionValue>>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies
