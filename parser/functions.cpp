@@ -19,6 +19,13 @@ struct FloatFunction {
 
 double degrees_to_radians(double d) { return d * M_PI / 180.0; }
 
+// int() and div() truncate toward zero. POV-Ray goes through an integer, so a result of zero is +0:
+// int(-0.3) prints as "0.000000", not "-0.000000" as std::trunc's -0 would.
+double truncated(double d) {
+  const double t = std::trunc(d);
+  return t == 0 ? 0.0 : t;
+}
+
 const std::map<std::string_view, FloatFunction>& float_functions() {
   static const std::map<std::string_view, FloatFunction> table = {
       {"abs", {1, 1, [](const Args& a) { return std::fabs(a[0]); }}},
@@ -42,8 +49,8 @@ const std::map<std::string_view, FloatFunction>& float_functions() {
       {"pow", {2, 2, [](const Args& a) { return std::pow(a[0], a[1]); }}},
       {"floor", {1, 1, [](const Args& a) { return std::floor(a[0]); }}},
       {"ceil", {1, 1, [](const Args& a) { return std::ceil(a[0]); }}},
-      {"int", {1, 1, [](const Args& a) { return std::trunc(a[0]); }}},
-      {"div", {2, 2, [](const Args& a) { return std::trunc(a[0] / a[1]); }}},
+      {"int", {1, 1, [](const Args& a) { return truncated(a[0]); }}},
+      {"div", {2, 2, [](const Args& a) { return truncated(a[0] / a[1]); }}},
       {"mod", {2, 2, [](const Args& a) { return std::fmod(a[0], a[1]); }}},
       {"degrees", {1, 1, [](const Args& a) { return a[0] * 180.0 / M_PI; }}},
       {"radians", {1, 1, [](const Args& a) { return degrees_to_radians(a[0]); }}},
