@@ -382,7 +382,10 @@ std::string Interpreter::parse_string() {
     expect("(", " after vstr");
     const int n = std::clamp(saturating_cast<int>(parse_float()), 2, 5);
     expect(",", " in vstr");
-    Numeric v = promoted_to(parse_additive(), n);
+    // Not promoted as in arithmetic: POV-Ray prints a float F as F, 0, 0… (vstr(3, 5, …) is "5,0,0"), and
+    // zero-pads a shorter vector.
+    Numeric v = parse_additive();
+    for (int i = v.terms; i < 5; ++i) v.v[i] = 0;
     expect(",", " in vstr");
     const std::string sep = parse_string();
     expect(",", " in vstr");
