@@ -185,7 +185,7 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     if (number.kind != TokenKind::number) in_.fail_expected(number, "the number of an internal function");
     if (!(number.number >= 0) || number.number >= kInternalFunctionCount)
       in_.fail_at(number, "function 'internal(" + std::string(number.text) + ")' does not exist (POV-Ray has "
-                          "internal(0) to internal(" + std::to_string(kInternalFunctionCount - 1) + ")");
+                          "internal(0) to internal(" + std::to_string(kInternalFunctionCount - 1) + "))");
     in_.expect(")", " after the number of the internal function");
     f->kind = FunctionValue::Kind::internal;
     f->internal_id = static_cast<int>(number.number);
@@ -335,6 +335,9 @@ int FunctionParser::parse_operand() {
     in_.fail_expected(t, expected);
   }
   const Value* v = in_.lookup(t);
+  if (!v && in_.peek().is("("))
+    in_.fail_at(t, "'" + std::string(w) + "' is not a declared function" +
+                       (w.starts_with("f_") ? " (the f_… functions are declared in functions.inc)" : ""));
   if (!v) return variable(t);
   if (const auto* n = std::get_if<Numeric>(v); n && n->terms == 1 && !n->colour) return constant(n->v[0], t.loc);
   if (const auto* f = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return parse_call(t, *f);
@@ -804,10 +807,17 @@ void FunctionParser::compile_call(int i) {
 std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) {
   if (first.is("function")) return Value(FunctionParser(*this).parse_definition(first));
   const Value* v = lookup(first);
-  if (v && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*v) && peek_raw().is("(")) {
+  if (!v || !std::holds_alternative<std::shared_ptr<const FunctionValue>>(*v)) return std::nullopt;
+  const Token after = peek_raw();
+  if (after.is("(")) {
     unget(first);   // a call: the value is an expression (F(1,2,3) + 1)
     return Value(parse_additive().stored());
   }
+  // `#declare G = F;` copies the function; `F + 1` or `F.x` is a call without its arguments (POV-Ray: "incomplete
+  // function call").
+  if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
+    fail_expected(after, "'(' and the arguments of the function '" + std::string(first.text) +
+                             "' (an incomplete function call)");
   return std::nullopt;
 }
 
