@@ -1,0 +1,75 @@
+// String functions: str (width, zero padding, precision, rounding), vstr (component count, separator,
+// padding), concat, chr, substr, strupr, strlwr, strlen, strcmp (only its sign is portable), asc, val,
+// and string escapes. Each value is printed between | bars so padding shows.
+#version 3.7;
+global_settings { assumed_gamma 1 }
+
+#macro Show(Label, Text)
+  #debug concat(Label, " |", Text, "|\n")
+#end
+#macro ShowF(Label, Value)
+  #debug concat(Label, " = ", str(Value, 0, 6), "\n")
+#end
+#macro Sign(Value) select(Value, -1, 0, 1) #end
+
+Show("str(3.14159,0,2)", str(3.14159,0,2))
+Show("str(3.14159,8,3)", str(3.14159,8,3))
+Show("str(3.14159,-8,3)", str(3.14159,-8,3))
+Show("str(-2,-6,1)", str(-2,-6,1))
+Show("str(-2,6,1)", str(-2,6,1))
+Show("str(42,0,0)", str(42,0,0))
+Show("str(2.5,0,0)", str(2.5,0,0))
+Show("str(3.5,0,0)", str(3.5,0,0))
+Show("str(-3.5,0,0)", str(-3.5,0,0))
+Show("str(0.125,0,2)", str(0.125,0,2))
+Show("str(1/3,0,12)", str(1/3,0,12))
+Show("str(1/3,0,-1)", str(1/3,0,-1))
+Show("str(100,0,-3)", str(100,0,-3))
+Show("str(123.456,2,1)", str(123.456,2,1))
+Show("str(1e15,0,1)", str(1e15,0,1))
+Show("str(-1e-7,0,6)", str(-1e-7,0,6))
+Show("str(1e-7,3,1)", str(1e-7,3,1))
+Show("str(7,5,0)", str(7,5,0))
+Show("str(7,-5,0)", str(7,-5,0))
+Show("vstr(3,<1,2,3>,\",\",0,1)", vstr(3,<1,2,3>,",",0,1))
+Show("vstr(2,<1,2,3>,\", \",0,2)", vstr(2,<1,2,3>,", ",0,2))
+Show("vstr(5,<1,2,3>,\";\",0,0)", vstr(5,<1,2,3>,";",0,0))
+Show("vstr(4,<1,2,3,4>,\" \",4,1)", vstr(4,<1,2,3,4>," ",4,1))
+Show("vstr(3,<-1,0.5,2>,\"/\",-6,2)", vstr(3,<-1,0.5,2>,"/",-6,2))
+Show("vstr(3,<1/3,2/3,1>,\"\",0,3)", vstr(3,<1/3,2/3,1>,"",0,3))
+Show("vstr(2,<0.25,4>,\"x\",0,-1)", vstr(2,<0.25,4>,"x",0,-1))
+Show("concat(\"a\")", concat("a"))
+Show("concat 4", concat("ab", "", "cd", str(1,0,0)))
+Show("chr(65)", chr(65))
+Show("chr(97)+chr(122)", concat(chr(97), chr(122)))
+Show("chr(48+7)", chr(48+7))
+Show("substr(\"povtrace\",4,5)", substr("povtrace",4,5))
+Show("substr(\"povtrace\",1,3)", substr("povtrace",1,3))
+Show("substr(\"abc\",3,1)", substr("abc",3,1))
+Show("substr(\"abc\",2,0)", substr("abc",2,0))
+Show("strupr(\"Mixed Case 12\")", strupr("Mixed Case 12"))
+Show("strlwr(\"Mixed Case 12\")", strlwr("Mixed Case 12"))
+ShowF("strlen(\"hello\")", strlen("hello"))
+ShowF("strlen(\"\")", strlen(""))
+ShowF("strlen(concat(\"ab\",\"cd\"))", strlen(concat("ab","cd")))
+ShowF("sign strcmp(\"abc\",\"abd\")", Sign(strcmp("abc","abd")))
+ShowF("sign strcmp(\"b\",\"a\")", Sign(strcmp("b","a")))
+ShowF("sign strcmp(\"abc\",\"ab\")", Sign(strcmp("abc","ab")))
+ShowF("sign strcmp(\"Z\",\"a\")", Sign(strcmp("Z","a")))
+ShowF("strcmp(\"same\",\"same\")", strcmp("same","same"))
+ShowF("asc(\"A\")", asc("A"))
+ShowF("asc(\"abc\")", asc("abc"))
+ShowF("asc(\" \")", asc(" "))
+ShowF("val(\"2.5\")", val("2.5"))
+ShowF("val(\"-3e2\")", val("-3e2"))
+ShowF("val(\"  7\")", val("  7"))
+ShowF("val(\"2.5xyz\")", val("2.5xyz"))
+ShowF("val(\"abc\")", val("abc"))
+ShowF("val(\".5\")", val(".5"))
+ShowF("val(str(1/7,0,4))", val(str(1/7,0,4)))
+Show("escapes", "q\"q b\\b t\tt")
+#declare S = "ident";
+Show("identifier", concat(S, "-", strupr(S)))
+
+camera {}
+sphere { 0, 1 }
