@@ -358,16 +358,21 @@ std::string Interpreter::parse_string() {
   if (t.is("concat")) {
     expect("(", " after concat");
     std::string s = parse_string();
-    while (accept(",")) s += parse_string();
+    // Commas between the strings are optional, as everywhere POV-Ray reads arguments.
+    while (true) {
+      const bool comma = accept(",");
+      if (!comma && !starts_string(peek())) break;
+      s += parse_string();
+    }
     expect(")", " closing concat(...)");
     return s;
   }
   if (t.is("str")) {
     expect("(", " after str");
     const double value = parse_float();
-    expect(",", " in str(value, width, precision)");
+    accept(",");
     const double width = parse_float();
-    expect(",", " in str(value, width, precision)");
+    accept(",");
     const double precision = parse_float();
     expect(")", " closing str(...)");
     return format_str(value, saturating_cast<int>(width), saturating_cast<int>(precision));
@@ -381,16 +386,16 @@ std::string Interpreter::parse_string() {
   if (t.is("vstr")) {
     expect("(", " after vstr");
     const int n = std::clamp(saturating_cast<int>(parse_float()), 2, 5);
-    expect(",", " in vstr");
+    accept(",");
     // Not promoted as in arithmetic: POV-Ray prints a float F as F, 0, 0… (vstr(3, 5, …) is "5,0,0"), and
     // zero-pads a shorter vector.
     Numeric v = parse_additive();
     for (int i = v.terms; i < 5; ++i) v.v[i] = 0;
-    expect(",", " in vstr");
+    accept(",");
     const std::string sep = parse_string();
-    expect(",", " in vstr");
+    accept(",");
     const int width = saturating_cast<int>(parse_float());
-    expect(",", " in vstr");
+    accept(",");
     const int precision = saturating_cast<int>(parse_float());
     expect(")", " closing vstr(...)");
     std::string s;
@@ -411,9 +416,9 @@ std::string Interpreter::parse_string() {
   if (t.is("substr")) {
     expect("(", " after substr");
     std::string s = parse_string();
-    expect(",", "");
+    accept(",");
     const int start = saturating_cast<int>(parse_float());
-    expect(",", "");
+    accept(",");
     const int len = saturating_cast<int>(parse_float());
     expect(")", " closing substr(...)");
     if (start < 1 || len < 0 || static_cast<long long>(start) - 1 + len > static_cast<long long>(s.size()))

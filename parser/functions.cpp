@@ -97,9 +97,13 @@ std::vector<double> Interpreter::parse_call_arguments(const Token& name, std::si
   if (max_args == 1) {
     args.push_back(parse_float_full());
   } else {
-    do {
+    // Commas between arguments are optional (POV-Ray's Parse_Comma) for the required arguments; optional
+    // extra arguments (min/max beyond the first, select's fourth) need their comma, as in POV-Ray.
+    for (std::size_t i = 0; i < min_args; ++i) {
+      if (i > 0) accept(",");
       args.push_back(parse_float());
-    } while (accept(","));
+    }
+    while (args.size() < max_args && accept(",")) args.push_back(parse_float());
   }
   Token close = next();
   if (!close.is(")")) fail_expected(close, "',' or ')' in the arguments of " + std::string(name.text));
@@ -119,7 +123,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     return Numeric::scalar(it->second.eval(args));
   }
   auto vector_arg = [&](bool first) {
-    if (!first) expect(",", " between the arguments of " + std::string(n));
+    if (!first) accept(",");   // optional between arguments, as POV-Ray's Parse_Comma
     return parse_vector();
   };
   if (n == "vlength" || n == "vnormalize") {
@@ -141,7 +145,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   if (n == "vaxis_rotate") {
     expect("(", "");
     Vec3 v = vector_arg(true), axis = normalize(vector_arg(false));
-    expect(",", "");
+    accept(",");
     const double angle = degrees_to_radians(parse_float());
     expect(")", "");
     // Same sense as `rotate` (vaxis_rotate(x, y, 90) = -z, §5): Rodrigues' formula as it stands, since
@@ -161,7 +165,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   if (n == "strcmp") {
     expect("(", "");
     std::string a = parse_string();
-    expect(",", "");
+    accept(",");
     std::string b = parse_string();
     expect(")", "");
     return Numeric::scalar(static_cast<double>(strcmp_value(a, b)));
