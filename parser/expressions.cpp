@@ -246,11 +246,20 @@ Numeric Interpreter::parse_vector_literal(const Token& open) {
   return n;
 }
 
+// srgb… colours (§5): the components are sRGB-encoded; they are decoded to linear light, then encoded with the
+// working gamma (assumed_gamma; 1 when not set). Filter and transmit are taken as they are.
+namespace {
+double srgb_to_working(double encoded, double gamma) {
+  const double linear = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+  return gamma == 1.0 || linear <= 0 ? linear : std::pow(linear, 1.0 / gamma);
+}
+}  // namespace
+
 // rgb, rgbf, rgbt, rgbft: the expression after the keyword is a full expression promoted to the stated count
 // (§5 "Colours"), then placed in the five colour channels.
 Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
-  const std::string_view k = keyword.text;
-  if (k.starts_with("srgb")) fail_unsupported(keyword, "'" + std::string(k) + "' colours");
+  const bool srgb = keyword.text.starts_with("srgb");
+  const std::string_view k = srgb ? keyword.text.substr(1) : keyword.text;   // srgbf → the rgbf layout
   Token start = peek();
   Numeric e = parse_expression();
   const int count = k == "rgb" ? 3 : (k == "rgbft" ? 5 : 4);
@@ -261,12 +270,14 @@ Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
   Numeric c;
   c.terms = 5;
   c.colour = true;
-  for (int i = 0; i < 3; ++i) c.v[i] = e.v[i];
+  const double gamma = scene_.settings.assumed_gamma.value_or(1.0);
+  for (int i = 0; i < 3; ++i) c.v[i] = srgb ? srgb_to_working(e.v[i], gamma) : e.v[i];
   if (k == "rgbf") c.v[3] = e.v[3];
   if (k == "rgbt") c.v[4] = e.v[3];
   if (k == "rgbft") { c.v[3] = e.v[3]; c.v[4] = e.v[4]; }
   return c;
 }
+
 
 bool Interpreter::starts_colour(const Token& t) const {
   if (t.kind != TokenKind::identifier) return false;
