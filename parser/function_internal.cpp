@@ -5,6 +5,7 @@
 // that are 0, f_kampyle_of_eudoxus_2d's P1*P2). The ones built on POV-Ray's noise generator or on a pattern
 // are not evaluable here and are refused by name when evaluated.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "parser/function_value.hpp"
@@ -362,7 +363,9 @@ double polytubes(const Point& q) {
   const double Y = q.Y(), y2 = Y * Y;
   const double radius = q.P(1) + q.P(2) * Y + q.P(3) * y2 + q.P(4) * y2 * Y + q.P(5) * y2 * y2;
   double r = -10000;
-  const int tubes = static_cast<int>(q.P(0));
+  // POV-Ray's (int) conversion: NaN and out-of-range counts give INT_MIN on x86, so no tube at all.
+  const double count = q.P(0);
+  const int tubes = count > -2147483649.0 && count < 2147483648.0 ? static_cast<int>(count) : INT_MIN;
   for (int i = 0; i < tubes; ++i) {
     const double dx = q.X() - radius * std::sin(2 * kPi / q.P(0) * i);
     const double dz = q.Z() - radius * std::cos(2 * kPi / q.P(0) * i);

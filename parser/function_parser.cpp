@@ -841,7 +841,11 @@ Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<c
   double out[5] = {0, 0, 0, 0, 0};
   double result = 0;
   try {
-    result = evaluate_function(f, args, out);
+    if (options_.max_tokens && !function_budget_set_) {
+      function_steps_left_ = options_.max_tokens * 16;   // shared by every call of the parse
+      function_budget_set_ = true;
+    }
+    result = evaluate_function(f, args, out, options_.max_tokens ? &function_steps_left_ : nullptr);
   } catch (const FunctionError& e) {
     fail_at(name, e.what());
   }

@@ -98,7 +98,10 @@ class FunctionError : public std::runtime_error {
 
 // Evaluates `f` on `args` (exactly f.parameter_count values). A float function returns its value; a vector
 // function writes its return_size components to `vector_out` (which must hold 5) and returns the first.
-double evaluate_function(const FunctionValue& f, const double* args, double* vector_out);
+// `steps_left`, if given, bounds the work: each sum()/prod() iteration and each call takes one step, and a
+// FunctionError is thrown when none are left (ParseOptions::max_tokens: every parse must end).
+double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
+                         std::uint64_t* steps_left = nullptr);
 
 // POV-Ray's internal functions (functions.inc: `function { internal(N) }`, N = 0…78).
 constexpr int kInternalFunctionCount = 79;

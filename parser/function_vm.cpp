@@ -132,8 +132,15 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
 
 class Machine {
  public:
-  double run(const FunctionValue& entry, const double* args) {
+  double run(const FunctionValue& entry, const double* args, std::uint64_t* steps_left) {
     frames_.clear();
+    auto step = [steps_left]() {
+      if (!steps_left) return;
+      if (*steps_left == 0)
+        throw FunctionError("function evaluation stopped: the parse's work limit (ParseOptions::max_tokens) is "
+                            "reached in sum(), prod() or function calls");
+      --*steps_left;
+    };
     std::size_t base = 0;
     std::size_t sp = 0;   // next free stack slot
     const FunctionValue* fn = &entry;
@@ -183,7 +190,10 @@ class Machine {
         }
         case FnOp::math1: s[sp - 1] = math1(static_cast<FnMath1>(in.a), s[sp - 1]); break;
         case FnOp::math2: --sp; s[sp - 1] = math2(static_cast<FnMath2>(in.a), s[sp - 1], s[sp]); break;
-        case FnOp::jump: pc = static_cast<std::size_t>(in.a); break;
+        case FnOp::jump:
+          if (static_cast<std::size_t>(in.a) < pc) step();   // the back edge of a sum()/prod() loop
+          pc = static_cast<std::size_t>(in.a);
+          break;
         case FnOp::select: {
           const double c = s[--sp];
           if (c < 0) pc = static_cast<std::size_t>(in.a);
@@ -222,6 +232,7 @@ class Machine {
         case FnOp::unsupported: throw FunctionError(unsupported_message(*fn->callees[static_cast<std::size_t>(in.a)]));
         case FnOp::call: {
           const FunctionValue* callee = fn->callees[static_cast<std::size_t>(in.a)].get();
+          step();
           if (frames_.size() >= kMaxCallDepth)
             throw FunctionError("function calls nested more than " + std::to_string(kMaxCallDepth) + " deep");
           frames_.push_back({fn, pc, base});
@@ -288,7 +299,8 @@ std::string FunctionValue::description() const {
   return what;
 }
 
-double evaluate_function(const FunctionValue& f, const double* args, double* vector_out) {
+double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
+                         std::uint64_t* steps_left) {
   if (f.kind != FunctionValue::Kind::expression) {
     double out[5] = {0, 0, 0, 0, 0};
     evaluate_native(f, args, out);
@@ -296,7 +308,7 @@ double evaluate_function(const FunctionValue& f, const double* args, double* vec
     return out[0];
   }
   static thread_local Machine machine;
-  return machine.run(f, args);
+  return machine.run(f, args, steps_left);
 }
 
 }  // namespace povtrace::sdl

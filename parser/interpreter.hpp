@@ -166,6 +166,8 @@ class Interpreter {
   Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
   // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
   void check_function_redeclaration(const Token& name, bool local, const Value& value);
+  std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
+  bool function_budget_set_ = false;
 
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
