@@ -37,9 +37,10 @@ echo "fuzz: running the front end for ${seconds}s (corpus $corpus)" >&2
 status=0
 "$out/fuzz/povtrace_parse_fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
   -dict="$dict" -artifact_prefix="$findings/" -print_final_stats=1 "$corpus" 2>"$out/fuzz.log" || status=$?
-tail -n 25 "$out/fuzz.log" >&2
 if ((status != 0)); then
+  tail -n 60 "$out/fuzz.log" >&2
   echo "fuzz: FINDING (exit $status); the input is in $findings/, the log in $out/fuzz.log" >&2
   exit 1
 fi
+grep -E '^Done|^stat::' "$out/fuzz.log" >&2 || true
 echo "fuzz: no findings in ${seconds}s" >&2
