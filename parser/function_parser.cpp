@@ -236,7 +236,7 @@ void FunctionParser::parse_parameters() {
     if (static_cast<int>(parameters_.size()) == kMaxParameters)
       in_.fail_at(p, "a function takes at most " + std::to_string(kMaxParameters) + " parameters");
     parameters_.emplace_back(p.text);
-    in_.accept(",");
+    if (in_.accept(",")) continue;   // a comma must be followed by another name: `function(a,)` is an error
     if (in_.accept(")")) return;
   }
 }

@@ -284,10 +284,9 @@ std::string FunctionValue::description() const {
     case Kind::expression: what = "the function"; break;
     case Kind::internal: {
       const InternalFunctionInfo& info = internal_function_info(internal_id);
-      std::string s = "the internal function " + std::string(info.name) + " (internal(" +
-                      std::to_string(internal_id) + ")";
-      s += internal_id == 77 ? ", a pattern)" : ", POV-Ray's noise generator)";
-      return s;
+      // Only the ones built on POV-Ray's noise generator cannot be evaluated.
+      return "the internal function " + std::string(info.name) + " (internal(" + std::to_string(internal_id) +
+             "), POV-Ray's noise generator)";
     }
     case Kind::transform: what = "the transform function"; break;
     case Kind::pigment: what = "the pigment function"; break;

@@ -195,6 +195,8 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"DeclaredParameterName", "#declare r = 1;\n#declare F = function(r) { r }\n", 2, 23,
                   "expected a parameter name (an undeclared identifier, or x, y, z, u, v), found the float "
                   "identifier 'r'"},
+        ErrorCase{"TrailingCommaInParameters", "#declare F = function(a,) { a }\n", 1, 25,
+                  "expected a parameter name"},
         ErrorCase{"VectorIdentifierInBody", "#declare V = <1,2,3>;\n#declare F = function { V }\n", 2, 25,
                   "expected an operand"},
         ErrorCase{"TooFewArgumentsInABody", "#declare F = function(a, b) { a }\n#declare G = function { F(x) }\n", 2,
