@@ -50,6 +50,8 @@ class Interpreter {
     SourceLoc loc;
   };
   Token raw();                   // next token of the frame stack, no directive processing
+  // lex_token through a small cache: loops and macro bodies replay the same bytes, which are lexed once.
+  Token lex_at(const SourceFile& file, const LexPosition& at);
   Token next();                  // next token after directives and macro calls
   Token peek();
   // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
@@ -223,6 +225,12 @@ class Interpreter {
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
+  struct LexCacheEntry {
+    const SourceFile* file = nullptr;   // files live as long as the parse and never change
+    std::size_t offset = 0;
+    Token token;
+  };
+  std::vector<LexCacheEntry> lex_cache_;   // direct-mapped on (file, offset); allocated at the first token
   SymbolTable symbols_;
   SceneDescription scene_;
   Texture default_texture_;

@@ -47,9 +47,9 @@ std::shared_ptr<ArrayValue> ArrayValue::deep_copy() const {
   return copy;
 }
 
-std::optional<std::size_t> SymbolTable::level_of(const std::string& name) const {
+std::optional<std::size_t> SymbolTable::level_of(std::string_view name) const {
   for (std::size_t i = tables_.size(); i-- > 0;)
-    if (tables_[i].count(name)) return i;
+    if (tables_[i].find(name) != tables_[i].end()) return i;
   return std::nullopt;
 }
 
@@ -63,11 +63,14 @@ Value* SymbolTable::resolve_alias(Value* v) {
   return v;
 }
 
-const Value* SymbolTable::find(const std::string& name) const {
-  auto level = level_of(name);
-  if (!level) return nullptr;
+const Value* SymbolTable::find(std::string_view name) const {
+  // One hash lookup per level, innermost first (not a search for the level and then another for the entry).
   auto* self = const_cast<SymbolTable*>(this);
-  return self->resolve_alias(&self->tables_[*level].at(name));
+  for (std::size_t i = tables_.size(); i-- > 0;) {
+    auto& table = self->tables_[i];
+    if (auto it = table.find(name); it != table.end()) return self->resolve_alias(&it->second);
+  }
+  return nullptr;
 }
 
 void SymbolTable::declare(const std::string& name, Value value) {

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -19,10 +20,11 @@ class SymbolTable {
   void pop_scope() { tables_.pop_back(); deprecations_.pop_back(); }
   std::size_t depth() const { return tables_.size(); }
 
-  // The value visible under `name`, following macro aliases; nullptr if undeclared.
-  const Value* find(const std::string& name) const;
+  // The value visible under `name`, following macro aliases; nullptr if undeclared. Takes the token's text as it
+  // is: no string is made for a lookup.
+  const Value* find(std::string_view name) const;
   // Level of the innermost table that holds `name` (aliases not followed).
-  std::optional<std::size_t> level_of(const std::string& name) const;
+  std::optional<std::size_t> level_of(std::string_view name) const;
 
   // #declare: overwrite the visible entry wherever it is (through aliases), else create a global.
   void declare(const std::string& name, Value value);
@@ -48,7 +50,12 @@ class SymbolTable {
 
  private:
   Value* resolve_alias(Value* v);
-  std::vector<std::unordered_map<std::string, Value>> tables_;
+  // Hashes a std::string and a std::string_view alike, so that lookups by string_view need no std::string.
+  struct NameHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+  };
+  std::vector<std::unordered_map<std::string, Value, NameHash, std::equal_to<>>> tables_;
   std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // parallel to tables_
   bool any_deprecated_ = false;
 };

@@ -16,10 +16,24 @@ constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested fil
 constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
 }  // namespace
 
+Token Interpreter::lex_at(const SourceFile& file, const LexPosition& at) {
+  // 4096 entries (about 600 KB) hold the body of any ordinary loop or macro; a large file just streams through.
+  constexpr unsigned kBits = 12;
+  if (lex_cache_.empty()) lex_cache_.resize(std::size_t{1} << kBits);
+  const std::uint64_t key = (reinterpret_cast<std::uintptr_t>(&file) >> 4) * 0x9E3779B97F4A7C15ull ^ at.offset;
+  LexCacheEntry& e = lex_cache_[static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - kBits))];
+  if (e.file == &file && e.offset == at.offset) return e.token;
+  Token t = lex_token(file, at);   // a lexical error throws before anything is cached
+  e.file = &file;
+  e.offset = at.offset;
+  e.token = t;
+  return t;
+}
+
 Token Interpreter::raw() {
   while (true) {
     Frame& f = frames_.back();
-    Token t = lex_token(*f.file, f.pos);
+    Token t = lex_at(*f.file, f.pos);
     if (t.kind != TokenKind::end_of_input) {
       f.pos = t.end;
       if (options_.max_tokens && ++tokens_read_ > options_.max_tokens)
@@ -89,7 +103,7 @@ bool Interpreter::is_macro_call(const Token& t) const {
 const Value* Interpreter::lookup(const Token& t) const {
   if (t.element) return &t.element->value;
   if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return nullptr;
-  return symbols_.find(std::string(t.text));
+  return symbols_.find(t.text);
 }
 
 Token Interpreter::next() {
@@ -99,7 +113,7 @@ Token Interpreter::next() {
     // back after next() are, and are not processed twice (no second deprecation warning).
     Token t;
     if (!pushed_back_.empty()) {
-      t = pushed_back_.back();
+      t = std::move(pushed_back_.back());
       pushed_back_.pop_back();
     } else {
       t = raw();
@@ -113,7 +127,7 @@ Token Interpreter::next() {
       continue;
     }
     if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-      const Value* v = symbols_.find(std::string(t.text));
+      const Value* v = symbols_.find(t.text);
       if (v && std::holds_alternative<MacroDefinition>(*v)) {
         const NestingGuard guard(*this, t);
         invoke_macro(t);
@@ -136,7 +150,7 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
   // every place that takes an identifier of some type takes an element of that type.
   while (const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
     const Token after =
-        pushed_back_.empty() ? lex_token(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
+        pushed_back_.empty() ? lex_at(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
     if (!after.is("[")) return;
     const std::shared_ptr<ArrayValue> keep = *array;   // the subscripts may run code that reassigns the name
     Token last = t;
@@ -153,26 +167,22 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
 
 Token Interpreter::peek_raw() {
   while (true) {
-    Token t;
-    if (!pushed_back_.empty()) {
-      t = pushed_back_.back();
-      pushed_back_.pop_back();
-    } else {
-      t = raw();
-    }
+    // The token looked at stays in pushed_back_ (it is called after every operand: no pop and push again).
+    if (pushed_back_.empty()) pushed_back_.push_back(raw());
+    const Token& t = pushed_back_.back();
     // The #end of the running macro is exempt (POV-Ray checks it first): it returns, and the look goes on in
     // the caller. A `#` comes back raw, so the frame still stands just after it.
     if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
         controls_.back().frame == frames_.size() - 1) {
       Frame& f = frames_.back();
-      const Token word = lex_token(*f.file, f.pos);
+      const Token word = lex_at(*f.file, f.pos);
       if (word.is("end")) {
+        pushed_back_.pop_back();
         f.pos = word.end;
         directive_end(word);
         continue;
       }
     }
-    unget(t);
     return t;
   }
 }
@@ -311,8 +321,8 @@ void Interpreter::invoke_macro(const Token& name) {
     // of that macro must not run, and drop its locals, before `first` is evaluated.
     if (first.kind == TokenKind::identifier && !first.element && !is_reserved_word(first.text)) {
       const Token after =
-          pushed_back_.empty() ? lex_token(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
-      auto level = symbols_.level_of(std::string(first.text));
+          pushed_back_.empty() ? lex_at(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
+      auto level = symbols_.level_of(first.text);
       if (level && (after.is(",") || after.is(")"))) {
         bound.emplace_back(macro.parameters[i], Alias{*level, std::string(first.text)});
         continue;
