@@ -91,7 +91,8 @@ std::string domain_error(std::string_view name, const Args& a) {
 }  // namespace
 
 std::vector<double> Interpreter::parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args) {
-  expect("(", " after '" + std::string(name.text) + "'");
+  // Not expect(): its message would be built on every call of every built-in function.
+  if (const Token open = next(); !open.is("(")) fail_expected(open, "'(' after '" + std::string(name.text) + "'");
   std::vector<double> args;
   // Single-argument functions take a full-level expression (§5 "Two levels").
   if (max_args == 1) {

@@ -197,7 +197,8 @@ std::string Interpreter::csg_name(CsgKind kind) {
 // rendered as its children; the other operations are parsed whole and refused when placed (issue 4).
 Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   const NestingGuard guard(*this, keyword);
-  expect("{", " after '" + std::string(keyword.text) + "'");
+  if (const Token open = next(); !open.is("{"))   // not expect(): its message would be built every time
+    fail_expected(open, "'{' after '" + std::string(keyword.text) + "'");
   Object o;
   o.loc = keyword.loc;
   Csg csg;

@@ -2,6 +2,7 @@
 // Lookup runs newest to oldest (dynamic scope).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,7 +54,11 @@ class SymbolTable {
   // Hashes a std::string and a std::string_view alike, so that lookups by string_view need no std::string.
   struct NameHash {
     using is_transparent = void;
-    std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+    std::size_t operator()(std::string_view s) const noexcept {   // FNV-1a, inline: names are short
+      std::uint64_t h = 14695981039346656037ull;
+      for (const char c : s) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+      return static_cast<std::size_t>(h ^ (h >> 32));
+    }
   };
   std::vector<std::unordered_map<std::string, Value, NameHash, std::equal_to<>>> tables_;
   std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // parallel to tables_

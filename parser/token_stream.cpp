@@ -311,8 +311,11 @@ void Interpreter::invoke_macro(const Token& name) {
   if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
     fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
                       " levels: runaway recursion in '" + std::string(name.text) + "'?)");
-  expect("(", " after the macro name '" + std::string(name.text) + "'");
+  // Checked here rather than with expect(): its message would be built on every call.
+  if (const Token open = next(); !open.is("("))
+    fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
   std::vector<std::pair<std::string, Value>> bound;
+  bound.reserve(macro.parameters.size());
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
     if (i > 0) accept(",");
     Token first = next();
