@@ -230,7 +230,8 @@ class Interpreter {
     std::size_t offset = 0;
     Token token;
   };
-  std::vector<LexCacheEntry> lex_cache_;   // direct-mapped on (file, offset); allocated at the first token
+  std::vector<LexCacheEntry> lex_cache_;   // direct-mapped on (file, offset)
+  bool replayed_ = false;                  // a loop or macro body has been entered: lex_at starts caching
   SymbolTable symbols_;
   SceneDescription scene_;
   Texture default_texture_;

@@ -17,9 +17,13 @@ constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
 }  // namespace
 
 Token Interpreter::lex_at(const SourceFile& file, const LexPosition& at) {
-  // 4096 entries (about 600 KB) hold the body of any ordinary loop or macro; a large file just streams through.
+  // 4096 entries (about 500 KB) hold the body of any ordinary loop or macro; a large file just streams through.
+  // They are allocated at the first replay (a loop's #end, a macro call): a scene read once has no use for them.
   constexpr unsigned kBits = 12;
-  if (lex_cache_.empty()) lex_cache_.resize(std::size_t{1} << kBits);
+  if (lex_cache_.empty()) {
+    if (!replayed_) return lex_token(file, at);
+    lex_cache_.resize(std::size_t{1} << kBits);
+  }
   const std::uint64_t key = (reinterpret_cast<std::uintptr_t>(&file) >> 4) * 0x9E3779B97F4A7C15ull ^ at.offset;
   LexCacheEntry& e = lex_cache_[static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - kBits))];
   if (e.file == &file && e.offset == at.offset) return e.token;
@@ -278,6 +282,7 @@ void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
 }
 
 void Interpreter::seek(std::size_t frame, LexPosition pos) {
+  replayed_ = true;
   frames_.resize(frame + 1);
   frames_.back().pos = pos;
   pushed_back_.clear();
@@ -342,6 +347,7 @@ void Interpreter::invoke_macro(const Token& name) {
   symbols_.push_scope();
   for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
   frames_.push_back(Frame{macro.file, macro.body, Frame::Kind::macro, name.loc, name.text});
+  replayed_ = true;
   Control c;
   c.kind = Control::Kind::macro_call;
   c.frame = frames_.size() - 1;
