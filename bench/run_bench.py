@@ -402,7 +402,8 @@ def environment_lines(args):
     return [f"date: {datetime.datetime.now().isoformat(timespec='seconds')}",
             f"machine: {cpu}, {os.cpu_count()} logical CPUs",
             f"POV-Ray: {ver}; povtrace: {args.povtrace} (repository commit {commit})",
-            f"image {args.width}x{args.height}, -A, +FE, +WT{args.threads} for both, {args.reps} repetitions each",
+            f"image {args.width}x{args.height} (parse_* scenes {PARSE_SIZE[0]}x{PARSE_SIZE[1]}), -A, +FE, "
+            f"+WT{args.threads} for both, {args.reps} repetitions each",
             f"peak memory: {memory}"]
 
 
