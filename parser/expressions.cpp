@@ -146,6 +146,8 @@ Numeric Interpreter::parse_expression() {
   Token q = peek_raw();
   if (!q.is("?")) return value;
   next();
+  // `c ? a : c ? a : …` recurses here without passing parse_unary's guard at each level.
+  const NestingGuard guard(*this, q);
   const bool c = std::fabs(to_float(value, q)) > kEqualEpsilon;
   Numeric a = parse_expression();
   expect(":", " in the conditional expression c ? a : b");

@@ -410,7 +410,8 @@ INSTANTIATE_TEST_SUITE_P(
                       NestingCase{"TransformBlocks", "transform { ", "", " }", "sphere { 0, 1 ", " }"},
                       NestingCase{"Unions", "union { ", "object { S }", " }", "", ""},
                       NestingCase{"StringFunctions", "concat(\"x\", ", "strupr(\"a\")", ")", "#declare A = ", ";"},
-                      NestingCase{"MacroArguments", "M(", "1", ")", "#macro M(P) P #end #declare A = ", ";"}),
+                      NestingCase{"MacroArguments", "M(", "1", ")", "#macro M(P) P #end #declare A = ", ";"},
+                      NestingCase{"ConditionalChain", "1 ? 1 : ", "1", "", "#declare A = (", ");"}),
     [](const auto& p) { return p.param.name; });
 
 // Issue 3 item 7: input far deeper than any scene — a result or an error, never a stack overflow.
