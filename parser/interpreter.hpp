@@ -58,6 +58,11 @@ class Interpreter {
   // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
   Token peek_raw();
   void unget(const Token& t) { pushed_back_.push_back(t); }
+  Token pop_pushed_back() {
+    Token t = std::move(pushed_back_.back());
+    pushed_back_.pop_back();
+    return t;
+  }
   Token expect(std::string_view symbol, std::string_view context);
   bool accept(std::string_view symbol);   // consumes the token if it is `symbol`
   std::string expect_identifier_raw(std::string_view context);

@@ -115,13 +115,9 @@ Token Interpreter::next() {
     // A directive may itself look ahead and push a token back: that token comes first, before reading on.
     // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks; tokens put
     // back after next() are, and are not processed twice (no second deprecation warning).
-    Token t;
-    if (!pushed_back_.empty()) {
-      t = std::move(pushed_back_.back());
-      pushed_back_.pop_back();
-    } else {
-      t = raw();
-    }
+    // Constructed from its source, not default-constructed and assigned: zero-filling a Token first was a
+    // quarter of this function's time.
+    Token t = pushed_back_.empty() ? raw() : pop_pushed_back();
     if (t.processed) return t;
     // A directive or macro call reads its operands with next(), which may run another directive or call before
     // the first one returns (`#declare A = #declare B = …`, `M(M(M(…)))`): they nest like expressions.
