@@ -45,6 +45,13 @@ struct Bounds {
 
 enum class ShapeType : std::uint8_t { sphere, plane, box };
 
+// Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
+// derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is
+// stored once) and immutable once built.
+struct ShapeData {
+  virtual ~ShapeData() = default;
+};
+
 // One geometric primitive in its own object space plus the transform to world space.
 struct Primitive {
   ShapeType type = ShapeType::sphere;
@@ -59,27 +66,52 @@ struct Primitive {
   std::uint32_t object = 0;      // index of the top-level scene object this primitive belongs to
   bool casts_shadow = true;      // false for no_shadow objects
   bool inverse = false;          // inside/outside flipped
+  std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
 };
 
-// Nearest surface found along a ray.
+// One intersection of a ray with a surface, with what shading needs to know about where it is.
+struct SurfaceHit {
+  double t = tolerance::bound_huge;   // world distance along the (unit) world ray
+  const Primitive* leaf = nullptr;    // the primitive whose surface this is: the one tested, or the CSG child hit
+  std::uint32_t element = 0;          // which part of the leaf (a mesh's triangle index)
+  double u = 0, v = 0;                // where on that part (barycentric coordinates on a triangle)
+};
+// Scratch list of hits. Shapes with many roots (CSG, meshes) append to one, so that a ray allocates only while a
+// thread's buffer is still growing.
+using HitBuffer = std::vector<SurfaceHit>;
+
+// Nearest surface found along a ray: the top-level primitive (index into Accelerator::primitives()) and the surface
+// hit inside it.
 struct Hit {
   double t = tolerance::bound_huge;
   std::uint32_t primitive = ~0u;
+  SurfaceHit surface;
   bool found() const { return primitive != ~0u; }
 };
 
-// Every intersection of a ray with one primitive, as CSG will need them (depth-sorted, up to 2 for convex
-// shapes). Depths are world distances along the (unit) world ray; only roots with depth > the shape's
-// DEPTH_TOLERANCE and < max_distance (where POV-Ray applies it) are returned.
+// Every intersection of a ray with a primitive whose surface has few roots (the quadric-like shapes: depth-sorted,
+// at most 4). Depths are world distances along the (unit) world ray; only roots with depth > the shape's
+// DEPTH_TOLERANCE and < max_distance (where POV-Ray applies it) are returned. Shapes with data (CSG, meshes) have
+// no fixed bound on their roots and answer through collect_hits only.
 struct Intersections {
-  double t[2];
+  static constexpr int capacity = 4;
+  double t[capacity];
   int count = 0;
 };
 Intersections intersect_all(const Primitive& p, const Ray& ray);
 
+// Appends every intersection of p with the ray (same depth rules as intersect_all, any order) to `out`. Works for
+// every shape.
+void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
+
+// The nearest intersection of p with depth in (t_min, t_max); false if there is none. Works for every shape.
+bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+
 // World-space unit normal at a world-space point on the primitive (not flipped toward the ray; `inverse` does
 // not change it either — the shading side flips normals to face the viewer as POV-Ray does).
 Vec3 surface_normal(const Primitive& p, Vec3 world_point);
+// The same at a hit, for every shape (the leaf primitive, and for meshes the triangle and its coordinates).
+Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point);
 
 // POV-Ray's inside test for the primitive at a world point (pipeline docs §8 table), honouring `inverse`.
 bool inside(const Primitive& p, Vec3 world_point);
@@ -99,7 +131,7 @@ class Accelerator {
   // Nearest hit with t in (t_min, t_max): t_min = MIN_ISECT_DEPTH for ordinary rays.
   Hit closest_hit(const Ray& ray, double t_min, double t_max) const;
 
-  // Calls visit(primitive_index, t) for every intersection with t in (t_min, t_max) of a shadow-casting
+  // Calls visit(primitive_index, surface_hit) for every intersection with t in (t_min, t_max) of a shadow-casting
   // primitive, in no particular order; visit returns false to stop early. Used by shadow rays (opaque objects
   // stop at the first hit; transparent ones are filtered at every crossing).
   template <class Visit>
@@ -121,7 +153,7 @@ class Accelerator {
   std::vector<Node> nodes_;               // nodes_[0] is the root; left child of node i is i + 1
   // Build and traversal live in renderer/accel/bvh.cpp. for_each_shadow_hit forwards to this non-template walk
   // through a plain function pointer plus context (no allocation, one indirect call per reported root).
-  using ShadowVisitFn = bool (*)(void* context, std::uint32_t primitive, double t);
+  using ShadowVisitFn = bool (*)(void* context, std::uint32_t primitive, const SurfaceHit& hit);
   void shadow_traverse(const Ray& ray, double t_min, double t_max, ShadowVisitFn visit, void* context) const;
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, int depth, const std::vector<Bounds>& bounds,
                            const std::vector<Vec3>& centroids);
@@ -131,13 +163,13 @@ class Accelerator {
 template <class Visit>
 void Accelerator::for_each_shadow_hit(const Ray& ray, double t_min, double t_max, Visit&& visit) const {
   using V = std::remove_reference_t<Visit>;
-  ShadowVisitFn thunk = [](void* context, std::uint32_t primitive, double t) -> bool {
+  ShadowVisitFn thunk = [](void* context, std::uint32_t primitive, const SurfaceHit& hit) -> bool {
     V& v = *static_cast<V*>(context);
-    if constexpr (std::is_void_v<std::invoke_result_t<V&, std::uint32_t, double>>) {
-      v(primitive, t);
+    if constexpr (std::is_void_v<std::invoke_result_t<V&, std::uint32_t, const SurfaceHit&>>) {
+      v(primitive, hit);
       return true;
     } else {
-      return static_cast<bool>(v(primitive, t));
+      return static_cast<bool>(v(primitive, hit));
     }
   };
   shadow_traverse(ray, t_min, t_max, thunk, const_cast<void*>(static_cast<const void*>(std::addressof(visit))));

@@ -42,14 +42,15 @@ Radiance Tracer::trace(const Ray& ray, int level, double weight) {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
   if (!hit.found()) return background();
-  return shade_hit(ray, scene_.accelerator.primitives()[hit.primitive], hit.t, level, weight);
+  return shade_hit(ray, hit.surface, level, weight);
 }
 
 Radiance Tracer::background() const { return {scene_.background, scene_.background_transmit}; }
 
-Radiance Tracer::shade_hit(const Ray& ray, const Primitive& prim, double t, int level, double weight) {
-  const Vec3 point = ray.origin + ray.direction * t;
-  const Vec3 raw_normal = surface_normal(prim, point);
+Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight) {
+  const Primitive& prim = *hit.leaf;
+  const Vec3 point = ray.origin + ray.direction * hit.t;
+  const Vec3 raw_normal = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 normal = dot(raw_normal, ray.direction) > 0 ? -raw_normal : raw_normal;
   const Material& material = scene_.materials[prim.material];
@@ -129,15 +130,14 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance) {
   // Hits count only with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE).
   const Ray ray{point, to_light};
   scene_.accelerator.for_each_shadow_hit(
-      ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t index, double t) {
-        const Primitive& p = scene_.accelerator.primitives()[index];
-        const Material& m = scene_.materials[p.material];
+      ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
+        const Material& m = scene_.materials[hit.leaf->material];
         if (m.opaque) {
           f = {0, 0, 0};
           return false;
         }
         // A transparent object filters at every surface crossing, through all its layers (§3).
-        const Vec3 at = point + to_light * t;
+        const Vec3 at = point + to_light * hit.t;
         for (const RenderLayer& layer : m.layers) f = mul(f, pass_through(evaluate_pigment(layer.pigment, at)));
         return !all_below(f, tolerance::epsilon);
       });

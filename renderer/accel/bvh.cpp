@@ -76,21 +76,20 @@ inline bool slab_hit(const Bounds& b, const SlabRay& r, double t_min, double t_m
 struct Nearest {
   double t;
   std::uint32_t primitive = ~0u;
+  SurfaceHit surface;
 };
 
 // Considers the nearest root of primitive i above t_min; keeps it if nearer than the current best (ties: lower
 // index wins).
 inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double t_min, Nearest& best) {
-  const Intersections xs = intersect_all(p, ray);
-  for (int k = 0; k < xs.count; ++k) {
-    const double t = xs.t[k];
-    if (!(t > t_min)) continue;
-    if (t < best.t || (t == best.t && best.primitive != ~0u && i < best.primitive)) {
-      best.t = t;
-      best.primitive = i;
-    }
-    return;  // roots are depth-sorted: only the first one above t_min matters
-  }
+  // A hit at exactly the best depth may still win the tie, so the search interval ends just above it.
+  const double t_max = best.primitive != ~0u && i < best.primitive ? std::nextafter(best.t, tolerance::bound_huge)
+                                                                   : best.t;
+  SurfaceHit hit;
+  if (!nearest_hit(p, ray, t_min, t_max, hit)) return;
+  best.t = hit.t;
+  best.primitive = i;
+  best.surface = hit;
 }
 
 Hit to_hit(const Nearest& best) {
@@ -98,6 +97,7 @@ Hit to_hit(const Nearest& best) {
   if (best.primitive != ~0u) {
     h.t = best.t;
     h.primitive = best.primitive;
+    h.surface = best.surface;
   }
   return h;
 }
@@ -216,7 +216,7 @@ std::uint32_t Accelerator::build_node(std::uint32_t begin, std::uint32_t end, in
 }
 
 Hit Accelerator::closest_hit(const Ray& ray, double t_min, double t_max) const {
-  Nearest best{t_max};
+  Nearest best{t_max, ~0u, {}};
   for (const std::uint32_t i : unbounded_) consider(primitives_[i], i, ray, t_min, best);
   const SlabRay slab(ray);
   double t_root = 0;
@@ -262,13 +262,16 @@ Hit Accelerator::closest_hit(const Ray& ray, double t_min, double t_max) const {
 
 void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, ShadowVisitFn visit,
                                   void* context) const {
-  // Reports every root in (t_min, t_max) of primitive i; returns false when the visitor asked to stop.
+  // Reports every root in (t_min, t_max) of primitive i; returns false when the visitor asked to stop. The
+  // visitor only shades (it never traces), so one buffer per thread serves every call.
+  thread_local HitBuffer hits;
   auto report = [&](std::uint32_t i) {
     const Primitive& p = primitives_[i];
     if (!p.casts_shadow) return true;
-    const Intersections xs = intersect_all(p, ray);
-    for (int k = 0; k < xs.count; ++k)
-      if (xs.t[k] > t_min && xs.t[k] < t_max && !visit(context, i, xs.t[k])) return false;
+    hits.clear();
+    collect_hits(p, ray, hits);
+    for (const SurfaceHit& h : hits)
+      if (h.t > t_min && h.t < t_max && !visit(context, i, h)) return false;
     return true;
   };
   for (const std::uint32_t i : unbounded_)
@@ -306,7 +309,7 @@ void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, Sh
 }
 
 Hit Accelerator::closest_hit_brute_force(const Ray& ray, double t_min, double t_max) const {
-  Nearest best{t_max};
+  Nearest best{t_max, ~0u, {}};
   for (std::uint32_t i = 0; i < primitives_.size(); ++i) consider(primitives_[i], i, ray, t_min, best);
   return to_hit(best);
 }

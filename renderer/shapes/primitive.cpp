@@ -49,6 +49,24 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
   return {};
 }
 
+void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+  const Intersections xs = intersect_all(p, ray);
+  for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
+}
+
+bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+  const Intersections xs = intersect_all(p, ray);
+  for (int k = 0; k < xs.count; ++k) {
+    if (!(xs.t[k] > t_min)) continue;
+    if (!(xs.t[k] < t_max)) return false;   // roots are depth-sorted: the first one above t_min decides
+    hit = SurfaceHit{xs.t[k], &p, 0, 0, 0};
+    return true;
+  }
+  return false;
+}
+
+Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) { return surface_normal(*hit.leaf, world_point); }
+
 Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
   switch (p.type) {
     case ShapeType::sphere: return shapes::sphere_normal(p, world_point);

@@ -136,7 +136,7 @@ TEST(Bvh, EmptyAndDefault) {
   const Accelerator empty(std::vector<Primitive>{});
   EXPECT_FALSE(empty.closest_hit({{0, 0, 0}, {0, 0, 1}}, 1e-4, 1e10).found());
   int visits = 0;
-  empty.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e10, [&](std::uint32_t, double) { return ++visits, true; });
+  empty.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e10, [&](std::uint32_t, const SurfaceHit&) { return ++visits, true; });
   EXPECT_EQ(visits, 0);
   EXPECT_TRUE(empty.primitives().empty());
   EXPECT_EQ(Access::node_count(empty), 0u);
@@ -173,8 +173,8 @@ TEST(Bvh, SmallSceneHandChecked) {
   EXPECT_DOUBLE_EQ(h.t, 11);
   // Shadow hits between 0 and 15: box (4, 5) and sphere 0 (9, 11).
   std::multiset<std::pair<std::uint32_t, double>> seen;
-  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 15, [&](std::uint32_t i, double t) {
-    seen.insert({i, t});
+  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 15, [&](std::uint32_t i, const SurfaceHit& s) {
+    seen.insert({i, s.t});
     return true;
   });
   const std::multiset<std::pair<std::uint32_t, double>> expect{{1, 4}, {1, 5}, {0, 9}, {0, 11}};
@@ -236,8 +236,8 @@ TEST(Bvh, ShadowHitsMatchBruteForce) {
     const double t_min = tolerance::shadow;
     const double t_max = k % 2 ? 200 * u(rng) : tolerance::bound_huge;
     std::multiset<std::pair<std::uint32_t, double>> fast, slow;
-    a.for_each_shadow_hit(r, t_min, t_max, [&](std::uint32_t i, double t) {
-      fast.insert({i, t});
+    a.for_each_shadow_hit(r, t_min, t_max, [&](std::uint32_t i, const SurfaceHit& h) {
+      fast.insert({i, h.t});
       return true;
     });
     const auto prims = a.primitives();
@@ -259,19 +259,19 @@ TEST(Bvh, ShadowVisitorStopsEarly) {
   for (int k = 0; k < 50; ++k) row.push_back(sphere({0, 0, 3.0 * k + 5}, 1));
   const Accelerator a(row);
   int visits = 0;
-  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e9, [&](std::uint32_t, double) {
+  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e9, [&](std::uint32_t, const SurfaceHit&) {
     ++visits;
     return false;
   });
   EXPECT_EQ(visits, 1);
   // Also a visitor returning void (never stops) sees all 100 crossings.
   int all = 0;
-  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e9, [&](std::uint32_t, double) { ++all; });
+  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 1e9, [&](std::uint32_t, const SurfaceHit&) { ++all; });
   EXPECT_EQ(all, 100);
   // A const visitor object works too.
   struct Counter {
     int* n;
-    bool operator()(std::uint32_t, double) const { return ++*n < 7; }
+    bool operator()(std::uint32_t, const SurfaceHit&) const { return ++*n < 7; }
   };
   int counted = 0;
   const Counter counter{&counted};
@@ -284,7 +284,7 @@ TEST(Bvh, NoShadowPrimitivesAreSkipped) {
   blocker.casts_shadow = false;
   const Accelerator a(std::vector<Primitive>{blocker, sphere({0, 0, 10}, 1)});
   std::vector<std::uint32_t> seen;
-  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 100, [&](std::uint32_t i, double) {
+  a.for_each_shadow_hit({{0, 0, 0}, {0, 0, 1}}, 1e-3, 100, [&](std::uint32_t i, const SurfaceHit&) {
     seen.push_back(i);
     return true;
   });
