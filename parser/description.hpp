@@ -54,13 +54,17 @@ struct Finish {
   double specular = 0.0;
   double roughness = 0.05;       // as written; the shading exponent is 1/roughness
   double metallic = 0.0;
-  Colour reflection_min{}, reflection_max{};
+  Colour reflection_min{}, reflection_max{};   // single precision, filter/transmit unused
   double reflection_falloff = 1.0;
-  double reflection_exponent = 1.0;
+  double reflection_exponent = 1.0;   // as written (`exponent E`); POV-Ray raises the reflected colour to 1/E
   bool reflection_fresnel = false;
   double reflection_metallic = 0.0;
   bool conserve_energy = false;
   double crand = 0.0;
+  // Pre-3.1 finish items that POV-Ray moves into the object's interior when the object is placed (Post_Process):
+  // `ior` (when given) and `refraction` (always, default 1: it scales what is seen through the object).
+  std::optional<double> legacy_ior;
+  double legacy_refraction = 1.0;
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -81,7 +85,8 @@ struct Interior {
   double ior = 1.0;
   double fade_distance = 0.0;
   double fade_power = 0.0;
-  Colour fade_colour{};
+  Colour fade_colour{};          // single precision, filter/transmit unused
+  double refraction = 1.0;       // legacy `refraction`: scales the light seen through the object
   Unsupported unsupported;
 };
 

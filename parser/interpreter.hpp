@@ -179,6 +179,8 @@ class Interpreter {
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
   Finish parse_finish_block(const Token& keyword, const Finish& start);
+  void parse_finish_reflection(Finish& f);
+  double optional_float(double fallback);
   Interior parse_interior_block(const Token& keyword, const Interior& start);
   std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);
   bool try_pigment_item(const Token& t, Pigment& p);

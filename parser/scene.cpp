@@ -218,6 +218,17 @@ void Interpreter::place_light(Light light, const SourceLoc& at) {
 // is forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
 // current #default texture.
 void Interpreter::post_process(Object& object) {
+  // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
+  // layer's `ior` when given, and its `refraction` always.
+  if (object.texture && !object.texture->layers.empty()) {
+    const Finish& top = object.texture->layers.back().finish;
+    if (top.legacy_ior || top.legacy_refraction != 1.0 || object.interior) {
+      Interior in = object.interior.value_or(Interior{});
+      if (top.legacy_ior) in.ior = *top.legacy_ior;
+      in.refraction = top.legacy_refraction;
+      object.interior = in;
+    }
+  }
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
     for (auto& child : csg->children) {
       if (!child.texture) child.texture = object.texture;

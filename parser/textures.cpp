@@ -177,6 +177,20 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
       const bool has_value = n.kind == TokenKind::number || n.is("(") || n.is("-") ||
                              (n.kind == TokenKind::identifier && !is_reserved_word(n.text));
       f.metallic = has_value ? parse_float() : 1.0;
+    } else if (k == "reflection") {
+      parse_finish_reflection(f);
+    } else if (k == "reflection_exponent") {
+      f.reflection_exponent = parse_float();
+    } else if (k == "conserve_energy") {
+      f.conserve_energy = true;
+    } else if (k == "ior") {
+      // Pre-3.1 syntax: POV-Ray warns and moves the value into the object's interior when it is placed.
+      f.legacy_ior = parse_float();
+      warn(t.loc, "the index of refraction should be given in 'interior { ior … }'");
+    } else if (k == "refraction") {
+      f.legacy_refraction = parse_float();
+      warn(t.loc, "'refraction' is not needed to turn refraction on; to attenuate, use fade_power and "
+                  "fade_distance in 'interior { }'");
     } else if (k == "crand") {
       f.crand = parse_float();
       taint(f.unsupported, UnsupportedFeature{"the finish item 'crand' (random speckle)", t.loc});
@@ -184,17 +198,81 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
       taint(f.unsupported, skip_unsupported(t, "the finish item '" + std::string(k) + "'"));
     } else {
       fail_expected(t, "a finish item (ambient, emission, diffuse, brilliance, phong, phong_size, specular, "
-                       "roughness, metallic) or '}'");
+                       "roughness, metallic, reflection, conserve_energy) or '}'");
     }
     t = next();
   }
-  if (diffuse_albedo) f.diffuse *= (f.brilliance + 1.0) / 2.0;
+  if (diffuse_albedo) {
+    f.diffuse *= (f.brilliance + 1.0) / 2.0;
+    f.diffuse_back *= (f.brilliance + 1.0) / 2.0;   // both values, as POV-Ray's Parse_Finish rescales them
+  }
   if (phong_albedo) f.phong *= (f.phong_size + 1.0) / 2.0;
   if (specular_albedo) {
     const double n = 1.0 / f.roughness;
     f.specular *= (n + 2.0) / (4.0 * (2.0 - std::pow(2.0, -n / 2.0)));
   }
   return f;
+}
+
+// POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the
+// default. A keyword that is an item of the enclosing block (`metallic falloff 2`) is no float.
+double Interpreter::optional_float(double fallback) {
+  const Token n = peek();
+  static const std::string_view float_words[] = {"true", "false", "on", "off", "yes", "no", "pi", "version",
+                                                 "clock", "clock_delta", "clock_on"};
+  bool starts = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") || n.is("!");
+  if (n.kind == TokenKind::identifier) {
+    if (!is_reserved_word(n.text)) {
+      const Value* v = lookup(n);
+      starts = v && std::holds_alternative<Numeric>(*v);
+    } else {
+      for (auto w : float_words) starts = starts || n.text == w;
+    }
+  }
+  return starts ? parse_float() : fallback;
+}
+
+// `reflection C` (old form: min = max = C, falloff 1, no fresnel) or `reflection { Cmin [, Cmax] [fresnel [B]]
+// [falloff F] [exponent E] [metallic [M]] }` (pipeline §4). In the block, a single colour is both min and max,
+// except that `fresnel` without a second colour makes min 0 so that the fresnel term has an effect.
+void Interpreter::parse_finish_reflection(Finish& f) {
+  auto reflection_colour = [this] {
+    Colour c = parse_colour();
+    c = Colour{static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), 0, 0};
+    return c;
+  };
+  if (!accept("{")) {
+    f.reflection_max = f.reflection_min = reflection_colour();
+    f.reflection_falloff = 1.0;
+    f.reflection_fresnel = false;
+    return;
+  }
+  f.reflection_min = reflection_colour();
+  accept(",");
+  bool second_colour = false;
+  if (const Token n = peek(); !n.is("}") && !n.is("fresnel") && !n.is("falloff") && !n.is("exponent") &&
+                              !n.is("metallic")) {
+    f.reflection_max = reflection_colour();
+    second_colour = true;
+  } else {
+    f.reflection_max = f.reflection_min;
+  }
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (t.is("fresnel")) {
+      const double on = optional_float(1.0);
+      if (on != 0.0 && on != 1.0) fail_at(t, "fresnel must be true or false");
+      f.reflection_fresnel = on != 0.0;
+      if (!second_colour && f.reflection_fresnel) f.reflection_min = Colour{};
+    } else if (t.is("falloff")) {
+      f.reflection_falloff = parse_float();
+    } else if (t.is("exponent")) {
+      f.reflection_exponent = parse_float();
+    } else if (t.is("metallic")) {
+      f.reflection_metallic = optional_float(1.0);
+    } else {
+      fail_expected(t, "fresnel, falloff, exponent, metallic or '}' in reflection { }");
+    }
+  }
 }
 
 Interior Interpreter::parse_interior_block(const Token& keyword, const Interior& start) {
@@ -208,9 +286,20 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
   }
   while (!t.is("}")) {
     if (t.is("ior")) in.ior = parse_float();
-    else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+    else if (t.is("fade_distance")) in.fade_distance = parse_float();
+    else if (t.is("fade_power")) in.fade_power = parse_float();
+    else if (t.is("fade_color") || t.is("fade_colour")) {
+      const Colour c = parse_colour();
+      in.fade_colour = Colour{static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), 0, 0};
+    } else if (t.is("refraction")) {
+      // POV-Ray accepts it here but overwrites it with the finish's (legacy) refraction when the object is
+      // placed, so it never has an effect.
+      parse_float();
+      warn(t.loc, "'refraction' is not needed to turn refraction on; to attenuate, use fade_power and "
+                  "fade_distance in 'interior { }'");
+    } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(in.unsupported, skip_unsupported(t, "the interior item '" + std::string(t.text) + "'"));
-    else fail_expected(t, "ior or '}' in interior { }");
+    else fail_expected(t, "ior, fade_distance, fade_power, fade_color or '}' in interior { }");
     t = next();
   }
   return in;
