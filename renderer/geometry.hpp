@@ -137,6 +137,13 @@ class Accelerator {
   template <class Visit>
   void for_each_shadow_hit(const Ray& ray, double t_min, double t_max, Visit&& visit) const;
 
+  // Calls visit(primitive_index) for every primitive whose inside test holds at `point` (POV-Ray's containing
+  // objects of a ray origin), in primitive order.
+  template <class Visit>
+  void for_each_containing(Vec3 point, Visit&& visit) const {
+    for (const std::uint32_t i : containing_indices(point)) visit(i);
+  }
+
   // Brute-force reference used by tests (same contract as closest_hit).
   Hit closest_hit_brute_force(const Ray& ray, double t_min, double t_max) const;
 
@@ -153,6 +160,7 @@ class Accelerator {
   std::vector<Node> nodes_;               // nodes_[0] is the root; left child of node i is i + 1
   // Build and traversal live in renderer/accel/bvh.cpp. for_each_shadow_hit forwards to this non-template walk
   // through a plain function pointer plus context (no allocation, one indirect call per reported root).
+  std::vector<std::uint32_t> containing_indices(Vec3 point) const;
   using ShadowVisitFn = bool (*)(void* context, std::uint32_t primitive, const SurfaceHit& hit);
   void shadow_traverse(const Ray& ray, double t_min, double t_max, ShadowVisitFn visit, void* context) const;
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, int depth, const std::vector<Bounds>& bounds,

@@ -35,6 +35,9 @@ Material make_material(const Texture& texture, const std::optional<Interior>& in
     layer.finish = it->finish;
     layer.specular_exponent = 1.0 / it->finish.roughness;
     layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
+    const auto nonzero = [](const Colour& c) { return c.r != 0 || c.g != 0 || c.b != 0; };
+    layer.reflects = nonzero(it->finish.reflection_min) || nonzero(it->finish.reflection_max);
+    layer.reflection_exponent_inverse = 1.0 / it->finish.reflection_exponent;
     // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3).
     if (!pigment_has_transparency(it->pigment)) m.opaque = true;
     m.layers.push_back(layer);
@@ -115,26 +118,18 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
   }
   add_primitives(o, materials.material_for(o), object_index, out);
 }
-// Refraction uses ior/1 at every surface (each object seen from air). POV-Ray tracks the list of interiors
-// a ray is in, which differs where refracting objects overlap or nest: say so instead of differing silently.
-void warn_about_nested_refraction(const std::vector<Primitive>& primitives, const std::vector<Material>& materials,
-                                  std::vector<std::string>& warnings) {
-  std::vector<const Primitive*> refracting;
-  for (const auto& p : primitives)
-    if (materials[p.material].interior.ior != 1.0) refracting.push_back(&p);
-  for (std::size_t i = 0; i < refracting.size(); ++i)
-    for (std::size_t j = i + 1; j < refracting.size(); ++j) {
-      const Bounds a = world_bounds(*refracting[i]), b = world_bounds(*refracting[j]);
-      const bool overlap = a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
-                           a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
-      if (overlap) {
-        warnings.push_back("objects with an ior overlap or nest; povtrace refracts each surface as seen from air "
-                           "(ior 1), while POV-Ray uses the ior of the enclosing object: the image may differ there");
-        return;
-      }
-    }
-}
 }  // namespace
+
+// Every object has an interior in POV-Ray; a camera ray starts inside those whose object contains its origin
+// (POV-Ray's containing-interiors list, §4).
+std::vector<InteriorRef> RenderScene::containing_interiors(Vec3 point) const {
+  std::vector<InteriorRef> out;
+  accelerator.for_each_containing(point, [&](std::uint32_t i) {
+    const Primitive& p = accelerator.primitives()[i];
+    out.push_back(InteriorRef{p.object, &materials[p.material].interior});
+  });
+  return out;
+}
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
   RenderScene r;
@@ -144,8 +139,14 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
-  warn_about_nested_refraction(primitives, r.materials, r.warnings);
+  for (const auto& p : primitives) {
+    const Material& m = r.materials[p.material];
+    const Interior& in = m.interior;
+    if (!m.opaque && p.casts_shadow && in.fade_power > 0 && std::fabs(in.fade_distance) > tolerance::epsilon)
+      r.any_shadow_fade = true;
+  }
   r.accelerator = Accelerator(std::move(primitives));
+  r.camera_interiors = r.containing_interiors(scene.camera.location);
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
                           scene.camera.right};
@@ -158,9 +159,13 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   if (scene.language_version < 370) {
     r.background = options.output_alpha ? Rgb{0, 0, 0} : rgb_of(bg);
     r.background_transmit = options.output_alpha ? 1.0 : 0.0;
+    r.background_reflected = rgb_of(bg);
   } else {
     r.background = rgb_of(bg) * (1.0 - bg.t);
     r.background_transmit = options.output_alpha ? bg.t : 0.0;
+    // Without alpha output the parser has already premultiplied the background; with it, reflected rays see its
+    // colour with the transparency ignored.
+    r.background_reflected = options.output_alpha ? rgb_of(bg) : r.background;
   }
   // Working gamma (pipeline §6): assumed_gamma if given; #version ≥ 3.7 alone means 1.0; otherwise legacy.
   if (scene.settings.assumed_gamma) {

@@ -9,6 +9,7 @@
 
 #include "parser/description.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/interior_list.hpp"
 
 namespace povtrace::render {
 
@@ -31,6 +32,8 @@ struct RenderLayer {
   Finish finish;
   double specular_exponent = 20;   // 1/roughness
   bool has_highlights = false;     // phong or specular non-zero
+  bool reflects = false;           // some reflection colour is non-zero
+  double reflection_exponent_inverse = 1;   // POV-Ray raises the reflected colour to 1/exponent
 };
 
 struct Material {
@@ -63,11 +66,15 @@ struct RenderScene {
   RenderCamera camera;
   GlobalSettings settings;
   Rgb background;                    // colour a missing camera ray returns (pipeline §5: premultiplied by 1 − t)
+  Rgb background_reflected;          // colour a missing reflected ray returns (opaque, §5)
   double background_transmit = 0;    // transmit of a miss (non-zero only with alpha output)
   int language_version = 370;
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;
   bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
+  bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
+  std::vector<InteriorRef> camera_interiors;   // the interiors that contain the camera location
+  std::vector<InteriorRef> containing_interiors(Vec3 point) const;
   std::vector<std::string> warnings; // approximations the build had to make, for the user to see
 };
 

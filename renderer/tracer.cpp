@@ -34,70 +34,211 @@ double metallic_fade(double x) {
 
 Radiance Tracer::trace_camera_ray(const Ray& ray) {
   ++counts_.camera;
-  return trace(ray, 1, 1.0);
+  RayState state;
+  // A perspective camera's rays all start at its location; an orthographic camera's start across its image
+  // plane, so POV-Ray finds the containing objects for each of them.
+  if (scene_.camera.projection == Projection::orthographic) {
+    for (const InteriorRef& r : scene_.containing_interiors(ray.origin)) state.interiors.append(r);
+  } else {
+    for (const InteriorRef& r : scene_.camera_interiors) state.interiors.append(r);
+  }
+  return trace(ray, 1, 1.0, state);
 }
 
 // Levels beyond max_trace_level and rays lighter than adc_bailout yield black, not the background (§4).
-Radiance Tracer::trace(const Ray& ray, int level, double weight) {
+Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
-  if (!hit.found()) return background();
-  return shade_hit(ray, hit.surface, level, weight);
+  if (!hit.found()) return background(state);
+  return shade_hit(ray, hit.surface, level, weight, state);
 }
 
-Radiance Tracer::background() const { return {scene_.background, scene_.background_transmit}; }
+// A reflected ray never sees the background's transparency: with alpha output, a mirror shows the background
+// colour, opaque (§5).
+Radiance Tracer::background(const RayState& state) const {
+  if (!state.alpha_background) return {scene_.background_reflected, 0};
+  return {scene_.background, scene_.background_transmit};
+}
 
-Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight) {
+InteriorRef Tracer::interior_of(const SurfaceHit& hit) const {
+  return InteriorRef{hit.leaf->object, &scene_.materials[hit.leaf->material].interior};
+}
+
+double Tracer::relative_ior(const InteriorRef& self, const RayState& state) const {
+  const InteriorList& in = state.interiors;
+  const double ior = self.interior->ior;
+  if (in.empty()) return ior;                        // entering from the atmosphere (ior 1)
+  if (!in.contains(self)) return ior / in.back().interior->ior;   // entering a new object
+  if (in.size() == 1) return 1.0 / ior;              // leaving into the atmosphere
+  return in.back().interior->ior / ior;              // leaving into another object (POV-Ray's formula as is)
+}
+
+namespace {
+// POV-Ray's reflectivity of one layer (§4 "Reflection amount"): c = cosine of incidence; `weight` is scaled to the
+// reflected ray's weight.
+Rgb reflectivity(const Finish& f, double c, double ior, double& weight) {
+  const Rgb lo = rgb_of(f.reflection_min), hi = rgb_of(f.reflection_max);
+  if (!f.reflection_fresnel) {
+    weight *= std::max(max_channel(hi), max_channel(lo));
+    const double k = std::fabs(f.reflection_falloff - 1.0) > tolerance::epsilon
+                         ? std::pow(1.0 - c, f.reflection_falloff)
+                         : 1.0 - c;
+    if (std::fabs(k) < tolerance::epsilon) return lo;
+    if (std::fabs(k - 1.0) < tolerance::epsilon) return hi;
+    return hi * k + lo * (1.0 - k);
+  }
+  Rgb r = hi;
+  const double g2 = ior * ior + c * c - 1.0;
+  if (g2 > 0) {
+    const double g = std::sqrt(g2);
+    const double a = (g - c) / (g + c);
+    const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    const double fr = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+    r = hi * fr + lo * (1.0 - fr);
+  }
+  weight *= max_channel(r);
+  return r;
+}
+
+bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
+}  // namespace
+
+Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
   const Primitive& prim = *hit.leaf;
   const Vec3 point = ray.origin + ray.direction * hit.t;
-  const Vec3 raw_normal = surface_normal(hit, point);
+  const Vec3 geometric = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
-  const Vec3 normal = dot(raw_normal, ray.direction) > 0 ? -raw_normal : raw_normal;
+  const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
+  const Vec3 normal = raw_normal;   // no normal perturbation yet: every layer's normal is the raw one
   const Material& material = scene_.materials[prim.material];
+  const InteriorRef self = interior_of(hit);
 
-  // Layers top first; each is weighted by what the layers above let through (§2 "Layers").
+  // Layers top first; each is weighted by what the layers above let through (§2 "Layers"). Their reflections are
+  // computed here and traced after the transmitted ray, unfiltered by the layers above (§4).
   Radiance out;
   Rgb filter{1, 1, 1};
   double trans = 1.0;
+  const std::size_t first_reflection = reflections_.size();
   for (const RenderLayer& layer : material.layers) {
+    if (trans <= scene_.settings.adc_bailout) break;
     const Colour s = evaluate_pigment(layer.pigment, point);
-    const Rgb lit = model_ == ShadingModel::povray ? lit_layer_povray(layer, s, point, normal, ray.direction)
-                                                   : lit_layer_textbook(layer, s, point, normal, ray.direction);
+    if (layer.reflects) {
+      const double c = -dot(ray.direction, normal);
+      double w = weight * trans;
+      const double ior = layer.finish.reflection_fresnel ? relative_ior(self, state) : 1.0;
+      Rgb amount = reflectivity(layer.finish, c, ior, w);
+      if (const double m = layer.finish.reflection_metallic; m != 0) {
+        const double fade = metallic_fade(std::fabs(std::acos(std::clamp(c, -1.0, 1.0))) / (M_PI / 2));
+        amount = mul(amount, Rgb{1, 1, 1} + (Rgb{s.r, s.g, s.b} - Rgb{1, 1, 1}) * (m * (1.0 - fade)));
+      }
+      reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal});
+    }
+    const Rgb lit = model_ == ShadingModel::povray ? lit_layer_povray(layer, s, point, normal, ray.direction, state)
+                                                   : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
     out.colour += mul(lit, filter);
     filter = mul(filter, pass_through(s));
+    // conserve_energy: what the layer reflects is no longer transmitted (§2 "Layers").
+    if (layer.reflects && layer.finish.conserve_energy) {
+      const Rgb a = reflections_.back().amount;
+      filter = mul(filter, Rgb{std::min(1.0, 1.0 - a.x), std::min(1.0, 1.0 - a.y), std::min(1.0, 1.0 - a.z)});
+    }
     trans = std::min(1.0, std::fabs(grey(filter)));
-    if (trans <= scene_.settings.adc_bailout) break;
   }
-  if (trans <= scene_.settings.adc_bailout) return out;
 
-  // Transmission (§4 "Transmission/refraction"): relative ior from the side the ray comes from.
-  const Vec3 outward = prim.inverse ? -raw_normal : raw_normal;
-  const bool entering = dot(outward, ray.direction) < 0;
-  const double ior = material.interior.ior;
-  const double eta = entering ? 1.0 / ior : ior;
-  const double next_weight = weight * max_channel(filter);
+  bool total_internal_reflection = false;
+  if (trans > scene_.settings.adc_bailout)
+    total_internal_reflection =
+        transmit(ray, hit, point, normal, raw_normal, level, weight, state, out, filter, trans);
+
+  // Reflections; after total internal reflection those sharing the top layer's normal are skipped (§4 TIR).
+  for (std::size_t i = first_reflection; i < reflections_.size(); ++i) {
+    const PendingReflection r = reflections_[i];
+    if (is_zero(r.amount)) continue;
+    if (total_internal_reflection && r.normal == normal) continue;
+    const Radiance seen = trace_reflection(ray, point, r.normal, raw_normal, level, r.weight, state);
+    if (r.exponent != 1.0)
+      out.colour += mul(r.amount, Rgb{std::pow(seen.colour.x, r.exponent), std::pow(seen.colour.y, r.exponent),
+                                      std::pow(seen.colour.z, r.exponent)});
+    else
+      out.colour += mul(r.amount, seen.colour);
+  }
+  reflections_.resize(first_reflection);
+  return out;
+}
+
+// The mirror ray about the layer normal, corrected when it would go into the geometric surface (a perturbed
+// normal can do that), traced one level deeper without background transparency (§4, §5).
+Radiance Tracer::trace_reflection(const Ray& ray, Vec3 point, Vec3 normal, Vec3 raw_normal, int level, double weight,
+                                  const RayState& state) {
+  Vec3 r = ray.direction - normal * (2.0 * dot(ray.direction, normal));
+  if (const double n = dot(r, raw_normal); n < 0) {
+    if (dot(r, normal) < 0) r = ray.direction - raw_normal * (2.0 * dot(ray.direction, raw_normal));
+    else r = r - raw_normal * (2.0 * n);
+  }
   ++counts_.secondary;
+  RayState reflected = state;
+  reflected.alpha_background = false;
+  return trace(Ray{point, normalize(r)}, level + 1, weight, reflected);
+}
+
+// Transmission (§4 "Transmission/refraction"): the relative ior comes from the interiors the ray is in.
+bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 normal, Vec3 raw_normal, int level,
+                      double weight, const RayState& state, Radiance& out, Rgb filter, double trans) {
+  const InteriorRef self = interior_of(hit);
+  const Interior& interior = *self.interior;
+  const double next_weight = weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
+  RayState next = state;
+  double eta;   // n_from / n_to
+  InteriorList& in = next.interiors;
+  if (in.empty()) {
+    in.append(self);
+    eta = 1.0 / interior.ior;
+  } else if (same_interior(in.back(), self)) {
+    in.remove(self);
+    eta = in.empty() ? interior.ior : interior.ior / in.back().interior->ior;
+  } else if (in.remove(self)) {
+    eta = 1.0;   // leaving the overlap of two objects: POV-Ray does not bend the ray
+  } else {
+    eta = in.back().interior->ior / interior.ior;
+    in.append(self);
+  }
+
+  // Fade of the light that travelled inside this interior, from the ray's origin to here (§4 "interior fade").
+  Rgb attenuation{interior.refraction, interior.refraction, interior.refraction};
+  if (state.interiors.contains(self) && std::fabs(interior.fade_distance) > tolerance::epsilon) {
+    const Rgb fc = rgb_of(interior.fade_colour);
+    const double depth = hit.t / interior.fade_distance;
+    if (interior.fade_power >= 1000) {
+      attenuation = mul(attenuation, Rgb{std::exp(-(1 - fc.x) * depth), std::exp(-(1 - fc.y) * depth),
+                                         std::exp(-(1 - fc.z) * depth)});
+    } else {
+      const double a = 1.0 + std::pow(depth, interior.fade_power);
+      attenuation = mul(attenuation, fc + (Rgb{1, 1, 1} - fc) / a);
+    }
+  }
+
+  ++counts_.secondary;
+  Radiance behind;
   if (std::fabs(eta - 1.0) < tolerance::epsilon) {
     // An ior-1 surface continues the ray without using up a trace level.
-    const Radiance behind = trace(Ray{point, ray.direction}, level, next_weight);
-    out.colour += mul(filter, behind.colour);
-    out.transmit = behind.transmit * trans;
-    return out;
+    behind = trace(Ray{point, ray.direction}, level, next_weight, next);
+  } else {
+    double m = dot(ray.direction, normal);
+    const Vec3 facing = m <= 0 ? normal : -normal;
+    m = std::fabs(m);
+    const double k = 1.0 + eta * eta * (m * m - 1.0);
+    if (k < 0) {
+      // Total internal reflection: the mirror ray (top layer's normal), not filtered by the layers (§4 TIR).
+      const Radiance reflected = trace_reflection(ray, point, normal, raw_normal, level, next_weight, state);
+      out.colour += mul(attenuation, reflected.colour);
+      return true;
+    }
+    const Vec3 refracted = ray.direction * eta + facing * (eta * m - std::sqrt(k));
+    behind = trace(Ray{point, normalize(refracted)}, level + 1, next_weight, next);
   }
-  const double m = std::fabs(dot(ray.direction, normal));
-  const double k = 1.0 + eta * eta * (m * m - 1.0);
-  if (k < 0) {
-    // Total internal reflection: the mirror ray, not filtered by the layers (§4 TIR).
-    const Vec3 mirrored = ray.direction - normal * (2.0 * dot(ray.direction, normal));
-    const Radiance reflected = trace(Ray{point, mirrored}, level + 1, next_weight);
-    out.colour += reflected.colour;
-    return out;
-  }
-  const Vec3 refracted = ray.direction * eta + normal * (eta * m - std::sqrt(k));
-  const Radiance behind = trace(Ray{point, normalize(refracted)}, level + 1, next_weight);
-  out.colour += mul(filter, behind.colour);
-  out.transmit = behind.transmit * trans;
-  return out;
+  out.colour += mul(mul(attenuation, filter), behind.colour);
+  out.transmit = grey(attenuation) * behind.transmit * trans;
+  return false;
 }
 
 bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const {
@@ -123,30 +264,73 @@ bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_li
   return !all_below(colour, tolerance::epsilon);
 }
 
-Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance) {
+namespace {
+// Fade of light that crossed `depth` inside an interior, on the shadow path (§3): unlike on the transmitted
+// path, only when fade_power > 0.
+Rgb shadow_fade(const Interior& in, double depth) {
+  if (!(in.fade_power > 0) || !(std::fabs(in.fade_distance) > tolerance::epsilon)) return {1, 1, 1};
+  const Rgb fc = rgb_of(in.fade_colour);
+  const double d = depth / in.fade_distance;
+  if (in.fade_power >= 1000) return {std::exp(-(1 - fc.x) * d), std::exp(-(1 - fc.y) * d), std::exp(-(1 - fc.z) * d)};
+  return fc + (Rgb{1, 1, 1} - fc) / (1.0 + std::pow(d, in.fade_power));
+}
+}  // namespace
+
+Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state) {
   if (!scene_.any_casts_shadow) return {1, 1, 1};
   ++counts_.shadow;
   Rgb f{1, 1, 1};
   // Hits count only with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE).
   const Ray ray{point, to_light};
+  // A transparent object filters at every surface crossing, through all its layers (§3).
+  auto filter_at = [&](const SurfaceHit& hit, const Material& m) {
+    const Vec3 at = point + to_light * hit.t;
+    for (const RenderLayer& layer : m.layers) f = mul(f, pass_through(evaluate_pigment(layer.pigment, at)));
+  };
+  if (!scene_.any_shadow_fade) {
+    scene_.accelerator.for_each_shadow_hit(
+        ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
+          const Material& m = scene_.materials[hit.leaf->material];
+          if (m.opaque) {
+            f = {0, 0, 0};
+            return false;
+          }
+          filter_at(hit, m);
+          return !all_below(f, tolerance::epsilon);
+        });
+    return f;
+  }
+  // With fading interiors the crossings are walked in order, tracking the interiors the shadow ray is in (it
+  // starts in those of the ray that reached the point), and light fades over each stretch inside one (§3).
+  thread_local std::vector<SurfaceHit> hits;
+  hits.clear();
+  bool blocked = false;
   scene_.accelerator.for_each_shadow_hit(
       ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-        const Material& m = scene_.materials[hit.leaf->material];
-        if (m.opaque) {
-          f = {0, 0, 0};
-          return false;
-        }
-        // A transparent object filters at every surface crossing, through all its layers (§3).
-        const Vec3 at = point + to_light * hit.t;
-        for (const RenderLayer& layer : m.layers) f = mul(f, pass_through(evaluate_pigment(layer.pigment, at)));
-        return !all_below(f, tolerance::epsilon);
+        blocked = scene_.materials[hit.leaf->material].opaque;
+        if (!blocked) hits.push_back(hit);
+        return !blocked;
       });
+  if (blocked) return {0, 0, 0};
+  std::sort(hits.begin(), hits.end(), [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+  InteriorList in = state.interiors;
+  double previous = 0;
+  for (const SurfaceHit& hit : hits) {
+    const Material& m = scene_.materials[hit.leaf->material];
+    const InteriorRef self = interior_of(hit);
+    filter_at(hit, m);
+    if (in.contains(self)) f = mul(f, shadow_fade(m.interior, hit.t - previous));
+    if (in.empty() || !in.remove(self)) in.append(self);
+    previous = hit.t;
+    if (all_below(f, tolerance::epsilon)) break;
+  }
   return f;
 }
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
-Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view) {
+Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
+                             const RayState& state) {
   const Finish& fin = layer.finish;
   const Rgb pigment{s.r, s.g, s.b};
   const double att = scene_.language_version >= 370 ? 1.0 - s.f - s.t
@@ -163,7 +347,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     const bool behind = c < tolerance::epsilon;
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
-      lc = mul(lc, shadow_filter(point, to_light, distance));
+      lc = mul(lc, shadow_filter(point, to_light, distance, state));
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     if (behind) {
@@ -197,7 +381,8 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
 // The seed chapter's direct illumination (../shared/seed/): ka·La·S + Σ kd(N·L)Ld·S + ks(R·E)^n and
 // ks(N·H)^n tinted by (1−p)S + p, negative terms dropped. POV-Ray's finish maps onto ka, kd, ks, n, p as the
 // README states; shadows use the same test as POV-Ray mode.
-Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view) {
+Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
+                               const RayState& state) {
   const Finish& fin = layer.finish;
   const Rgb pigment{s.r, s.g, s.b};
   Rgb out = mul(mul(rgb_of(scene_.settings.ambient_light), rgb_of(fin.ambient)), pigment);
@@ -210,7 +395,7 @@ Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 p
     double distance;
     if (!light_at(l, point, lc, to_light, distance)) continue;
     if (!l.light.shadowless) {
-      lc = mul(lc, shadow_filter(point, to_light, distance));
+      lc = mul(lc, shadow_filter(point, to_light, distance, state));
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     const double n_dot_l = dot(normal, to_light);

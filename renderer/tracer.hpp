@@ -5,6 +5,9 @@
 
 #include <cstdint>
 
+#include <vector>
+
+#include "renderer/interior_list.hpp"
 #include "renderer/render_scene.hpp"
 
 namespace povtrace::render {
@@ -31,26 +34,52 @@ class Tracer {
  public:
   Tracer(const RenderScene& scene, ShadingModel model) : scene_(scene), model_(model) {}
 
-  // A camera ray (level 1, weight 1).
+  // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera.
   Radiance trace_camera_ray(const Ray& ray);
   const RayCounts& counts() const { return counts_; }
 
  private:
-  Radiance trace(const Ray& ray, int level, double weight);
-  Radiance shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight);
-  Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view);
-  Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view);
+  // What a ray carries besides its geometry: the interiors it is in, and whether a miss may show the background's
+  // transparency (POV-Ray clears that for reflected rays and everything traced from them, pipeline §5).
+  struct RayState {
+    InteriorList interiors;
+    bool alpha_background = true;
+  };
+  // One layer's reflection, computed in the layer loop and traced after the transmitted ray (pipeline §4).
+  struct PendingReflection {
+    Rgb amount;            // reflectivity colour
+    double weight = 0;     // ray weight for adc_bailout
+    double exponent = 1;   // 1 / `exponent`
+    Vec3 normal;           // the layer's normal (facing the viewer)
+  };
+
+  Radiance trace(const Ray& ray, int level, double weight, const RayState& state);
+  Radiance shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state);
+  // The transmitted ray (refracted, continued through ior 1, or totally reflected) of a hit, with interior fade.
+  // Returns true on total internal reflection.
+  bool transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 normal, Vec3 raw_normal, int level,
+                double weight, const RayState& state, Radiance& out, Rgb filter, double trans);
+  Radiance trace_reflection(const Ray& ray, Vec3 point, Vec3 normal, Vec3 raw_normal, int level, double weight,
+                            const RayState& state);
+  // Relative ior n_to/n_from for fresnel reflection at a surface of `self` (POV-Ray's ComputeRelativeIOR).
+  double relative_ior(const InteriorRef& self, const RayState& state) const;
+  InteriorRef interior_of(const SurfaceHit& hit) const;
+  Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
+                       const RayState& state);
+  Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
+                         const RayState& state);
   // Light colour reaching `point` from light `l` before shadowing (spot and fade attenuation), plus L and
   // the distance used by the shadow test. Returns false when the light is cut off (below 1e-10).
   bool light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
   // Shadow factor along the segment point → light: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
-  Rgb shadow_filter(Vec3 point, Vec3 to_light, double distance);
-  Radiance background() const;
+  Rgb shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state);
+  Radiance background(const RayState& state) const;
 
   const RenderScene& scene_;
   ShadingModel model_;
   RayCounts counts_;
+  std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
 };
 
 // Pigment colour at a world point (pattern evaluated in the pigment's own space).

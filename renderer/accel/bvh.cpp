@@ -308,6 +308,38 @@ void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, Sh
   }
 }
 
+std::vector<std::uint32_t> Accelerator::containing_indices(Vec3 point) const {
+  std::vector<std::uint32_t> found;
+  auto test = [&](std::uint32_t i) {
+    if (inside(primitives_[i], point)) found.push_back(i);
+  };
+  for (const std::uint32_t i : unbounded_) test(i);
+  auto holds = [&](const Bounds& b) {
+    return point.x >= b.lo.x && point.x <= b.hi.x && point.y >= b.lo.y && point.y <= b.hi.y && point.z >= b.lo.z &&
+           point.z <= b.hi.z;
+  };
+  if (!nodes_.empty() && holds(nodes_[0].bounds)) {
+    std::uint32_t stack[stack_size];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes_[stack[--top]];
+      if (n.count > 0) {
+        for (std::uint32_t k = n.first; k < n.first + n.count; ++k) test(order_[k]);
+        continue;
+      }
+      const std::uint32_t children[2] = {static_cast<std::uint32_t>(&n - nodes_.data()) + 1, n.first};
+      for (const std::uint32_t c : children)
+        if (holds(nodes_[c].bounds)) {
+          assert(top < stack_size);
+          stack[top++] = c;
+        }
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
 Hit Accelerator::closest_hit_brute_force(const Ray& ray, double t_min, double t_max) const {
   Nearest best{t_max, ~0u, {}};
   for (std::uint32_t i = 0; i < primitives_.size(); ++i) consider(primitives_[i], i, ray, t_min, best);
