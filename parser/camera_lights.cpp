@@ -124,6 +124,8 @@ Camera Interpreter::parse_camera(const Token& keyword) {
 void Interpreter::apply_transform(Light& light, const Matrix& m) {
   light.location = m.point(light.location);
   light.point_at = m.point(light.point_at);
+  light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
+  light.axis2 = m.vector(light.axis2);
 }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
@@ -142,12 +144,42 @@ bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   else if (k == "tightness") light.tightness = parse_float();
   else if (k == "fade_distance") light.fade_distance = parse_float();
   else if (k == "fade_power") light.fade_power = parse_float();
-  else if (k == "area_light" || k == "cylinder" || k == "looks_like" || k == "projected_through" ||
-           k == "circular" || k == "orient" || k == "adaptive" || k == "jitter" || k == "media_interaction" ||
-           k == "media_attenuation" || k == "photons" || k == "area_illumination")
+  else if (k == "area_light") parse_area_light(t, light);
+  else if (k == "adaptive") light.adaptive = static_cast<int>(parse_float());
+  else if (k == "jitter") light.jitter = true;
+  else if (k == "circular" || k == "orient") {
+    (k == "circular" ? light.circular : light.orient) = true;
+    if (!light.area) warn(t.loc, "'" + std::string(k) + "' only affects an area_light");
+  } else if (k == "cylinder" || k == "looks_like" || k == "projected_through" || k == "media_interaction" ||
+             k == "media_attenuation" || k == "photons" || k == "area_illumination")
     taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;
+}
+
+// area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's
+// Parse_Light_Source); a negative size is refused here too, as it would give no samples at all.
+void Interpreter::parse_area_light(const Token& keyword, Light& light) {
+  (void)keyword;
+  light.area = true;
+  light.axis1 = parse_vector();
+  accept(",");
+  light.axis2 = parse_vector();
+  accept(",");
+  auto size = [this] {
+    const Token at = peek();
+    const double n = parse_float();
+    if (!(n >= 1.0)) fail_at(at, "an area_light size must be at least 1");
+    if (n > 1e6) fail_at(at, "an area_light size must be at most 1000000");
+    return static_cast<int>(n);
+  };
+  light.size1 = size();
+  accept(",");
+  const Token second = peek();
+  light.size2 = size();
+  // Each shading point keeps one result per sample: a bound keeps that memory sane.
+  if (static_cast<double>(light.size1) * light.size2 > 1e6)
+    fail_at(second, "an area_light may have at most 1000000 samples (size1 × size2)");
 }
 
 Light Interpreter::parse_light(const Token& keyword) {

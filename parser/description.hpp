@@ -143,6 +143,15 @@ struct Light {
   double tightness = 0.0;   // spotlight
   double fade_distance = 0.0;
   double fade_power = 0.0;
+  // area_light axis1, axis2, size1, size2 (pipeline §3): a grid of size1 × size2 point samples spanning the axes
+  // around `location`, used for the shadow test only.
+  bool area = false;
+  Vec3 axis1, axis2;
+  int size1 = 1, size2 = 1;
+  int adaptive = 100;       // POV-Ray's default: subdivide the grid down to single cells
+  bool jitter = false;
+  bool circular = false;
+  bool orient = false;
   SourceLoc loc;
   Unsupported unsupported;
 };

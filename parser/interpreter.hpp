@@ -204,6 +204,7 @@ class Interpreter {
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
   Light parse_light(const Token& keyword);
+  void parse_area_light(const Token& keyword, Light& light);
   bool try_light_modifier(const Token& t, Light& light);
   void apply_transform(Light& light, const Matrix& m);
 

@@ -327,6 +327,12 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayS
   return f;
 }
 
+Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
+                           const RayState& state) {
+  if (l.light.area) return area_light_shadow(l, point, to_light, colour, state);
+  return mul(colour, shadow_filter(point, to_light, distance, state));
+}
+
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
 Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
@@ -347,7 +353,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     const bool behind = c < tolerance::epsilon;
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
-      lc = mul(lc, shadow_filter(point, to_light, distance, state));
+      lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     if (behind) {
@@ -395,7 +401,7 @@ Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 p
     double distance;
     if (!light_at(l, point, lc, to_light, distance)) continue;
     if (!l.light.shadowless) {
-      lc = mul(lc, shadow_filter(point, to_light, distance, state));
+      lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     const double n_dot_l = dot(normal, to_light);

@@ -74,12 +74,21 @@ class Tracer {
   // Shadow factor along the segment point → light: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
   Rgb shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state);
+  // The light colour `colour` (at the light's centre) after the shadow test: one ray for a point light, the
+  // combined samples of an area light (area_light.cpp).
+  Rgb shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
+                     const RayState& state);
+  struct AreaSampling;
+  Rgb area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, Rgb colour, const RayState& state);
+  Rgb area_sample(AreaSampling& s, int u, int v);
+  Rgb area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level);
   Radiance background(const RayState& state) const;
 
   const RenderScene& scene_;
   ShadingModel model_;
   RayCounts counts_;
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
+  std::vector<Rgb> area_grid_;                    // area light samples of the point being shaded
 };
 
 // Pigment colour at a world point (pattern evaluated in the pigment's own space).
