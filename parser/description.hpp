@@ -156,6 +156,17 @@ struct Light {
   Unsupported unsupported;
 };
 
+// sky_sphere { pigment { … } … [emission C] transforms } (pipeline §5): pigments evaluated at the ray direction
+// of a miss, last written first; the transforms turn the direction (inverted, as a point — POV-Ray's behaviour,
+// so a translate shifts it too).
+struct SkySphere {
+  std::vector<Pigment> pigments;
+  Colour emission{1, 1, 1};
+  Matrix world_from_sky;
+  SourceLoc loc;
+  Unsupported unsupported;
+};
+
 // ---- Whole scene ----------------------------------------------------------------------------------------
 struct GlobalSettings {
   std::optional<double> assumed_gamma;   // absent: 1.0 for #version ≥ 3.7, legacy sRGB otherwise (pipeline §6)
@@ -170,6 +181,7 @@ struct SceneDescription {
   GlobalSettings settings;
   Camera camera;
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
+  std::optional<SkySphere> sky_sphere;
   std::vector<Light> lights;
   std::vector<Object> objects;           // every object has a texture after parsing (CSG inheritance and the
                                          // #default texture resolved as POV-Ray's Post_Process does)

@@ -180,6 +180,7 @@ class Interpreter {
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
   Finish parse_finish_block(const Token& keyword, const Finish& start);
   void parse_finish_reflection(Finish& f);
+  SkySphere parse_sky_sphere(const Token& keyword);
   double optional_float(double fallback);
   Interior parse_interior_block(const Token& keyword, const Interior& start);
   std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);

@@ -55,12 +55,19 @@ void Interpreter::parse_statement(const Token& t) {
     return parse_default(t);
   }
   if (k == "background") return parse_background(t);
+  if (k == "sky_sphere") {
+    if (scene_.sky_sphere) warn(t.loc, "only one sky_sphere is used: this one replaces the earlier one");
+    SkySphere sky = parse_sky_sphere(t);
+    refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
+    scene_.sky_sphere = std::move(sky);
+    return;
+  }
   if (auto item = try_parse_item(t)) {
     if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
     else place_object(std::move(std::get<Object>(*item)), t.loc);
     return;
   }
-  static const std::string_view unsupported[] = {"sky_sphere", "fog", "media", "rainbow", "photons", "radiosity"};
+  static const std::string_view unsupported[] = {"fog", "media", "rainbow", "photons", "radiosity"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
   if (k == "declare" || k == "include" || k == "version")
@@ -144,6 +151,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
+  if (k == "sky_sphere") return Value(parse_sky_sphere(first));
   if (k == "transform") return Value(parse_transform_block(first));
   if (k == "material") {
     Object holder;

@@ -214,6 +214,37 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
   return f;
 }
 
+// sky_sphere { [S_id] pigment { … }… emission C transforms } (POV-Ray's Parse_Skysphere): pigments are added in
+// order, transforms compose into the sky's own matrix (they do not move the pigments), and an empty sky_sphere is
+// an error.
+SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'sky_sphere'");
+  SkySphere sky;
+  sky.loc = keyword.loc;
+  Token t = next();
+  if (const Value* v = lookup(t); v && std::holds_alternative<SkySphere>(*v)) {
+    sky = std::get<SkySphere>(*v);
+    t = next();
+  }
+  for (; !t.is("}"); t = next()) {
+    Matrix m;
+    if (t.is("pigment")) {
+      sky.pigments.push_back(parse_pigment_block(t, Pigment{}));
+      taint(sky.unsupported, sky.pigments.back().unsupported);
+    } else if (t.is("emission")) {
+      const Colour c = parse_colour();
+      sky.emission = Colour{static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), 0, 0};
+    } else if (try_transform(t, m)) {
+      sky.world_from_sky = sky.world_from_sky * m;
+    } else {
+      fail_expected(t, "pigment, emission, a transform or '}' in sky_sphere { }");
+    }
+  }
+  if (sky.pigments.empty()) fail_at(keyword, "a sky_sphere needs at least one pigment");
+  return sky;
+}
+
 // POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the
 // default. A keyword that is an item of the enclosing block (`metallic falloff 2`) is no float.
 double Interpreter::optional_float(double fallback) {

@@ -152,20 +152,20 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
                           scene.camera.right};
   r.settings = scene.settings;
   r.language_version = scene.language_version;
-  // Background (pipeline §5). 3.7 scenes: a miss returns the premultiplied rgb·(1 − t) with or without alpha output
-  // (POV-Ray +UA writes rgbt <.2,.4,.6,.5> as (0.1,0.2,0.3) α 0.5), transmit t only with alpha. Older scenes clear
-  // the background's transmit without alpha output (full rgb) and set it to 1 with alpha (a miss is (0,0,0) α 0).
+  // Background (pipeline §5) as POV-Ray's parser leaves it.
   const Colour& bg = scene.background;
-  if (scene.language_version < 370) {
-    r.background = options.output_alpha ? Rgb{0, 0, 0} : rgb_of(bg);
-    r.background_transmit = options.output_alpha ? 1.0 : 0.0;
-    r.background_reflected = rgb_of(bg);
-  } else {
-    r.background = rgb_of(bg) * (1.0 - bg.t);
-    r.background_transmit = options.output_alpha ? bg.t : 0.0;
-    // Without alpha output the parser has already premultiplied the background; with it, reflected rays see its
-    // colour with the transparency ignored.
-    r.background_reflected = options.output_alpha ? rgb_of(bg) : r.background;
+  r.output_alpha = options.output_alpha;
+  if (scene.language_version < 370)
+    r.background_colour = Colour{bg.r, bg.g, bg.b, 0, options.output_alpha ? 1.0 : 0.0};
+  else if (options.output_alpha)
+    r.background_colour = bg;
+  else
+    r.background_colour = Colour{bg.r * (1.0 - bg.t), bg.g * (1.0 - bg.t), bg.b * (1.0 - bg.t), 0, 0};
+  if (scene.sky_sphere) {
+    for (const Pigment& p : scene.sky_sphere->pigments) r.sky_pigments.push_back(make_pigment(p));
+    r.sky_emission = rgb_of(scene.sky_sphere->emission);
+    r.sky_transformed = !(scene.sky_sphere->world_from_sky == Matrix::identity());
+    if (r.sky_transformed) r.sky_from_world = scene.sky_sphere->world_from_sky.inverse();
   }
   // Working gamma (pipeline §6): assumed_gamma if given; #version ≥ 3.7 alone means 1.0; otherwise legacy.
   if (scene.settings.assumed_gamma) {

@@ -65,9 +65,15 @@ struct RenderScene {
   std::vector<RenderLight> lights;
   RenderCamera camera;
   GlobalSettings settings;
-  Rgb background;                    // colour a missing camera ray returns (pipeline §5: premultiplied by 1 − t)
-  Rgb background_reflected;          // colour a missing reflected ray returns (opaque, §5)
-  double background_transmit = 0;    // transmit of a miss (non-zero only with alpha output)
+  // The background as POV-Ray keeps it after parsing (pipeline §5): 3.7 scenes without alpha output premultiply
+  // rgb by 1 − t and clear f and t; with alpha output it stays as written. Older scenes clear f, and set t to 1
+  // with alpha output, 0 without.
+  Colour background_colour;
+  bool output_alpha = false;         // camera rays may show the background's transparency
+  std::vector<RenderPigment> sky_pigments;   // sky_sphere pigments in written order (evaluated last first)
+  Rgb sky_emission{1, 1, 1};
+  bool sky_transformed = false;
+  Matrix sky_from_world;
   int language_version = 370;
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;

@@ -35,6 +35,7 @@ double metallic_fade(double x) {
 Radiance Tracer::trace_camera_ray(const Ray& ray) {
   ++counts_.camera;
   RayState state;
+  state.alpha_background = scene_.output_alpha;
   // A perspective camera's rays all start at its location; an orthographic camera's start across its image
   // plane, so POV-Ray finds the containing objects for each of them.
   if (scene_.camera.projection == Projection::orthographic) {
@@ -49,15 +50,48 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
 Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
-  if (!hit.found()) return background(state);
+  if (!hit.found()) return background(ray.direction, state);
   return shade_hit(ray, hit.surface, level, weight, state);
 }
 
-// A reflected ray never sees the background's transparency: with alpha output, a mirror shows the background
-// colour, opaque (§5).
-Radiance Tracer::background(const RayState& state) const {
-  if (!state.alpha_background) return {scene_.background_reflected, 0};
-  return {scene_.background, scene_.background_transmit};
+// The colour of a miss (pipeline §5, POV-Ray's ComputeSky): the sky_sphere's pigments, last written first, at the
+// ray direction, each seen through those before it, then the background as one more layer. The background's filter
+// and transmit count only where the ray may show them (camera rays with alpha output; never reflected rays).
+Radiance Tracer::background(Vec3 direction, const RayState& state) const {
+  const Vec3 p = scene_.sky_transformed ? scene_.sky_from_world.point(direction) : direction;
+  if (scene_.language_version < 370) return legacy_background(p, state);
+  Rgb col{0, 0, 0};
+  Rgb filter{1, 1, 1};
+  for (auto it = scene_.sky_pigments.rbegin(); it != scene_.sky_pigments.rend(); ++it) {
+    const Colour c = evaluate_pigment(*it, p);
+    col += mul(mul(Rgb{c.r, c.g, c.b} * (1.0 - c.f - c.t), filter), scene_.sky_emission);
+    filter = mul(filter, pass_through(c));
+  }
+  Colour bg = scene_.background_colour;
+  if (!state.alpha_background) bg.f = bg.t = 0;
+  col += mul(Rgb{bg.r, bg.g, bg.b} * (1.0 - bg.f - bg.t), filter);
+  filter = mul(filter, pass_through(bg));
+  return {col, std::min(1.0, std::fabs(grey(filter)))};
+}
+
+// Scenes older than 3.7 composite the sky over the background by 3.6's rules, and with alpha output a camera ray's
+// miss is fully transparent black.
+Radiance Tracer::legacy_background(Vec3 p, const RayState& state) const {
+  if (state.alpha_background) return {{0, 0, 0}, 1.0};
+  const Colour& bg = scene_.background_colour;
+  if (scene_.sky_pigments.empty()) return {{bg.r, bg.g, bg.b}, bg.t};
+  Rgb col{0, 0, 0};
+  Colour filter{1, 1, 1, 1, 1};
+  double trans = 1.0;
+  for (auto it = scene_.sky_pigments.rbegin(); it != scene_.sky_pigments.rend(); ++it) {
+    const Colour c = evaluate_pigment(*it, p);
+    col += Rgb{c.r, c.g, c.b} * (trans * (1.0 - c.f - c.t));
+    filter = Colour{filter.r * c.r, filter.g * c.g, filter.b * c.b, filter.f * c.f, filter.t * c.t};
+    trans = std::fabs(filter.f) + std::fabs(filter.t);
+  }
+  col = mul(col, scene_.sky_emission);
+  const Rgb through{filter.r * filter.f + filter.t, filter.g * filter.f + filter.t, filter.b * filter.f + filter.t};
+  return {col + mul(Rgb{bg.r, bg.g, bg.b}, through), bg.t * filter.t};
 }
 
 InteriorRef Tracer::interior_of(const SurfaceHit& hit) const {

@@ -82,7 +82,8 @@ class Tracer {
   Rgb area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, Rgb colour, const RayState& state);
   Rgb area_sample(AreaSampling& s, int u, int v);
   Rgb area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level);
-  Radiance background(const RayState& state) const;
+  Radiance background(Vec3 direction, const RayState& state) const;
+  Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
 
   const RenderScene& scene_;
   ShadingModel model_;
