@@ -104,7 +104,14 @@ struct Csg {
   std::vector<Light> lights;      // light sources written inside the CSG move with it
 };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg>;
+// The quadric-like shapes, as written (POV-Ray's canonical transforms are the renderer's business). The parser has
+// already refused the degenerate ones POV-Ray refuses (cylinder/cone with coincident end points).
+struct Cylinder { Vec3 end1, end2{0, 1, 0}; double radius = 1; bool open = false; };
+struct Cone { Vec3 end1; double radius1 = 1; Vec3 end2{0, 1, 0}; double radius2 = 0; bool open = false; };
+struct Disc { Vec3 centre; Vec3 normal{0, 0, 1}; double radius = 1, hole_radius = 0; };   // normal unit length
+struct Torus { double major = 0, minor = 0; bool sturm = false; };
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus>;
 
 struct Object {
   Shape shape;

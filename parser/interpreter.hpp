@@ -11,6 +11,7 @@
 //   arrays.cpp        array declarations, subscripts, element assignment, dimensions()
 //   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
+//   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 #pragma once
 
 #include <functional>
@@ -201,6 +202,17 @@ class Interpreter {
   void apply_transform(Object& object, const Matrix& m);
   void parse_material_block(const Token& keyword, Object& object);
   static std::string csg_name(CsgKind kind);
+
+  // ---- cylinder, cone, disc, torus (quadric_shapes.cpp) ----
+  Object parse_cylinder(const Token& keyword);
+  Object parse_cone(const Token& keyword);
+  Object parse_disc(const Token& keyword);
+  Object parse_torus(const Token& keyword);
+  bool accept_open();
+  void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
+  // `sturm [bool]` as an object modifier: legal only on a torus among the rendered shapes (POV-Ray's
+  // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
+  bool try_sturm_modifier(const Token& t, Object& object);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

@@ -11,6 +11,8 @@
 // children — identical for translations and scales, tighter after rotations.
 #include <cmath>
 
+#include <stdexcept>
+
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
@@ -101,6 +103,11 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (const auto* csg = std::get_if<Csg>(&o.shape))
     for (const auto& c : csg->children)
       if (auto u = unmodelled_geometry(c)) return u;
+  // inside() and the bounding boxes of these shapes are not modelled here yet (the renderer has them).
+  if (std::holds_alternative<Cylinder>(o.shape)) return std::string("the shape 'cylinder'");
+  if (std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
+  if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
+  if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   return std::nullopt;
 }
 
@@ -140,6 +147,11 @@ bool inside(const Object& o, Vec3 p, bool invert) {
       }
       return all;
     }
+    // Refused by unmodelled_geometry before any visit.
+    bool operator()(const Cylinder&) const { throw std::logic_error("inside() of a cylinder"); }
+    bool operator()(const Cone&) const { throw std::logic_error("inside() of a cone"); }
+    bool operator()(const Disc&) const { throw std::logic_error("inside() of a disc"); }
+    bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -176,6 +188,11 @@ BBox bounding_box(const Object& o) {
         if (u.lengths[i] > kCriticalLength) return BBox::huge();
       return u;
     }
+    // Refused by unmodelled_geometry before any visit.
+    BBox operator()(const Cylinder&) const { throw std::logic_error("extent of a cylinder"); }
+    BBox operator()(const Cone&) const { throw std::logic_error("extent of a cone"); }
+    BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
+    BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -88,10 +88,13 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
       parse_float();
     return true;
   }
+  if (k == "sturm" && try_sturm_modifier(t, object)) return true;
+  if (k == "open")   // POV-Ray reads `open` only right after a cylinder's or cone's parameters (quadric_shapes.cpp)
+    fail_at(t, "'open' must directly follow the parameters of a cylinder or cone; it is no object modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
       "normal", "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
-      "sturm", "open", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
+      "sturm", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {
@@ -259,8 +262,12 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "merge") return parse_csg(t, CsgKind::merge);
   if (k == "intersection") return parse_csg(t, CsgKind::intersection);
   if (k == "difference") return parse_csg(t, CsgKind::difference);
+  if (k == "cylinder") return parse_cylinder(t);
+  if (k == "cone") return parse_cone(t);
+  if (k == "disc") return parse_disc(t);
+  if (k == "torus") return parse_torus(t);
   static const std::string_view shapes[] = {
-      "cylinder", "cone", "torus", "disc", "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
+      "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
       "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",
       "sphere_sweep", "bicubic_patch", "quadric", "cubic", "quartic", "poly", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};

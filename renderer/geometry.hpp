@@ -43,7 +43,7 @@ struct Bounds {
   double surface_area() const;
 };
 
-enum class ShapeType : std::uint8_t { sphere, plane, box };
+enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus };
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is
@@ -56,7 +56,7 @@ struct ShapeData {
 struct Primitive {
   ShapeType type = ShapeType::sphere;
   // Object-space parameters: sphere a = centre, radius; plane a = unit normal N, radius = distance d (surface
-  // N·P = d); box a = lo corner, b = hi corner.
+  // N·P = d); box a = lo corner, b = hi corner; cylinder, cone, disc, torus: see renderer/shapes/quadric_shapes.hpp.
   Vec3 a, b;
   double radius = 0;
   bool transformed = false;      // false: world_from_object is the identity and is skipped

@@ -1,5 +1,7 @@
 #include "renderer/render_scene.hpp"
 
+#include "renderer/shapes/quadric_shapes.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -83,6 +85,16 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.type = ShapeType::box;
     p.a = b->corner1;
     p.b = b->corner2;
+  } else if (is_quadric_shape(o.shape)) {
+    const std::optional<Primitive> shape = quadric_primitive(o.shape, o.world_from_object);
+    if (!shape) return;   // a disc with a zero normal: POV-Ray renders nothing either
+    p.type = shape->type;
+    p.a = shape->a;
+    p.b = shape->b;
+    p.radius = shape->radius;
+    p.transformed = shape->transformed;
+    p.world_from_object = shape->world_from_object;
+    p.object_from_world = shape->object_from_world;
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }

@@ -1,5 +1,5 @@
 // Primitive dispatch: intersect_all / surface_normal / inside / world_bounds switch on ShapeType and forward to the
-// per-shape functions in sphere.cpp, plane.cpp and box.cpp. Each shape applies its own transform because POV-Ray
+// per-shape functions in sphere.cpp, plane.cpp, box.cpp, cylinder.cpp, cone.cpp, disc.cpp and torus.cpp. Each shape applies its own transform because POV-Ray
 // applies the depth tolerances in different spaces per shape (see the header comment of each shape file).
 // Also the two non-inline Bounds members.
 #include <array>
@@ -26,6 +26,26 @@ Intersections intersect_box(const Primitive& p, const Ray& ray);
 Vec3 box_normal(const Primitive& p, Vec3 world_point);
 bool inside_box(const Primitive& p, Vec3 world_point);
 Bounds box_object_bounds(const Primitive& p);
+
+Intersections intersect_cylinder(const Primitive& p, const Ray& ray);
+Vec3 cylinder_normal(const Primitive& p, Vec3 world_point);
+bool inside_cylinder(const Primitive& p, Vec3 world_point);
+Bounds cylinder_object_bounds(const Primitive& p);
+
+Intersections intersect_cone(const Primitive& p, const Ray& ray);
+Vec3 cone_normal(const Primitive& p, Vec3 world_point);
+bool inside_cone(const Primitive& p, Vec3 world_point);
+Bounds cone_object_bounds(const Primitive& p);
+
+Intersections intersect_disc(const Primitive& p, const Ray& ray);
+Vec3 disc_normal(const Primitive& p, Vec3 world_point);
+bool inside_disc(const Primitive& p, Vec3 world_point);
+Bounds disc_object_bounds(const Primitive& p);
+
+Intersections intersect_torus(const Primitive& p, const Ray& ray);
+Vec3 torus_normal(const Primitive& p, Vec3 world_point);
+bool inside_torus(const Primitive& p, Vec3 world_point);
+Bounds torus_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -45,6 +65,10 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::sphere: return shapes::intersect_sphere(p, ray);
     case ShapeType::plane: return shapes::intersect_plane(p, ray);
     case ShapeType::box: return shapes::intersect_box(p, ray);
+    case ShapeType::cylinder: return shapes::intersect_cylinder(p, ray);
+    case ShapeType::cone: return shapes::intersect_cone(p, ray);
+    case ShapeType::disc: return shapes::intersect_disc(p, ray);
+    case ShapeType::torus: return shapes::intersect_torus(p, ray);
   }
   return {};
 }
@@ -72,6 +96,10 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::sphere: return shapes::sphere_normal(p, world_point);
     case ShapeType::plane: return shapes::plane_normal(p, world_point);
     case ShapeType::box: return shapes::box_normal(p, world_point);
+    case ShapeType::cylinder: return shapes::cylinder_normal(p, world_point);
+    case ShapeType::cone: return shapes::cone_normal(p, world_point);
+    case ShapeType::disc: return shapes::disc_normal(p, world_point);
+    case ShapeType::torus: return shapes::torus_normal(p, world_point);
   }
   return {};
 }
@@ -81,6 +109,10 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::sphere: return shapes::inside_sphere(p, world_point);
     case ShapeType::plane: return shapes::inside_plane(p, world_point);
     case ShapeType::box: return shapes::inside_box(p, world_point);
+    case ShapeType::cylinder: return shapes::inside_cylinder(p, world_point);
+    case ShapeType::cone: return shapes::inside_cone(p, world_point);
+    case ShapeType::disc: return shapes::inside_disc(p, world_point);
+    case ShapeType::torus: return shapes::inside_torus(p, world_point);
   }
   return false;
 }
@@ -104,6 +136,10 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::sphere: return to_world(p, shapes::sphere_object_bounds(p));
     case ShapeType::plane: return shapes::plane_world_bounds(p);
     case ShapeType::box: return to_world(p, shapes::box_object_bounds(p));
+    case ShapeType::cylinder: return to_world(p, shapes::cylinder_object_bounds(p));
+    case ShapeType::cone: return to_world(p, shapes::cone_object_bounds(p));
+    case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
+    case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
   }
   return {};
 }

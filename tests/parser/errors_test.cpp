@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Unsupported, Errors,
     ::testing::Values(
-        ErrorCase{"Cylinder", "#version 3.7;\ncylinder { 0, y, 1 }\n", 2, 1, "unsupported: the shape 'cylinder'"},
+        ErrorCase{"Lathe", "#version 3.7;\nlathe { 2, <0, 0>, <1, 1> }\n", 2, 1, "unsupported: the shape 'lathe'"},
         ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { bumps 1 } }\n", 2, 1,
                   "unsupported: 'normal { }' perturbation"},
         ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { bumps 1 } } }\n", 2, 1,

@@ -1,0 +1,163 @@
+// The polynomial solvers: quartics built from known roots (simple, clustered, double, of very different sizes),
+// the closed forms against Sturm sequences, and POV-Ray's switching rules in solve_polynomial.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "renderer/shapes/polynomial_roots.hpp"
+
+namespace {
+
+using namespace povtrace::render::poly;
+
+// Coefficients (highest first) of lead · Π (t − rᵢ).
+std::vector<double> from_roots(const std::vector<double>& roots, double lead = 1.0) {
+  std::vector<double> c{lead};
+  for (double r : roots) {
+    c.push_back(0.0);
+    for (std::size_t i = c.size() - 1; i > 0; --i) c[i] -= r * c[i - 1];
+  }
+  return c;
+}
+
+std::vector<double> sorted(const double* r, int n) {
+  std::vector<double> v(r, r + n);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(PolynomialRoots, QuadraticIsStableForVeryDifferentRoots) {
+  const auto c = from_roots({1e-8, 1e4});
+  double r[2];
+  ASSERT_EQ(solve_quadratic(c.data(), r), 2);
+  const auto v = sorted(r, 2);
+  EXPECT_NEAR(v[0], 1e-8, 1e-22);
+  EXPECT_NEAR(v[1], 1e4, 1e-10);
+}
+
+TEST(PolynomialRoots, QuadraticDoubleRootAndNone) {
+  double r[2];
+  const double dbl[3] = {1, -2, 1};
+  ASSERT_EQ(solve_quadratic(dbl, r), 1);
+  EXPECT_EQ(r[0], 1.0);
+  const double none[3] = {1, 0, 1};
+  EXPECT_EQ(solve_quadratic(none, r), 0);
+  const double linear[3] = {0, 2, -1};
+  ASSERT_EQ(solve_quadratic(linear, r), 1);
+  EXPECT_EQ(r[0], 0.5);
+}
+
+TEST(PolynomialRoots, CubicThreeAndOneRealRoots) {
+  double r[3];
+  auto c = from_roots({-2, 0.5, 3});
+  ASSERT_EQ(solve_cubic(c.data(), r), 3);
+  auto v = sorted(r, 3);
+  EXPECT_NEAR(v[0], -2, 1e-14);
+  EXPECT_NEAR(v[1], 0.5, 1e-14);
+  EXPECT_NEAR(v[2], 3, 1e-14);
+  const double one[4] = {2, 0, 2, -4};   // 2(t − 1)(t² + t + 2)
+  ASSERT_EQ(solve_cubic(one, r), 1);
+  EXPECT_NEAR(r[0], 1, 1e-14);
+}
+
+TEST(PolynomialRoots, RandomQuarticsWithFourRealRoots) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> root(-10, 10), lead(0.1, 10);
+  for (int k = 0; k < 2000; ++k) {
+    std::vector<double> roots{root(rng), root(rng), root(rng), root(rng)};
+    std::sort(roots.begin(), roots.end());
+    if (roots[1] - roots[0] < 1e-2 || roots[2] - roots[1] < 1e-2 || roots[3] - roots[2] < 1e-2) continue;
+    const auto c = from_roots(roots, lead(rng));
+    double r[4];
+    ASSERT_EQ(solve_quartic(c.data(), r), 4) << k;
+    const auto v = sorted(r, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(v[i], roots[i], 1e-9 * (1 + std::abs(roots[i]))) << k;
+    double s[4];
+    ASSERT_EQ(solve_sturm(4, c.data(), -20, 20, s), 4) << k;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(s[i], roots[i], 1e-9 * (1 + std::abs(roots[i]))) << k;
+  }
+}
+
+TEST(PolynomialRoots, QuarticWithTwoRealRootsAndAComplexPair) {
+  // (t − 1)(t + 3)(t² + 2t + 5)
+  const double c[5] = {1, 4, 6, 4, -15};
+  double r[4];
+  ASSERT_EQ(solve_quartic(c, r), 2);
+  const auto v = sorted(r, 2);
+  EXPECT_NEAR(v[0], -3, 1e-13);
+  EXPECT_NEAR(v[1], 1, 1e-13);
+  double s[4];
+  ASSERT_EQ(solve_sturm(4, c, 0, 1e7, s), 1);   // only the positive one in [0, 1e7]
+  EXPECT_NEAR(s[0], 1, 1e-12);
+}
+
+TEST(PolynomialRoots, ClusteredRootsAreSeparatedBySturm) {
+  const auto c = from_roots({2, 2 + 1e-5, 5, 5 + 2e-5});
+  double s[4];
+  ASSERT_EQ(solve_sturm(4, c.data(), 0, 100, s), 4);
+  EXPECT_NEAR(s[0], 2, 1e-8);
+  EXPECT_NEAR(s[1], 2 + 1e-5, 1e-8);
+  EXPECT_NEAR(s[2], 5, 1e-8);
+  EXPECT_NEAR(s[3], 5 + 2e-5, 1e-8);
+  double r[4];
+  ASSERT_EQ(solve_quartic(c.data(), r), 4);
+  const auto v = sorted(r, 4);
+  EXPECT_NEAR(v[0], 2, 1e-6);
+  EXPECT_NEAR(v[3], 5 + 2e-5, 1e-6);
+}
+
+TEST(PolynomialRoots, DoubleRootsAreFoundByBoth) {
+  const auto c = from_roots({1, 1, 4, 6});
+  double s[4];
+  const int n = solve_sturm(4, c.data(), 0, 100, s);
+  ASSERT_EQ(n, 3);   // distinct roots
+  EXPECT_NEAR(s[0], 1, 1e-7);
+  EXPECT_NEAR(s[1], 4, 1e-12);
+  double r[4];
+  const int m = solve_quartic(c.data(), r);
+  ASSERT_GE(m, 2);
+  const auto v = sorted(r, m);
+  EXPECT_NEAR(v.back(), 6, 1e-12);
+}
+
+TEST(PolynomialRoots, SolvePolynomialDropsTheRootAtZero) {
+  // Roots 1e-6, 2, 3, 4: |c4 / c3| ≈ 1e-6 / 1 < 1e-4, so the constant is taken as 0 and the cubic solved.
+  const auto c = from_roots({1e-6, 2, 3, 4});
+  double r[4];
+  for (bool sturm : {false, true}) {
+    const int n = solve_polynomial(4, c.data(), r, sturm, 1e-4, 1e7);
+    ASSERT_EQ(n, 3);
+    const auto v = sorted(r, n);
+    EXPECT_NEAR(v[0], 2, 1e-5);
+    EXPECT_NEAR(v[2], 4, 1e-5);
+  }
+  // Without the tolerance all four are found.
+  EXPECT_EQ(solve_polynomial(4, c.data(), r, false, 0.0, 1e7), 4);
+}
+
+TEST(PolynomialRoots, SolvePolynomialLowersTheDegreeOfTinyLeadingCoefficients) {
+  const double c[5] = {1e-12, 0, 1, -3, 2};   // effectively (t − 1)(t − 2)
+  double r[4];
+  ASSERT_EQ(solve_polynomial(4, c, r, false, 0.0, 1e7), 2);
+  const auto v = sorted(r, 2);
+  EXPECT_NEAR(v[0], 1, 1e-14);
+  EXPECT_NEAR(v[1], 2, 1e-14);
+}
+
+TEST(PolynomialRoots, DifficultCoefficientsUseSturmAndStillFindTheRoots) {
+  // Coefficients spanning more than 1e12: roots 1e-3, 2e-3, 1e3, 2e3.
+  const auto c = from_roots({1e-3, 2e-3, 1e3, 2e3});
+  double r[4];
+  const int n = solve_polynomial(4, c.data(), r, false, 0.0, 1e7);
+  ASSERT_EQ(n, 4);
+  const auto v = sorted(r, 4);
+  EXPECT_NEAR(v[0], 1e-3, 1e-12);
+  EXPECT_NEAR(v[1], 2e-3, 1e-12);
+  EXPECT_NEAR(v[2], 1e3, 1e-7);
+  EXPECT_NEAR(v[3], 2e3, 1e-7);
+}
+
+}  // namespace
