@@ -142,6 +142,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
   if (k == "transform") return Value(parse_transform_block(first));

@@ -4,34 +4,18 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "renderer/pattern/render_pigment.hpp"
+
 namespace povtrace::render {
 
 namespace {
-RenderPigment make_pigment(const Pigment& p) {
-  RenderPigment r;
-  r.pattern = p.pattern;
-  r.colour = p.colour;
-  for (std::size_t i = 0; i < 2 && i < p.entries.size(); ++i) r.entries[i] = p.entries[i];
-  r.transformed = !(p.world_from_pattern == Matrix::identity());
-  if (r.transformed) r.pattern_from_world = p.world_from_pattern.inverse();
-  return r;
-}
-
-bool pigment_has_transparency(const Pigment& p) {
-  auto clear = [](const Colour& c) { return c.f != 0.0 || c.t != 0.0; };
-  if (p.pattern == PatternKind::solid) return clear(p.colour);
-  for (const auto& e : p.entries)
-    if (clear(e)) return true;
-  return false;
-}
-
 Material make_material(const Texture& texture, const std::optional<Interior>& interior) {
   Material m;
   m.interior = interior.value_or(Interior{});
   m.opaque = false;
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
     RenderLayer layer;
-    layer.pigment = make_pigment(it->pigment);
+    layer.pigment = build_render_pigment(it->pigment);
     layer.finish = it->finish;
     layer.specular_exponent = 1.0 / it->finish.roughness;
     layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
@@ -145,6 +129,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   warn_about_nested_refraction(primitives, r.materials, r.warnings);
+  use_noise_generator(r.materials, scene.language_version < 350 ? NoiseGenerator::original
+                                                                : NoiseGenerator::range_corrected);
   r.accelerator = Accelerator(std::move(primitives));
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
