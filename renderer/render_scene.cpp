@@ -129,8 +129,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   warn_about_nested_refraction(primitives, r.materials, r.warnings);
-  use_noise_generator(r.materials, scene.language_version < 350 ? NoiseGenerator::original
-                                                                : NoiseGenerator::range_corrected);
+  const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
+  use_noise_generator(r.materials, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
   r.accelerator = Accelerator(std::move(primitives));
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,

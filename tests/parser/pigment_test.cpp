@@ -99,5 +99,12 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("unsupported: the pigment item 'crackle'"), std::string::npos);
 }
 
+TEST(PigmentParse, GlobalNoiseGenerator) {
+  EXPECT_EQ(scene("global_settings { noise_generator 1 }\n").settings.noise_generator, 1);
+  EXPECT_FALSE(scene("global_settings { }\n").settings.noise_generator);
+  EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 3 }\n")
+                .bare_message().find("unsupported: the global setting 'noise_generator 3'"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace povtrace::test
