@@ -31,13 +31,60 @@ struct UnsupportedFeature {
 using Unsupported = std::optional<UnsupportedFeature>;
 
 // ---- Textures -------------------------------------------------------------------------------------------
-enum class PatternKind { solid, checker };
+// Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
+enum class PatternKind {
+  solid, checker, hexagon, brick,                                   // list patterns: entries 0, 1 (, 2)
+  gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
+  bozo, spotted, granite, marble, wood, agate,                      // noise-based
+  average                                                           // mean of its pigment_map's pigments
+};
+
+// The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).
+enum class WaveType { ramp, triangle, sine, scallop, cubic, poly };
+
+// Fractal turbulence: `turbulence V octaves N omega W lambda L`, defaults as POV-Ray's Create_Turb.
+struct Turbulence {
+  Vec3 amount;
+  int octaves = 6;         // clamped to 1..10 by the parser, as POV-Ray does
+  double omega = 0.5;
+  double lambda = 2.0;
+};
+
+// `warp { turbulence … }` (POV-Ray's extra turbulence warp). `before` is the pattern transform written before
+// this warp (and after the previous one): warps and transforms apply in the order they are written.
+struct PatternWarp {
+  Turbulence turbulence;
+  Matrix before;
+};
+
+struct Pigment;
+
+// One entry of a colour map, pigment map or list pattern (checker, hexagon, brick). `value` is stored in single
+// precision as POV-Ray's blend map entries are. An entry is a colour unless `pigment` is set.
+struct MapEntry {
+  double value = 0;
+  Colour colour;
+  std::shared_ptr<const Pigment> pigment;
+};
 
 struct Pigment {
   PatternKind pattern = PatternKind::solid;
   Colour colour;                 // solid colour (default: black, rgbft 0)
-  std::vector<Colour> entries;   // checker: the two colours (defaults blue/green as POV-Ray when omitted)
-  Matrix world_from_pattern;     // every transform applied to the pigment since it was created
+  // color_map, pigment_map or the list pattern's entries, ascending. Empty: the pattern's built-in map, which
+  // POV-Ray picks only once the pigment is complete (texture/pigment.cpp Post_Pigment), so the renderer does.
+  std::vector<MapEntry> entries;
+  Vec3 gradient{1, 0, 0};        // gradient: the direction, normalised by the parser
+  Vec3 brick_size{8, 3, 4.5};
+  // POV-Ray keeps mortar, agate_turb, frequency, phase and exponent in single precision; so does the parser.
+  double mortar = 0.5;           // brick: float(mortar − 2e-10), as POV-Ray stores it
+  double agate_turb = 1.0;
+  double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
+  double phase = 0.0;
+  WaveType wave = WaveType::ramp;
+  double exponent = 1.0;         // poly_wave
+  std::optional<Turbulence> turbulence;   // the classic `turbulence` (always applied last, next to the pattern)
+  std::vector<PatternWarp> warps;         // in written order
+  Matrix world_from_pattern;     // every transform applied to the pigment since it was created (after its warps)
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -180,6 +227,7 @@ struct GlobalSettings {
   Colour ambient_light{1, 1, 1};
   int max_trace_level = 5;
   double adc_bailout = 1.0 / 255.0;
+  std::optional<int> noise_generator;    // 1 or 2; absent: 1 before #version 3.5, 2 from then on (as POV-Ray)
 };
 
 struct SceneDescription {

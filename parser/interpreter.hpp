@@ -190,6 +190,20 @@ class Interpreter {
   Matrix parse_transform_block(const Token& keyword);
   const Texture& default_texture() const { return default_texture_; }
 
+  // ---- pigment patterns, maps and pattern modifiers (pigments.cpp) ----
+  Pigment parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer);
+  Pigment default_pigment() const;
+  bool try_pattern(const Token& t, Pigment& p);
+  bool try_pattern_modifier(const Token& t, Pigment& p);
+  bool try_pattern_parameter(const Token& t, Pigment& p);
+  bool starts_map_expression(const Token& t) const;
+  std::vector<MapEntry> parse_list_entries(PatternKind kind, std::size_t count);
+  BlendMapValue parse_blend_map(const Token& keyword, bool weights_optional = false);
+  void parse_colour_map_entry(std::vector<MapEntry>& entries);
+  void parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional);
+  void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
+  void parse_warp(const Token& keyword, Pigment& p);
+
   // ---- objects (objects.cpp) ----
   std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source
   Object parse_sphere(const Token& keyword);

@@ -94,7 +94,12 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(parse_float()), 1, 256);
     } else if (k == "adc_bailout") {
       scene_.settings.adc_bailout = parse_float();
-    } else if (k == "charset" || k == "number_of_waves" || k == "noise_generator") {
+    } else if (k == "noise_generator") {
+      // 1 and 2 are povtrace's lattice noise with POV-Ray's two output ranges; 3 (Perlin's improved noise) is not.
+      const double g = parse_float();
+      if (g != 1 && g != 2) fail_unsupported(t, "the global setting 'noise_generator " + std::to_string(int(g)) + "'");
+      scene_.settings.noise_generator = static_cast<int>(g);
+    } else if (k == "charset" || k == "number_of_waves") {
       next();   // accepted: no effect on what povtrace renders so far
     } else if (!k.empty() && is_reserved_word(k)) {
       fail_unsupported(t, "the global setting '" + std::string(k) + "'");
@@ -149,6 +154,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
   if (k == "sky_sphere") return Value(parse_sky_sphere(first));

@@ -64,35 +64,9 @@ Matrix Interpreter::parse_transform_block(const Token& keyword) {
   return inverse ? m.inverse() : m;
 }
 
+// One item of a pigment body: a pattern (pigments.cpp), a colour, a transform or a pattern modifier.
 bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
-  if (t.is("checker")) {
-    p.pattern = PatternKind::checker;
-    p.entries.clear();
-    // Optional colours; POV-Ray's defaults are blue and green.
-    Token n = peek();
-    if (starts_colour(n) || (n.kind == TokenKind::symbol && (n.is("<") || n.is("(")))) {
-      p.entries.push_back(parse_colour());
-      accept(",");
-      Token m = peek();
-      if (starts_colour(m) || m.is("<")) p.entries.push_back(parse_colour());
-    }
-    const Colour defaults[2] = {{0, 0, 1, 0, 0}, {0, 1, 0, 0, 0}};
-    while (p.entries.size() < 2) p.entries.push_back(defaults[p.entries.size()]);
-    return true;
-  }
-  // brick and hexagon take a list of colours like checker; povtrace does not render them yet, but their
-  // colours belong to the pattern (not to a following solid colour), so they are read here (up to 2 and 3).
-  if (t.is("brick") || t.is("hexagon")) {
-    taint(p.unsupported, UnsupportedFeature{"the pigment pattern '" + std::string(t.text) + "'", t.loc});
-    const int count = t.is("brick") ? 2 : 3;
-    for (int i = 0; i < count; ++i) {
-      if (i > 0) accept(",");
-      Token n = peek();
-      if (!(starts_colour(n) || n.is("<"))) break;
-      parse_colour();
-    }
-    return true;
-  }
+  if (try_pattern(t, p)) return true;
   if (starts_colour(t)) {
     unget(t);
     p.pattern = PatternKind::solid;
@@ -101,28 +75,13 @@ bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
   }
   Matrix m;
   if (try_transform(t, m)) { transform_pigment(p, m); return true; }
-  return false;
+  return try_pattern_modifier(t, p);
 }
 
 Pigment Interpreter::parse_pigment_block(const Token& keyword, const Pigment& start) {
+  const NestingGuard guard(*this, keyword);
   expect("{", " after 'pigment'");
-  Pigment p = start;
-  p.loc = keyword.loc;
-  Token t = next();
-  if (const Pigment* id = identifier_value<Pigment>(lookup(t))) {
-    p = *id;
-    t = next();
-  }
-  while (!t.is("}")) {
-    if (try_pigment_item(t, p)) { t = next(); continue; }
-    if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
-      taint(p.unsupported, skip_unsupported(t, "the pigment item '" + std::string(t.text) + "'"));
-      t = next();
-      continue;
-    }
-    fail_expected(t, "a colour, a pattern, a transform or '}' in pigment { }");
-  }
-  return p;
+  return parse_pigment_contents(start, keyword.loc, "}");
 }
 
 Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start) {

@@ -40,7 +40,8 @@ void Interpreter::skip_balanced(const Token& open) {
 
 // Whether `t` still belongs to the arguments of the item being skipped.
 bool Interpreter::continues_arguments(const Token& t) {
-  if (t.kind == TokenKind::end_of_input || t.is("}")) return false;
+  // A closer that was not opened while skipping ends the enclosing construct (a pigment_map entry's ']').
+  if (t.kind == TokenKind::end_of_input || t.is("}") || t.is("]") || t.is(")")) return false;
   if (t.kind != TokenKind::identifier || !is_reserved_word(t.text) || is_value_word(t.text)) return true;
   // A reserved word followed by '(' is a function call inside an expression (sin(…), vrotate(…)).
   return peek().is("(");

@@ -66,6 +66,12 @@ struct OpaqueValue {
   UnsupportedFeature feature;
 };
 
+// A declared color_map or pigment_map (`#declare M = color_map { … }`), used as `color_map { M }`.
+struct BlendMapValue {
+  bool pigments = false;   // pigment_map
+  std::vector<MapEntry> entries;
+};
+
 struct ArrayValue;   // array[N]… (below: it holds Values)
 struct UserFile;     // a file opened by #fopen (file_io.cpp)
 struct FunctionValue;   // function { … } (function_value.hpp)
@@ -73,7 +79,7 @@ struct FunctionValue;   // function { … } (function_value.hpp)
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
                            Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue,
                            MaterialValue, std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
-                           std::shared_ptr<const FunctionValue>, SkySphere>;
+                           std::shared_ptr<const FunctionValue>, SkySphere, BlendMapValue>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies

@@ -6,34 +6,18 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "renderer/pattern/render_pigment.hpp"
+
 namespace povtrace::render {
 
 namespace {
-RenderPigment make_pigment(const Pigment& p) {
-  RenderPigment r;
-  r.pattern = p.pattern;
-  r.colour = p.colour;
-  for (std::size_t i = 0; i < 2 && i < p.entries.size(); ++i) r.entries[i] = p.entries[i];
-  r.transformed = !(p.world_from_pattern == Matrix::identity());
-  if (r.transformed) r.pattern_from_world = p.world_from_pattern.inverse();
-  return r;
-}
-
-bool pigment_has_transparency(const Pigment& p) {
-  auto clear = [](const Colour& c) { return c.f != 0.0 || c.t != 0.0; };
-  if (p.pattern == PatternKind::solid) return clear(p.colour);
-  for (const auto& e : p.entries)
-    if (clear(e)) return true;
-  return false;
-}
-
 Material make_material(const Texture& texture, const std::optional<Interior>& interior) {
   Material m;
   m.interior = interior.value_or(Interior{});
   m.opaque = false;
   for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
     RenderLayer layer;
-    layer.pigment = make_pigment(it->pigment);
+    layer.pigment = build_render_pigment(it->pigment);
     layer.finish = it->finish;
     layer.specular_exponent = 1.0 / it->finish.roughness;
     layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
@@ -157,6 +141,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     if (!m.opaque && p.casts_shadow && in.fade_power > 0 && std::fabs(in.fade_distance) > tolerance::epsilon)
       r.any_shadow_fade = true;
   }
+  const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
+  use_noise_generator(r.materials, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
   r.accelerator = Accelerator(std::move(primitives));
   r.camera_interiors = r.containing_interiors(scene.camera.location);
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
@@ -174,7 +160,10 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   else
     r.background_colour = Colour{bg.r * (1.0 - bg.t), bg.g * (1.0 - bg.t), bg.b * (1.0 - bg.t), 0, 0};
   if (scene.sky_sphere) {
-    for (const Pigment& p : scene.sky_sphere->pigments) r.sky_pigments.push_back(make_pigment(p));
+    for (const Pigment& p : scene.sky_sphere->pigments) {
+      r.sky_pigments.push_back(build_render_pigment(p));
+      set_generator(r.sky_pigments.back(), generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
+    }
     r.sky_emission = rgb_of(scene.sky_sphere->emission);
     r.sky_transformed = !(scene.sky_sphere->world_from_sky == Matrix::identity());
     if (r.sky_transformed) r.sky_from_world = scene.sky_sphere->world_from_sky.inverse();

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "parser/description.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/interior_list.hpp"
+#include "renderer/pattern/pattern.hpp"
 
 namespace povtrace::render {
 
@@ -19,12 +21,30 @@ inline Rgb rgb_of(const Colour& c) { return {c.r, c.g, c.b}; }
 // POV-Ray's intensity weights (pipeline notation grey()).
 inline double grey(const Rgb& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
 
+// One step from the pigment's outer space toward pattern space: an inverse transform, then (if any) a turbulence
+// displacement. Built from the pigment's transforms and warps in POV-Ray's order of application (pigment.cpp).
+struct PatternStep {
+  bool transformed = false;
+  Matrix pattern_from_world;
+  std::optional<Turbulence> turbulence;
+};
+
+// An entry of the pigment's map: a colour, or a child pigment (index into RenderPigment::children).
+struct RenderMapEntry {
+  double value = 0;
+  Colour colour;
+  int child = -1;
+};
+
 struct RenderPigment {
   PatternKind pattern = PatternKind::solid;
   Colour colour;
-  Colour entries[2];
-  bool transformed = false;
-  Matrix pattern_from_world;
+  PatternParams params;
+  WaveParams wave;
+  std::vector<PatternStep> steps;        // world → pattern space, in order
+  bool classic_turbulence_warps = false; // the classic turbulence displaces the point (not marble or wood)
+  std::vector<RenderMapEntry> map;       // the written map or the pattern's built-in one; never empty for patterns
+  std::vector<RenderPigment> children;   // pigment_map / pigment list entries
 };
 
 struct RenderLayer {

@@ -353,16 +353,16 @@ TEST(Textures, PigmentForms) {
   const Pigment& p0 = top_layer(s.objects[0]).pigment;
   EXPECT_EQ(p0.pattern, PatternKind::checker);
   ASSERT_EQ(p0.entries.size(), 2u);
-  expect_colour(p0.entries[0], {0, 0, 1, 0, 0});   // blue
-  expect_colour(p0.entries[1], {0, 1, 0, 0, 0});   // green
+  expect_colour(p0.entries[0].colour, {0, 0, 1, 0, 0});   // blue
+  expect_colour(p0.entries[1].colour, {0, 1, 0, 0, 0});   // green
   const Pigment& p1 = top_layer(s.objects[1]).pigment;
   ASSERT_EQ(p1.entries.size(), 2u);
-  expect_colour(p1.entries[0], {1, 1, 1, 0, 0});
-  expect_colour(p1.entries[1], {1, 0, 0, 0, 0});
+  expect_colour(p1.entries[0].colour, {1, 1, 1, 0, 0});
+  expect_colour(p1.entries[1].colour, {1, 0, 0, 0, 0});
   const Pigment& p2 = top_layer(s.objects[2]).pigment;
   ASSERT_EQ(p2.entries.size(), 2u);
-  expect_colour(p2.entries[0], {1, 0, 0, 0, 0});
-  expect_colour(p2.entries[1], {0, 1, 0, 0, 0});   // the second stays at its default
+  expect_colour(p2.entries[0].colour, {1, 0, 0, 0, 0});
+  expect_colour(p2.entries[1].colour, {0, 1, 0, 0, 0});   // the second stays at its default
   EXPECT_EQ(top_layer(s.objects[3]).pigment.pattern, PatternKind::solid);
   expect_colour(top_layer(s.objects[3]).pigment.colour, {1, 0, 0, 0, 0});
   expect_colour(top_layer(s.objects[4]).pigment.colour, {0, 1, 0, 0, 0.5});

@@ -1,0 +1,94 @@
+// Pattern dispatch, the geometric patterns and the wave step (pattern.cpp Evaluate_TPat in POV-Ray 3.7).
+#include "renderer/pattern/pattern.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "renderer/pattern/pattern_functions.hpp"
+
+namespace povtrace::render {
+
+namespace {
+// POV-Ray's CLIP_DENSITY for the distance patterns: 1 at the centre falling to 0 at distance 1, 0 beyond
+// (and 1 for a negative distance, which cannot happen here).
+double fall_off(double r) { return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r; }
+
+// gradient: P·V̂, folded into [0, 1] only above 1 (negative values are wrapped by the wave step).
+double gradient(Vec3 p, Vec3 direction) {
+  const double d = dot(p, direction);
+  return d > 1.0 ? std::fmod(d, 1.0) : d;
+}
+
+// radial: the angle around the y axis as a fraction of a turn (atan2(x, z), so 0.5 along −z and 0.75 along +z),
+// offset by a quarter turn; POV-Ray returns 0.25 within 0.001 of the axis.
+double radial(Vec3 p) {
+  constexpr double kAxisZone = 0.001;
+  if (std::fabs(p.x) < kAxisZone && std::fabs(p.z) < kAxisZone) return 0.25;
+  return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / (2.0 * std::numbers::pi);
+}
+
+double leopard(Vec3 p) {
+  const double mean = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+  return mean * mean;
+}
+
+double triangle_wave(double v) {
+  const double offset = v - std::floor(v);
+  return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+}  // namespace
+
+double cycloidal(double v) {
+  // POV-Ray scales the fractional part by 50000 and back before the sine; kept for identical rounding.
+  constexpr double kSteps = 50000.0;
+  const double two_pi = 2.0 * std::numbers::pi;
+  if (v >= 0.0) return std::sin(((v - std::floor(v)) * kSteps) / kSteps * two_pi);
+  const double f = -(v + std::floor(-v));
+  return -std::sin((f * kSteps) / kSteps * two_pi);
+}
+
+double pattern_value(const PatternParams& params, Vec3 p) {
+  switch (params.kind) {
+    case PatternKind::checker: return patterns::checker(p);
+    case PatternKind::hexagon: return patterns::hexagon(p);
+    case PatternKind::brick: return patterns::brick(p, params.brick_size, params.mortar);
+    case PatternKind::gradient: return gradient(p, params.gradient);
+    case PatternKind::radial: return radial(p);
+    case PatternKind::onion: return std::fmod(length(p), 1.0);
+    case PatternKind::planar: return fall_off(std::fabs(p.y));
+    case PatternKind::boxed: return fall_off(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
+    case PatternKind::spherical: return fall_off(length(p));
+    case PatternKind::cylindrical: return fall_off(std::sqrt(p.x * p.x + p.z * p.z));
+    case PatternKind::leopard: return leopard(p);
+    case PatternKind::bozo:
+    case PatternKind::spotted: return noise(p, params.noise_generator);
+    case PatternKind::granite: return patterns::granite(p, params.noise_generator);
+    case PatternKind::marble: return patterns::marble(p, params.turbulence, params.noise_generator);
+    case PatternKind::wood: return patterns::wood(p, params.turbulence);
+    case PatternKind::agate:
+      return patterns::agate(p, params.turbulence.value_or(Turbulence{}), params.agate_turb, params.noise_generator);
+    case PatternKind::solid:
+    case PatternKind::average: break;   // no pattern value: evaluate_pigment handles them
+  }
+  return 0.0;
+}
+
+// fmod by 1.00001 (not 1) keeps an exact 1.0 at 1.0, so the last map entry is reachable; negative values (a
+// negative frequency or gradient) wrap into [0, 1).
+double apply_wave(double value, const WaveParams& w) {
+  constexpr double kWrap = 1.00001;
+  if (w.frequency != 0.0) value = std::fmod(value * w.frequency + w.phase, kWrap);
+  if (value < 0.0) value -= std::floor(value);
+  switch (w.wave) {
+    case WaveType::ramp: return value;
+    case WaveType::sine: return (1.0 + cycloidal(value)) * 0.5;
+    case WaveType::triangle: return triangle_wave(value);
+    case WaveType::scallop: return std::fabs(cycloidal(value * 0.5));
+    case WaveType::cubic: return value * value * (3.0 - 2.0 * value);
+    case WaveType::poly: return std::pow(value, w.exponent);
+  }
+  return value;
+}
+
+}  // namespace povtrace::render

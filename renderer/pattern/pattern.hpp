@@ -1,0 +1,41 @@
+// Pattern values in pattern space and the wave step after them, as POV-Ray 3.7 computes them
+// (pattern.cpp: Evaluate_TPat and the *_pattern functions; povray-sdl-and-geometry.md §11).
+#pragma once
+
+#include <optional>
+
+#include "parser/description.hpp"
+#include "renderer/pattern/noise.hpp"
+
+namespace povtrace::render {
+
+// What a pattern function reads besides the point.
+struct PatternParams {
+  PatternKind kind = PatternKind::solid;
+  Vec3 gradient{1, 0, 0};
+  Vec3 brick_size{8, 3, 4.5};
+  double mortar = 0.5;
+  double agate_turb = 1.0;
+  std::optional<Turbulence> turbulence;   // the classic turbulence: marble, wood and agate use it inside
+  NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
+};
+
+// The frequency/phase/wave step every pattern value goes through.
+struct WaveParams {
+  double frequency = 1.0;
+  double phase = 0.0;
+  WaveType wave = WaveType::ramp;
+  double exponent = 1.0;
+};
+
+// The raw value of the pattern at a pattern-space point: 0..1 for most, 0/1 for checker and brick, 0/1/2 for
+// hexagon, any value for marble and wood (their wave folds it).
+double pattern_value(const PatternParams& params, Vec3 p);
+
+// Frequency, phase and the wave shape (Evaluate_TPat after the pattern switch).
+double apply_wave(double value, const WaveParams& wave);
+
+// POV-Ray's cycloidal(): sin(2π·v) computed on the fractional part of v.
+double cycloidal(double v);
+
+}  // namespace povtrace::render

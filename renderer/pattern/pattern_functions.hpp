@@ -1,0 +1,18 @@
+// The pattern functions behind pattern_value(), grouped by file: tilings.cpp (checker, hexagon, brick) and
+// noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate). Internal to renderer/pattern.
+#pragma once
+
+#include "renderer/pattern/pattern.hpp"
+
+namespace povtrace::render::patterns {
+
+double checker(Vec3 p);
+double hexagon(Vec3 p);
+double brick(Vec3 p, Vec3 size, double mortar);
+
+double granite(Vec3 p, NoiseGenerator generator);
+double marble(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerator generator);
+double wood(Vec3 p, const std::optional<Turbulence>& turbulence);
+double agate(Vec3 p, const Turbulence& turbulence, double agate_turb, NoiseGenerator generator);
+
+}  // namespace povtrace::render::patterns

@@ -1,0 +1,77 @@
+#include "renderer/pattern/render_pigment.hpp"
+
+#include "renderer/pattern/default_maps.hpp"
+
+namespace povtrace::render {
+
+namespace {
+PatternStep step(const Matrix& world_from_pattern, const std::optional<Turbulence>& turbulence) {
+  PatternStep s;
+  s.transformed = !(world_from_pattern == Matrix::identity());
+  if (s.transformed) s.pattern_from_world = world_from_pattern.inverse();
+  s.turbulence = turbulence;
+  return s;
+}
+
+// POV-Ray keeps transforms and warps in one list applied newest first (Transform_Tpattern, Parse_Warp): from the
+// outside in, the transforms written last, then the last warp, the transforms before it, and so on.
+std::vector<PatternStep> steps_of(const Pigment& p) {
+  std::vector<PatternStep> steps;
+  const Matrix* outer = &p.world_from_pattern;
+  for (auto it = p.warps.rbegin(); it != p.warps.rend(); ++it) {
+    steps.push_back(step(*outer, it->turbulence));   // the transforms after this warp, then the warp
+    outer = &it->before;
+  }
+  steps.push_back(step(*outer, std::nullopt));
+  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence; });
+  return steps;
+}
+
+void add_map(RenderPigment& r, const std::vector<MapEntry>& entries) {
+  for (const auto& e : entries) {
+    RenderMapEntry m{e.value, e.colour, -1};
+    if (e.pigment) {
+      m.child = static_cast<int>(r.children.size());
+      r.children.push_back(build_render_pigment(*e.pigment));
+    }
+    r.map.push_back(m);
+  }
+}
+
+}  // namespace
+
+void set_generator(RenderPigment& r, NoiseGenerator generator) {
+  r.params.noise_generator = generator;
+  for (auto& c : r.children) set_generator(c, generator);
+}
+
+RenderPigment build_render_pigment(const Pigment& p) {
+  RenderPigment r;
+  r.pattern = p.pattern;
+  r.colour = p.colour;
+  if (p.pattern == PatternKind::solid) return r;
+  r.params = PatternParams{p.pattern, p.gradient, p.brick_size, p.mortar, p.agate_turb, p.turbulence,
+                           NoiseGenerator::range_corrected};
+  r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
+  r.steps = steps_of(p);
+  // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
+  r.classic_turbulence_warps =
+      p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
+  add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries);
+  return r;
+}
+
+bool pigment_has_transparency(const Pigment& p) {
+  auto clear = [](const Colour& c) { return c.f != 0.0 || c.t != 0.0; };
+  if (clear(p.colour)) return true;
+  for (const auto& e : p.entries)
+    if (e.pigment ? pigment_has_transparency(*e.pigment) : clear(e.colour)) return true;
+  return false;
+}
+
+void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator) {
+  for (auto& m : materials)
+    for (auto& layer : m.layers) set_generator(layer.pigment, generator);
+}
+
+}  // namespace povtrace::render

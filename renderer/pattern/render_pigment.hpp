@@ -1,0 +1,22 @@
+// Builds the render-ready pigment (RenderPigment, render_scene.hpp) from a described one.
+#pragma once
+
+#include <vector>
+
+#include "parser/description.hpp"
+#include "renderer/render_scene.hpp"
+
+namespace povtrace::render {
+
+RenderPigment build_render_pigment(const Pigment& pigment);
+
+// Whether any colour the pigment can produce has filter or transmit (POV-Ray's Post_Pigment HAS_FILTER): its own
+// colour, its map's colours and its child pigments.
+bool pigment_has_transparency(const Pigment& pigment);
+
+// The noise generator of the scene (POV-Ray: 1 before #version 3.5, 2 from then on) for every pigment.
+void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator);
+// The same for one pigment and the pigments of its maps (a sky_sphere's).
+void set_generator(RenderPigment& r, NoiseGenerator generator);
+
+}  // namespace povtrace::render

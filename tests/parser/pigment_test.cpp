@@ -1,0 +1,110 @@
+// Pigment patterns, maps and modifiers as the parser records them (povray-sdl-and-geometry.md §11).
+#include <gtest/gtest.h>
+
+#include "parse_helpers.hpp"
+
+namespace povtrace::test {
+namespace {
+
+const Pigment& pigment_of(const SceneDescription& s, std::size_t i = 0) {
+  return s.objects.at(i).texture->layers.back().pigment;
+}
+SceneDescription scene(const std::string& body) { return parse("#version 3.7;\n" + body); }
+double single(double d) { return static_cast<double>(static_cast<float>(d)); }
+
+TEST(PigmentParse, ColourMapSyntaxes) {
+  const SceneDescription scene_p = scene(
+      "#declare M = color_map { [0.1 rgb 1] [0.3, rgbt <0, 0, 1, 0.5>] [0.5, 0.9 color rgb 0 color rgb <1, 0, 0>] }\n"
+      "sphere { 0, 1 pigment { gradient y colour_map { M } } }\n");
+  const Pigment& p = pigment_of(scene_p);
+  EXPECT_EQ(p.pattern, PatternKind::gradient);
+  ASSERT_EQ(p.entries.size(), 4u);
+  EXPECT_EQ(p.entries[0].value, single(0.1));   // map values are single precision, as in POV-Ray
+  EXPECT_EQ(p.entries[1].colour.t, 0.5);
+  EXPECT_EQ(p.entries[2].value, 0.5);           // the old two-colour entry becomes two entries
+  EXPECT_EQ(p.entries[3].value, single(0.9));
+  EXPECT_EQ(p.entries[3].colour.r, 1.0);
+}
+
+TEST(PigmentParse, PigmentMapAndListEntries) {
+  const SceneDescription s = scene(
+      "#declare P = pigment { rgb <0, 1, 0> }\n"
+      "sphere { 0, 1 pigment { bozo pigment_map { [0 P] [1 checker rgb 1, rgb 0 scale 2] } } }\n"
+      "sphere { 0, 1 pigment { hexagon pigment { P } } }\n");
+  const Pigment& a = pigment_of(s, 0);
+  ASSERT_EQ(a.entries.size(), 2u);
+  ASSERT_TRUE(a.entries[1].pigment);
+  EXPECT_EQ(a.entries[1].pigment->pattern, PatternKind::checker);
+  EXPECT_EQ(a.entries[0].pigment->colour.g, 1.0);
+  const Pigment& h = pigment_of(s, 1);
+  ASSERT_EQ(h.entries.size(), 3u);   // the two missing entries are the #default pigment
+  EXPECT_EQ(h.entries[0].pigment->colour.g, 1.0);
+  EXPECT_EQ(h.entries[2].value, 2.0);
+  EXPECT_EQ(h.frequency, 0.0);       // list patterns skip the wave step
+}
+
+TEST(PigmentParse, ModifiersAndDefaults) {
+  const SceneDescription scene_p = scene(
+      "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 20 omega 0.3 frequency 3 phase 0.1 poly_wave 2 } }\n");
+  const Pigment& p = pigment_of(scene_p);
+  EXPECT_EQ(p.pattern, PatternKind::marble);
+  ASSERT_TRUE(p.turbulence);
+  EXPECT_EQ(p.turbulence->amount.y, 0.5);
+  EXPECT_EQ(p.turbulence->octaves, 10);   // clamped as POV-Ray does
+  EXPECT_EQ(p.turbulence->omega, 0.3);
+  EXPECT_EQ(p.turbulence->lambda, 2.0);
+  EXPECT_EQ(p.phase, single(0.1));
+  EXPECT_EQ(p.wave, WaveType::poly);
+  EXPECT_EQ(p.exponent, 2.0);
+  const SceneDescription scene_w = scene("sphere { 0, 1 pigment { wood } }\n");
+  const Pigment& w = pigment_of(scene_w);
+  EXPECT_EQ(w.wave, WaveType::triangle);
+  const SceneDescription scene_b = scene("sphere { 0, 1 pigment { brick mortar 0.2 } }\n");
+  const Pigment& b = pigment_of(scene_b);
+  EXPECT_EQ(b.mortar, single(0.2 - 2e-10));
+  EXPECT_EQ(b.entries[1].colour.r, single(0.6));
+}
+
+TEST(PigmentParse, WarpsSplitTheTransformsInWrittenOrder) {
+  const SceneDescription scene_p = scene(
+      "sphere { 0, 1 pigment { bozo scale 2 warp { turbulence 0.4 octaves 3 } translate x } }\n");
+  const Pigment& p = pigment_of(scene_p);
+  ASSERT_EQ(p.warps.size(), 1u);
+  EXPECT_EQ(p.warps[0].before, Matrix::scaling({2, 2, 2}));
+  EXPECT_EQ(p.warps[0].turbulence.octaves, 3);
+  EXPECT_EQ(p.world_from_pattern, Matrix::translation({1, 0, 0}));
+  EXPECT_FALSE(p.turbulence);
+}
+
+TEST(PigmentParse, CopyAndModifyKeepsTheMap) {
+  const SceneDescription scene_p = scene(
+      "#declare P = pigment { gradient x color_map { [0 rgb 1] [1 rgb <1, 0, 0>] } }\n"
+      "sphere { 0, 1 pigment { P onion frequency 2 } }\n");
+  const Pigment& p = pigment_of(scene_p);
+  EXPECT_EQ(p.pattern, PatternKind::onion);
+  EXPECT_EQ(p.entries.size(), 2u);
+  EXPECT_EQ(p.frequency, 2.0);
+}
+
+TEST(PigmentParse, Refusals) {
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { checker color_map { [0 rgb 1] } } }\n")
+                .bare_message().find("cannot use color_map"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo mortar 0.1 } }\n")
+                .bare_message().find("non-brick"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { average } }\n")
+                .bare_message().find("pigment_map"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { repeat x } } }\n")
+                .bare_message().find("unsupported: the warp 'repeat'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 crackle] [1 rgb 1] } } }\n")
+                .bare_message().find("unsupported: the pigment item 'crackle'"), std::string::npos);
+}
+
+TEST(PigmentParse, GlobalNoiseGenerator) {
+  EXPECT_EQ(scene("global_settings { noise_generator 1 }\n").settings.noise_generator, 1);
+  EXPECT_FALSE(scene("global_settings { }\n").settings.noise_generator);
+  EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 3 }\n")
+                .bare_message().find("unsupported: the global setting 'noise_generator 3'"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace povtrace::test

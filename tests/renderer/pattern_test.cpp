@@ -1,0 +1,258 @@
+// Pattern values at hand-computed points, the wave step, colour-map lookup, and statistical properties of the
+// noise (which cannot match POV-Ray's point by point: its random table is not ours).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "renderer/pattern/noise.hpp"
+#include "renderer/pattern/pattern.hpp"
+#include "renderer/pattern/render_pigment.hpp"
+#include "renderer/tracer.hpp"
+
+namespace povtrace::render {
+namespace {
+
+double value_of(PatternKind kind, Vec3 p) {
+  PatternParams params;
+  params.kind = kind;
+  return pattern_value(params, p);
+}
+
+TEST(Pattern, GradientIsTheProjectionFoldedAboveOne) {
+  PatternParams g;
+  g.kind = PatternKind::gradient;
+  g.gradient = normalize(Vec3{1, 1, 0});
+  EXPECT_NEAR(pattern_value(g, {0.5, 0.5, 7}), std::sqrt(0.5), 1e-15);
+  g.gradient = {1, 0, 0};
+  EXPECT_NEAR(pattern_value(g, {2.25, 0, 0}), 0.25, 1e-15);
+  EXPECT_DOUBLE_EQ(pattern_value(g, {1.0, 0, 0}), 1.0);       // exactly 1 is kept
+  EXPECT_DOUBLE_EQ(pattern_value(g, {-0.75, 0, 0}), -0.75);   // negatives are left to the wave step
+}
+
+TEST(Pattern, RadialIsTheAngleAroundY) {
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::radial, {0, 5, 1}), 0.75);    // atan2(0, 1) = 0
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::radial, {1, 0, 0}), 1.0);     // a quarter turn further
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::radial, {0, 0, -1}), 1.25);   // atan2(0, −1) = π
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::radial, {0.0005, 3, 0}), 0.25);   // on the axis
+}
+
+TEST(Pattern, DistancePatternsFallFromOneToZero) {
+  EXPECT_NEAR(value_of(PatternKind::onion, {3, 4, 0}), 0.0, 1e-15);           // |p| = 5
+  EXPECT_NEAR(value_of(PatternKind::onion, {0, 2.25, 0}), 0.25, 1e-15);
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::planar, {9, -0.25, 9}), 0.75);
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::boxed, {0.5, -0.75, 0.25}), 0.25);
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::spherical, {0.6, 0, 0.8}), 0.0);    // |p| = 1
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::spherical, {0, 2, 0}), 0.0);        // beyond 1
+  EXPECT_NEAR(value_of(PatternKind::cylindrical, {0.3, 50, 0.4}), 0.5, 1e-15);
+}
+
+TEST(Pattern, LeopardIsTheSquaredMeanOfSines) {
+  const double h = std::numbers::pi / 2;
+  EXPECT_NEAR(value_of(PatternKind::leopard, {h, h, h}), 1.0, 1e-15);
+  EXPECT_NEAR(value_of(PatternKind::leopard, {h, 0, 0}), 1.0 / 9.0, 1e-15);
+}
+
+TEST(Pattern, CheckerIsTheCellParity) {
+  EXPECT_EQ(value_of(PatternKind::checker, {0.5, 0.5, 0.5}), 0.0);
+  EXPECT_EQ(value_of(PatternKind::checker, {1.5, 0.5, 0.5}), 1.0);
+  EXPECT_EQ(value_of(PatternKind::checker, {-0.5, 0.5, 0.5}), 1.0);
+  EXPECT_EQ(value_of(PatternKind::checker, {1 - 1e-11, 0.5, 0.5}), 1.0);   // within ε below 1 counts as above
+}
+
+TEST(Pattern, HexagonColoursRepeatEveryThreeAlongAColumn) {
+  // Centres at (1.5 i, 0.866 j), i + j even; colour (j + 3·(i mod 2))/2 mod 3.
+  const double h = 0.866025404;
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0, 0, 0}), 0.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0.95, 0, 0}), 0.0);        // corner of the central hexagon on x
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0, 0, 2 * h}), 1.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0, 0, 4 * h}), 2.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0, 0, 6 * h}), 0.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {1.5, 0, h}), 2.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {1.5, 0, 3 * h}), 0.0);
+  EXPECT_EQ(value_of(PatternKind::hexagon, {-1.5, 0, h}), 2.0);        // mirrored in x
+  EXPECT_EQ(value_of(PatternKind::hexagon, {0, 0, -2 * h}), 2.0);      // periodic in z
+}
+
+TEST(Pattern, BrickHasMortarAtTheLowSideOfEachBrick) {
+  PatternParams b;
+  b.kind = PatternKind::brick;
+  b.brick_size = {8, 3, 4.5};
+  b.mortar = 0.5;
+  EXPECT_EQ(pattern_value(b, {4, 1.5, 1}), 1.0);      // inside the first brick
+  EXPECT_EQ(pattern_value(b, {4, -0.2, 2}), 0.0);     // bed joint: y + mortar within [0, mortar] of a course
+  EXPECT_EQ(pattern_value(b, {-0.2, 1.5, 1}), 0.0);   // head joint of the first course at x = 0
+  EXPECT_EQ(pattern_value(b, {-0.2, 4.5, 1}), 1.0);   // the second course is offset by half a brick…
+  EXPECT_EQ(pattern_value(b, {3.8, 4.5, 1}), 0.0);    // …so its joint is at x = 4
+  EXPECT_EQ(pattern_value(b, {2, 1.5, 2.0}), 0.0);    // facing joint of the first course at z = 2.25 − mortar
+  EXPECT_EQ(pattern_value(b, {2, 4.5, -0.2}), 0.0);   // and of the second course at z = 0
+}
+
+TEST(Wave, ShapesAndFrequency) {
+  WaveParams w;
+  EXPECT_DOUBLE_EQ(apply_wave(1.0, w), 1.0);    // fmod by 1.00001 keeps an exact 1
+  EXPECT_NEAR(apply_wave(-0.25, w), 0.75, 1e-15);
+  w.frequency = 2;
+  w.phase = 0.1;
+  EXPECT_NEAR(apply_wave(0.3, w), std::fmod(0.7, 1.00001), 1e-15);
+  w = WaveParams{};
+  w.wave = WaveType::triangle;
+  EXPECT_NEAR(apply_wave(0.25, w), 0.5, 1e-15);
+  EXPECT_NEAR(apply_wave(0.75, w), 0.5, 1e-15);
+  w.wave = WaveType::sine;
+  EXPECT_NEAR(apply_wave(0.25, w), 1.0, 1e-12);
+  w.wave = WaveType::scallop;
+  EXPECT_NEAR(apply_wave(0.5, w), std::sin(std::numbers::pi / 2), 1e-12);
+  w.wave = WaveType::cubic;
+  EXPECT_NEAR(apply_wave(0.25, w), 0.15625, 1e-15);
+  w.wave = WaveType::poly;
+  w.exponent = 3;
+  EXPECT_NEAR(apply_wave(0.5, w), 0.125, 1e-15);
+}
+
+Pigment gradient_pigment(std::vector<MapEntry> map) {
+  Pigment p;
+  p.pattern = PatternKind::gradient;
+  p.entries = std::move(map);
+  return p;
+}
+
+TEST(ColourMap, InterpolatesAllFiveChannelsBetweenNeighbours) {
+  const RenderPigment r = build_render_pigment(
+      gradient_pigment({{0.2, {0, 0, 0, 0, 0}, nullptr}, {0.6, {1, 0.5, 0, 0.4, 0.8}, nullptr}}));
+  const Colour c = evaluate_pigment(r, {0.5, 0, 0});
+  EXPECT_NEAR(c.r, 0.75, 1e-12);
+  EXPECT_NEAR(c.g, 0.375, 1e-12);
+  EXPECT_NEAR(c.f, 0.3, 1e-12);
+  EXPECT_NEAR(c.t, 0.6, 1e-12);
+  EXPECT_EQ(evaluate_pigment(r, {0.1, 0, 0}).r, 0.0);   // below the first entry
+  EXPECT_EQ(evaluate_pigment(r, {0.9, 0, 0}).r, 1.0);   // above the last
+}
+
+TEST(ColourMap, EqualValuesMakeAHardEdge) {
+  const RenderPigment r = build_render_pigment(gradient_pigment(
+      {{0.5, {1, 0, 0, 0, 0}, nullptr}, {0.5, {0, 0, 1, 0, 0}, nullptr}, {1.0, {0, 0, 0, 0, 0}, nullptr}}));
+  EXPECT_EQ(evaluate_pigment(r, {0.5, 0, 0}).r, 1.0);         // the value itself takes the first
+  const Colour above = evaluate_pigment(r, {0.5 + 1e-9, 0, 0});   // just above: the second, fading toward black
+  EXPECT_EQ(above.r, 0.0);
+  EXPECT_NEAR(above.b, 1.0, 1e-8);
+}
+
+TEST(ColourMap, DefaultMapIsBlackToWhite) {
+  Pigment p;
+  p.pattern = PatternKind::gradient;
+  EXPECT_NEAR(evaluate_pigment(build_render_pigment(p), {0.3, 0, 0}).g, 0.3, 1e-12);
+}
+
+TEST(PigmentMap, ChildPigmentsSeeTheOuterPatternSpace) {
+  auto inner = std::make_shared<Pigment>();
+  inner->pattern = PatternKind::gradient;   // black→white along x of the *outer* pattern space
+  Pigment outer = gradient_pigment({{0.0, {}, inner}, {1.0, {}, inner}});
+  outer.world_from_pattern = Matrix::scaling({2, 2, 2});
+  // world x = 0.8 → outer pattern x = 0.4 → the inner gradient sees 0.4 too.
+  EXPECT_NEAR(evaluate_pigment(build_render_pigment(outer), {0.8, 0, 0}).r, 0.4, 1e-12);
+}
+
+// ---- noise: statistics, not POV-Ray's values ----------------------------------------------------------
+
+struct Stats {
+  double min = 1e9, max = -1e9, mean = 0, sd = 0;
+};
+template <class F> Stats sample(F f) {
+  constexpr int kCount = 40000;
+  Stats s;
+  double sum = 0, sum2 = 0;
+  for (int i = 0; i < kCount; ++i) {
+    // A low-discrepancy walk through a large volume, away from the lattice planes.
+    const Vec3 p{std::fmod(i * 0.7548776662, 1.0) * 97.3 - 40, std::fmod(i * 0.5698402910, 1.0) * 83.1 - 31,
+                 std::fmod(i * 0.3141592653, 1.0) * 71.7 - 22};
+    const double v = f(p);
+    s.min = std::min(s.min, v);
+    s.max = std::max(s.max, v);
+    sum += v;
+    sum2 += v * v;
+  }
+  s.mean = sum / kCount;
+  s.sd = std::sqrt(sum2 / kCount - s.mean * s.mean);
+  return s;
+}
+
+TEST(Noise, RangeCorrectedNoiseIsInZeroOneCentredOnAHalf) {
+  const Stats s = sample([](Vec3 p) { return noise(p, NoiseGenerator::range_corrected); });
+  EXPECT_GE(s.min, 0.0);
+  EXPECT_LE(s.max, 1.0);
+  EXPECT_NEAR(s.mean, 0.5, 0.02);
+  // POV-Ray documents a raw standard deviation of about 0.257, i.e. 0.126 after its 0.49 stretch.
+  EXPECT_GT(s.sd, 0.08);
+  EXPECT_LT(s.sd, 0.17);
+  EXPECT_LT(s.min, 0.2);   // uses most of the range
+  EXPECT_GT(s.max, 0.8);
+}
+
+TEST(Noise, OriginalNoiseIsClippedToZeroOne) {
+  const Stats s = sample([](Vec3 p) { return noise(p, NoiseGenerator::original); });
+  EXPECT_GE(s.min, 0.0);
+  EXPECT_LE(s.max, 1.0);
+  EXPECT_NEAR(s.mean, 0.5, 0.03);
+  EXPECT_GT(s.sd, 0.16);   // about twice the spread of the corrected noise (no 0.49 stretch), then clipped
+}
+
+TEST(Noise, IsContinuousAcrossLatticeCells) {
+  for (double k : {-3.0, -1.0, 0.0, 1.0, 2.0, 17.0}) {
+    const Vec3 below{k - 1e-9, 0.37, 0.61}, above{k + 1e-9, 0.37, 0.61};
+    EXPECT_NEAR(noise(below, NoiseGenerator::range_corrected), noise(above, NoiseGenerator::range_corrected), 1e-7);
+    const Vec3 dv = vector_noise(below) - vector_noise(above);
+    EXPECT_LT(length(dv), 1e-7);
+  }
+}
+
+TEST(Noise, VariesOnTheScaleOfTheUnitLattice) {
+  // Neighbouring points a small step apart differ little; points a few cells apart are uncorrelated.
+  double near_sum = 0, far_sum = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 p{i * 0.731, i * 0.417, i * 0.293};
+    const double v = noise(p, NoiseGenerator::range_corrected);
+    near_sum += std::fabs(v - noise(p + Vec3{0.01, 0, 0}, NoiseGenerator::range_corrected));
+    far_sum += std::fabs(v - noise(p + Vec3{3.5, 0, 0}, NoiseGenerator::range_corrected));
+  }
+  EXPECT_LT(near_sum / 2000, 0.01);
+  EXPECT_GT(far_sum / 2000, 0.05);
+}
+
+TEST(Turbulence, IsTheOctaveSumWithOmegaAndLambda) {
+  const Vec3 p{1.3, -2.7, 0.45};
+  Turbulence t;
+  t.octaves = 3;
+  t.omega = 0.4;
+  t.lambda = 3.0;
+  const auto n = [](Vec3 q) { return noise(q, NoiseGenerator::original); };
+  EXPECT_NEAR(turbulence(p, t, NoiseGenerator::original), n(p) + 0.4 * n(p * 3.0) + 0.16 * n(p * 9.0), 1e-15);
+  const auto c = [](Vec3 q) { return 2.0 * noise(q, NoiseGenerator::range_corrected) - 0.5; };
+  EXPECT_NEAR(turbulence(p, t, NoiseGenerator::range_corrected),
+              std::clamp(c(p), 0.0, 1.0) + 0.4 * c(p * 3.0) + 0.16 * c(p * 9.0), 1e-15);
+  const Vec3 v = vector_turbulence(p, t);
+  const Vec3 expected = vector_noise(p) + vector_noise(p * 3.0) * 0.4 + vector_noise(p * 9.0) * 0.16;
+  EXPECT_LT(length(v - expected), 1e-15);
+  t.octaves = 1;
+  EXPECT_EQ(turbulence(p, t, NoiseGenerator::original), n(p));
+}
+
+TEST(NoisePatterns, MarbleAndWoodWithoutTurbulenceAreGeometric) {
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::marble, {0.3, 5, 5}), 0.3);
+  EXPECT_DOUBLE_EQ(value_of(PatternKind::wood, {3, 4, 99}), 5.0);
+}
+
+TEST(NoisePatterns, ValuesStayInRange) {
+  for (PatternKind k : {PatternKind::bozo, PatternKind::granite, PatternKind::agate}) {
+    PatternParams params;
+    params.kind = k;
+    params.turbulence = Turbulence{};
+    const Stats s = sample([&](Vec3 p) { return pattern_value(params, p); });
+    EXPECT_GE(s.min, 0.0);
+    EXPECT_LE(s.max, k == PatternKind::granite ? 2.0 : 1.0);   // granite sums six ridges of weight ½^k
+    EXPECT_GT(s.sd, 0.02);
+  }
+}
+
+}  // namespace
+}  // namespace povtrace::render
