@@ -121,9 +121,8 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   if (local) symbols_.local(id, std::move(*value)); else symbols_.declare(id, std::move(*value));
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
-  Token semi = peek_raw();
-  if (semi.is(";")) next();
-  else if (needs_semicolon) fail_expected(semi, "';' after the value of " + name);
+  if (raw_ahead().is(";")) next();
+  else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
   (void)at;
 }
 

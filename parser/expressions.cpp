@@ -19,9 +19,8 @@ constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| �
 
 enum class Comparison { none, less, greater, less_equal, greater_equal, equal, not_equal };
 
-Comparison comparison_of(const Token& op) {
-  if (op.kind != TokenKind::symbol) return Comparison::none;
-  const std::string_view s = op.text;
+Comparison comparison_of(TokenKind kind, std::string_view s) {
+  if (kind != TokenKind::symbol) return Comparison::none;
   if (s == "<") return Comparison::less;
   if (s == ">") return Comparison::greater;
   if (s == "<=") return Comparison::less_equal;
@@ -148,7 +147,8 @@ Numeric Interpreter::parse_expression() {
     if (starts_string(peek())) return compare_strings();
     Numeric left = parse_additive();
     while (true) {
-      const Comparison c = comparison_of(peek_raw());
+      const Ahead ahead = raw_ahead();
+      const Comparison c = comparison_of(ahead.kind, ahead.text);
       if (c == Comparison::none) return left;
       const Token op = next();
       Numeric right = parse_additive();
@@ -157,13 +157,13 @@ Numeric Interpreter::parse_expression() {
   };
   Numeric value = comparison();
   while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
-    if (const Token& look = peek_raw(); !look.is("&") && !look.is("|")) break;
+    if (const Ahead look = raw_ahead(); !look.is("&") && !look.is("|")) break;
     const Token op = next();
     const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
     const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
     value = Numeric::scalar((op.is("&") ? (a && b) : (a || b)) ? 1.0 : 0.0);
   }
-  if (!peek_raw().is("?")) return value;
+  if (!raw_ahead().is("?")) return value;
   const Token q = next();
   // `c ? a : c ? a : …` recurses here without passing parse_unary's guard at each level.
   const NestingGuard guard(*this, q);
@@ -180,7 +180,7 @@ Numeric Interpreter::parse_expression() {
 Numeric Interpreter::parse_additive() {
   Numeric value = parse_multiplicative();
   while (true) {
-    const Token& op = peek_raw();   // a reference: most operands are followed by no operator
+    const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
     const bool plus = op.is("+");
     if (!plus && !op.is("-")) return value;
     next();
@@ -192,7 +192,7 @@ Numeric Interpreter::parse_additive() {
 Numeric Interpreter::parse_multiplicative() {
   Numeric value = parse_unary();
   while (true) {
-    const Token& look = peek_raw();
+    const Ahead look = raw_ahead();
     const bool times = look.is("*");
     if (!times && !look.is("/")) return value;
     const Token op = next();
@@ -230,7 +230,7 @@ Numeric Interpreter::parse_unary() {
 // .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
 Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
   while (true) {
-    if (!peek_raw().is(".")) return value;
+    if (!raw_ahead().is(".")) return value;
     next();
     Token member = next();
     static const std::map<std::string_view, int> components = {

@@ -70,10 +70,20 @@ class Interpreter {
     return t.name ? symbols_.is_reserved(t.name) : is_reserved_word(t.text);
   }
   Token next();                  // next token after directives and macro calls
-  Token peek();
+  const Token& peek();   // valid until the next token is read
   // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
   // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
   const Token& peek_raw();   // valid until the next token is read
+  // Kind and text of what peek_raw() would return, without making a Token of it when the frame's next token is
+  // plain (not '#', not the end of a file): the look for an operator after every operand.
+  struct Ahead {
+    TokenKind kind;
+    std::string_view text;
+    bool is(std::string_view s) const {
+      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text == s;
+    }
+  };
+  Ahead raw_ahead();
   void unget(const Token& t) { pushed_back_.push_back(t); }
   Token pop_pushed_back() {
     Token t = std::move(pushed_back_.back());

@@ -232,10 +232,20 @@ const Token& Interpreter::peek_raw() {
   }
 }
 
-Token Interpreter::peek() {
-  Token t = next();
-  unget(t);
-  return t;
+const Token& Interpreter::peek() {
+  pushed_back_.push_back(next());
+  return pushed_back_.back();
+}
+
+Interpreter::Ahead Interpreter::raw_ahead() {
+  if (pushed_back_.empty()) {
+    const Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    const std::string_view text(f.file->text.data() + k.offset, k.length());
+    if (k.kind() != TokenKind::end_of_input && text != "#") return {k.kind(), text};
+  }
+  const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
+  return {t.kind, t.text};
 }
 
 Token Interpreter::expect(std::string_view symbol, std::string_view context) {
