@@ -128,8 +128,7 @@ std::optional<Interpreter::ElementRef> Interpreter::parse_element_reference(cons
       shown = std::string(name.text.data(), last.end.offset - name.begin.offset);
     // An element that is itself an array takes further subscripts.
     const auto& e = ref.array->elements[ref.index];
-    const bool more = !pushed_back_.empty() ? pushed_back_.back().is("[")
-                                            : lex_token(*frames_.back().file, frames_.back().pos).is("[");
+    const bool more = ahead_is("[");
     if (!more || !e || !std::holds_alternative<std::shared_ptr<ArrayValue>>(*e)) return ref;
     ref.array = std::get<std::shared_ptr<ArrayValue>>(*e);
   }
@@ -164,8 +163,7 @@ bool Interpreter::parse_defined_identifier() {
   if (!is_reserved_word(name.text)) {
     const Value* v = symbols_.find(std::string(name.text));
     defined = v != nullptr;
-    const bool subscripted = !pushed_back_.empty() ? pushed_back_.back().is("[")
-                                                   : lex_token(*frames_.back().file, frames_.back().pos).is("[");
+    const bool subscripted = ahead_is("[");
     if (v && subscripted) {
       auto ref = parse_element_reference(name);
       if (ref) defined = ref->array->elements[ref->index].has_value();

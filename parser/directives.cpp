@@ -102,9 +102,9 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   if (deprecation && deprecation->message.empty())
     deprecation->message = "Identifier '" + name + "' was declared deprecated.";
   warn_if_deprecated(symbols_, name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
-  if (!pushed_back_.empty() ? pushed_back_.back().is("[")
-                            : lex_token(*frames_.back().file, frames_.back().pos).is("[")) {
-    const Value* v = symbols_.find(name);
+  const SymbolTable::NameId id = name_token.name ? name_token.name : symbols_.intern(name);
+  if (ahead_is("[")) {
+    const Value* v = symbols_.find(id);
     if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v))
       return directive_declare_element(name_token, local);
   }
@@ -119,11 +119,10 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   check_function_redeclaration(name_token, local, *value);
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
-  if (local) symbols_.local(name, std::move(*value)); else symbols_.declare(name, std::move(*value));
+  if (local) symbols_.local(id, std::move(*value)); else symbols_.declare(id, std::move(*value));
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
-  Token semi = peek_raw();
-  if (semi.is(";")) next();
-  else if (needs_semicolon) fail_expected(semi, "';' after the value of " + name);
+  if (raw_ahead().is(";")) next();
+  else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
   (void)at;
 }
 
@@ -132,7 +131,7 @@ void Interpreter::directive_undef() {
   if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier after #undef");
   warn_if_deprecated(symbols_, name, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
   // #undef A[i] makes the element unassigned again.
-  if (lex_token(*frames_.back().file, frames_.back().pos).is("["))
+  if (frame_ahead_is("["))
     if (auto ref = parse_element_reference(name)) {
       ref->array->elements[ref->index].reset();
       return;
@@ -381,7 +380,7 @@ void Interpreter::directive_while(const Token& at) {
   Control c;
   c.kind = Control::Kind::while_loop;
   c.frame = frames_.size() - 1;
-  c.resume = frames_.back().pos;   // the condition is re-parsed at every #end
+  c.resume = frames_.back().index;   // the condition is re-parsed at every #end
   c.loc = at.loc;
   if (!pushed_back_.empty()) fail_at(at, "internal: #while after a look-ahead");
   if (!condition_in_parens()) { skip_branch(at, false); return; }
@@ -405,7 +404,7 @@ void Interpreter::directive_for(const Token& at) {
   Control c;
   c.kind = Control::Kind::for_loop;
   c.frame = frames_.size() - 1;
-  c.resume = frames_.back().pos;
+  c.resume = frames_.back().index;
   c.for_variable = var;
   c.for_end = end;
   c.for_step = step;
@@ -427,7 +426,8 @@ void Interpreter::directive_macro(const Token& at) {
     if (t.is(",")) t = raw();
   }
   m.file = frames_.back().file;
-  m.body = frames_.back().pos;
+  m.tokens = frames_.back().tokens;
+  m.body = frames_.back().index;
   m.loc = at.loc;
   Token opener = at;
   skip_branch(opener, false);

@@ -17,6 +17,34 @@ namespace povtrace::sdl {
 namespace {
 constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| ≤ 1e-10 (§5)
 
+enum class Comparison { none, less, greater, less_equal, greater_equal, equal, not_equal };
+
+Comparison comparison_of(TokenKind kind, std::string_view s) {
+  if (kind != TokenKind::symbol) return Comparison::none;
+  if (s == "<") return Comparison::less;
+  if (s == ">") return Comparison::greater;
+  if (s == "<=") return Comparison::less_equal;
+  if (s == ">=") return Comparison::greater_equal;
+  if (s == "=") return Comparison::equal;
+  if (s == "!=") return Comparison::not_equal;
+  return Comparison::none;
+}
+
+// '=' and its kin compare with a tolerance (§5).
+bool compare(Comparison c, double a, double b) {
+  const bool near = std::fabs(a - b) <= kEqualEpsilon;
+  switch (c) {
+    case Comparison::less: return a < b;
+    case Comparison::greater: return a > b;
+    case Comparison::less_equal: return a < b || near;
+    case Comparison::greater_equal: return a > b || near;
+    case Comparison::equal: return near;
+    case Comparison::not_equal: return !near;
+    case Comparison::none: break;
+  }
+  return false;
+}
+
 // Promotes the shorter operand: a float broadcasts, a shorter vector is zero-padded (§5).
 void promote(Numeric& a, Numeric& b) {
   const int terms = std::max(a.terms, b.terms);
@@ -119,33 +147,24 @@ Numeric Interpreter::parse_expression() {
     if (starts_string(peek())) return compare_strings();
     Numeric left = parse_additive();
     while (true) {
-      Token op = peek_raw();
-      static const std::map<std::string_view, std::function<bool(double, double)>> ops = {
-          {"<", [](double a, double b) { return a < b; }},
-          {">", [](double a, double b) { return a > b; }},
-          {"<=", [](double a, double b) { return a < b || std::fabs(a - b) <= kEqualEpsilon; }},
-          {">=", [](double a, double b) { return a > b || std::fabs(a - b) <= kEqualEpsilon; }},
-          {"=", [](double a, double b) { return std::fabs(a - b) <= kEqualEpsilon; }},
-          {"!=", [](double a, double b) { return std::fabs(a - b) > kEqualEpsilon; }}};
-      auto it = op.kind == TokenKind::symbol ? ops.find(op.text) : ops.end();
-      if (it == ops.end()) return left;
-      next();
+      const Ahead ahead = raw_ahead();
+      const Comparison c = comparison_of(ahead.kind, ahead.text);
+      if (c == Comparison::none) return left;
+      const Token op = next();
       Numeric right = parse_additive();
-      left = Numeric::scalar(it->second(to_float(left, op), to_float(right, op)) ? 1.0 : 0.0);
+      left = Numeric::scalar(compare(c, to_float(left, op), to_float(right, op)) ? 1.0 : 0.0);
     }
   };
   Numeric value = comparison();
   while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
-    Token op = peek_raw();
-    if (!op.is("&") && !op.is("|")) break;
-    next();
+    if (const Ahead look = raw_ahead(); !look.is("&") && !look.is("|")) break;
+    const Token op = next();
     const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
     const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
     value = Numeric::scalar((op.is("&") ? (a && b) : (a || b)) ? 1.0 : 0.0);
   }
-  Token q = peek_raw();
-  if (!q.is("?")) return value;
-  next();
+  if (!raw_ahead().is("?")) return value;
+  const Token q = next();
   // `c ? a : c ? a : …` recurses here without passing parse_unary's guard at each level.
   const NestingGuard guard(*this, q);
   const bool c = std::fabs(to_float(value, q)) > kEqualEpsilon;
@@ -161,10 +180,11 @@ Numeric Interpreter::parse_expression() {
 Numeric Interpreter::parse_additive() {
   Numeric value = parse_multiplicative();
   while (true) {
-    Token op = peek_raw();
-    if (!op.is("+") && !op.is("-")) return value;
+    const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
+    const bool plus = op.is("+");
+    if (!plus && !op.is("-")) return value;
     next();
-    if (op.is("+")) value = componentwise(value, parse_multiplicative(), std::plus<>());
+    if (plus) value = componentwise(value, parse_multiplicative(), std::plus<>());
     else value = componentwise(value, parse_multiplicative(), std::minus<>());
   }
 }
@@ -172,26 +192,27 @@ Numeric Interpreter::parse_additive() {
 Numeric Interpreter::parse_multiplicative() {
   Numeric value = parse_unary();
   while (true) {
-    Token op = peek_raw();
-    if (op.is("*") || op.is("/")) next();
-    if (op.is("*")) {
+    const Ahead look = raw_ahead();
+    const bool times = look.is("*");
+    if (!times && !look.is("/")) return value;
+    const Token op = next();
+    if (times) {
       value = componentwise(value, parse_unary(), std::multiplies<>());
-    } else if (op.is("/")) {
+    } else {
       Numeric divisor = parse_unary();
       promote(value, divisor);
       for (int i = 0; i < value.terms; ++i) {
         if (divisor.v[i] == 0.0) warn(op.loc, "division by zero");
         value.v[i] /= divisor.v[i];
       }
-    } else {
-      return value;
     }
   }
 }
 
 Numeric Interpreter::parse_unary() {
-  Token t = next();
+  const Token t = next();
   const NestingGuard guard(*this, t);   // every nested operand passes through here
+  if (t.kind != TokenKind::symbol) return parse_postfix(parse_primary(t), t);
   if (t.is("-")) {
     Numeric n = parse_unary();
     for (int i = 0; i < n.terms; ++i) n.v[i] = -n.v[i];
@@ -203,15 +224,13 @@ Numeric Interpreter::parse_unary() {
     for (int i = 0; i < n.terms; ++i) n.v[i] = std::fabs(n.v[i]) <= kEqualEpsilon ? 1.0 : 0.0;
     return n;
   }
-  unget(t);
-  return parse_postfix(parse_primary(), t);
+  return parse_postfix(parse_primary(t), t);
 }
 
 // .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
 Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
   while (true) {
-    Token dot = peek_raw();
-    if (!dot.is(".")) return value;
+    if (!raw_ahead().is(".")) return value;
     next();
     Token member = next();
     static const std::map<std::string_view, int> components = {
@@ -287,7 +306,7 @@ bool Interpreter::starts_colour(const Token& t) const {
                                            "blue", "filter", "transmit", "srgb", "srgbf", "srgbt", "srgbft"};
   for (auto w : words)
     if (t.text == w) return true;
-  if (is_reserved_word(t.text)) return false;
+  if (reserved(t)) return false;
   const Value* v = lookup(t);
   return v && std::holds_alternative<Numeric>(*v) && std::get<Numeric>(*v).colour;
 }
@@ -340,7 +359,7 @@ bool Interpreter::starts_string(const Token& t) const {
                                          "datetime"};
   for (auto f : fns)
     if (t.text == f) return true;
-  if (is_reserved_word(t.text)) return false;
+  if (reserved(t)) return false;
   const Value* v = lookup(t);
   return v && std::holds_alternative<std::string>(*v);
 }

@@ -199,8 +199,7 @@ void Interpreter::directive_read(const Token& at) {
     if (t.kind != TokenKind::identifier || is_reserved_word(t.text))
       fail_expected(t, "an identifier to read into, or ')'");
     const std::string name(t.text);
-    const bool subscripted = !pushed_back_.empty() ? pushed_back_.back().is("[")
-                                                   : lex_token(*frames_.back().file, frames_.back().pos).is("[");
+    const bool subscripted = ahead_is("[");
     std::optional<ElementRef> element;
     if (subscripted) element = parse_element_reference(t);
     if (!at_end) {

@@ -206,8 +206,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   fail_expected(name, "a number, vector or expression");
 }
 
-Numeric Interpreter::parse_primary() {
-  Token t = next();
+Numeric Interpreter::parse_primary(const Token& t) {
   switch (t.kind) {
     case TokenKind::number: return Numeric::scalar(t.number);
     case TokenKind::symbol:
@@ -222,7 +221,7 @@ Numeric Interpreter::parse_primary() {
     default: fail_expected(t, "a number, vector or expression");
   }
   const std::string_view w = t.text;
-  if (!is_reserved_word(w)) {
+  if (!reserved(t)) {
     const Value* v = lookup(t);
     if (!v) fail_at(t, "undeclared identifier '" + std::string(w) + "'");
     // An identifier holding a value povtrace parses but cannot use yet (a function, an array, …) is refused by

@@ -22,6 +22,7 @@
 
 #include "parser/lexer.hpp"
 #include "parser/parse_scene.hpp"
+#include "parser/reserved_words.hpp"
 #include "parser/symbols.hpp"
 #include "parser/values.hpp"
 
@@ -36,7 +37,8 @@ class Interpreter {
   // ---- token stream (token_stream.cpp) ----
   struct Frame {
     const SourceFile* file = nullptr;
-    LexPosition pos;
+    FileTokens* tokens = nullptr;    // the file's tokens; the frame reads tokens[index] next
+    std::size_t index = 0;
     enum class Kind { main, include, macro } kind = Kind::main;
     SourceLoc origin;                // the #include or the macro call that opened this frame (error chains)
     std::string_view macro_name;     // points into the calling file's text, which lives as long as the parse
@@ -44,20 +46,45 @@ class Interpreter {
   struct Control {
     enum class Kind { if_branch, while_loop, for_loop, macro_call, switch_block } kind = Kind::if_branch;
     std::size_t frame = 0;       // frame the construct started in (loops must end there)
-    LexPosition resume;          // while: start of the condition; for: first byte of the body
+    std::size_t resume = 0;      // token index: while: start of the condition; for: first token of the body
     std::string for_variable;
     double for_end = 0, for_step = 1;
     double switch_value = 0;     // #switch: the value #case/#range compare with
     SourceLoc loc;
   };
   Token raw();                   // next token of the frame stack, no directive processing
-  // lex_token through a small cache: loops and macro bodies replay the same bytes, which are lexed once.
-  Token lex_at(const SourceFile& file, const LexPosition& at);
+  // Token `index` of a file, lexed on first use (a lexical error is raised when the stream reaches it, as if the
+  // file were lexed on the fly). Loops and macro bodies replay kept tokens: no lexing, no lookup per token.
+  const LexedToken& lexed(FileTokens& tokens, std::size_t index) {
+    return index < tokens.size() ? tokens[index] : lex_more(tokens, index);
+  }
+  const LexedToken& lex_more(FileTokens& tokens, std::size_t index);
+  Token make_token(const FileTokens& tokens, const LexedToken& t) const;
+  FileTokens& tokens_of(const SourceFile& file);
+  Frame frame_for(const SourceFile& file, std::size_t index, Frame::Kind kind, const SourceLoc& origin,
+                  std::string_view macro_name);
+  // Whether the next raw token (the one pushed back, else the frame's next) is `symbol`, without reading it:
+  // a look that runs no directive and lexes at most that one token.
+  bool ahead_is(std::string_view symbol);
+  bool frame_ahead_is(std::string_view symbol);   // the frame's next token, whatever was pushed back
+  bool reserved(const Token& t) const {
+    return t.name ? symbols_.is_reserved(t.name) : is_reserved_word(t.text);
+  }
   Token next();                  // next token after directives and macro calls
-  Token peek();
+  const Token& peek();   // valid until the next token is read
   // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
   // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
-  Token peek_raw();
+  const Token& peek_raw();   // valid until the next token is read
+  // Kind and text of what peek_raw() would return, without making a Token of it when the frame's next token is
+  // plain (not '#', not the end of a file): the look for an operator after every operand.
+  struct Ahead {
+    TokenKind kind;
+    std::string_view text;
+    bool is(std::string_view s) const {
+      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text == s;
+    }
+  };
+  Ahead raw_ahead();
   void unget(const Token& t) { pushed_back_.push_back(t); }
   Token pop_pushed_back() {
     Token t = std::move(pushed_back_.back());
@@ -110,7 +137,7 @@ class Interpreter {
   // Skips raw tokens to the #else/#elseif/#end closing the current level; returns the directive name found
   // ("else", "elseif", "end"), leaving the stream just after that word.
   std::string skip_branch(const Token& opener, bool stop_at_else);
-  void seek(std::size_t frame, LexPosition pos);
+  void seek(std::size_t frame, std::size_t index);
   void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind);
   void return_from_macro();
   std::optional<std::filesystem::path> find_include(const std::string& name) const;
@@ -121,7 +148,7 @@ class Interpreter {
   Numeric parse_multiplicative();
   Numeric parse_unary();
   Numeric parse_postfix(Numeric value, const Token& start);
-  Numeric parse_primary();
+  Numeric parse_primary(const Token& t);   // t: the operand's first token, already read
   Numeric parse_vector_literal(const Token& open);
   Numeric parse_colour_keyword_form(const Token& keyword);
   Numeric parse_function_call(const Token& name);
@@ -260,13 +287,7 @@ class Interpreter {
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
-  struct LexCacheEntry {
-    const SourceFile* file = nullptr;   // files live as long as the parse and never change
-    std::size_t offset = 0;
-    Token token;
-  };
-  std::vector<LexCacheEntry> lex_cache_;   // direct-mapped on (file, offset)
-  bool replayed_ = false;                  // a loop or macro body has been entered: lex_at starts caching
+  std::vector<std::unique_ptr<FileTokens>> token_stores_;   // one per file read (files_ holds the texts)
   SymbolTable symbols_;
   SceneDescription scene_;
   Texture default_texture_;

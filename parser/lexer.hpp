@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string_view>
+#include <vector>
 
 #include "parser/source.hpp"
 
@@ -34,6 +37,9 @@ struct Token {
   // `element` when the token is an array element `A[i]…` (text then spans the whole reference if it lies in one
   // file), holding the element's value.
   bool processed = false;
+  // The identifier's interned name (SymbolTable::NameId), set by the interpreter's token stream so that a lookup
+  // indexes instead of hashing the text; 0 for tokens made elsewhere (the text is looked up then).
+  std::uint32_t name = 0;
   std::shared_ptr<const TokenValue> element;
 
   bool is(std::string_view symbol_or_word) const {
@@ -42,6 +48,62 @@ struct Token {
     return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text.size() == symbol_or_word.size() &&
            (text.empty() || text[0] == symbol_or_word[0]) && text == symbol_or_word;
   }
+};
+
+// A token as the interpreter keeps it for replay (Token is built from it when read): 16 bytes, because every
+// token of every file read is kept (a 7 MB scene is two million tokens). The column comes from the start of its
+// line (FileTokens), a number's value from a side table.
+struct LexedToken {
+  std::uint32_t offset = 0;        // of the first byte
+  std::int32_t line = 1;
+  std::uint32_t kind_length = 0;   // TokenKind in the low 3 bits, the length in bytes above
+  std::uint32_t payload = 0;       // an identifier's NameId, a number's index in FileTokens' numbers
+
+  TokenKind kind() const { return static_cast<TokenKind>(kind_length & 7u); }
+  std::uint32_t length() const { return kind_length >> 3; }
+  static constexpr std::uint32_t kMaxLength = UINT32_MAX >> 3;
+};
+
+// The tokens of one file in the order they come, lexed when the stream first reaches them and then kept, so that
+// loops and macro bodies replay them by index. Stored in fixed chunks: growing never copies (or doubles) them.
+class FileTokens {
+ public:
+  explicit FileTokens(const SourceFile& file) : file_(&file) {}
+  const SourceFile& file() const { return *file_; }
+  std::size_t size() const { return size_; }
+  const LexedToken& operator[](std::size_t i) const { return chunks_[i >> kChunkBits][i & kChunkMask]; }
+  // Keeps a lexed token (its length at most LexedToken::kMaxLength, its offset below 4 GB).
+  void push_back(const Token& t, std::uint32_t name) {
+    if ((size_ >> kChunkBits) == chunks_.size()) chunks_.push_back(std::make_unique<LexedToken[]>(kChunkSize));
+    LexedToken& k = chunks_[size_ >> kChunkBits][size_ & kChunkMask];
+    k.offset = static_cast<std::uint32_t>(t.begin.offset);
+    k.line = t.begin.line;
+    k.kind_length = static_cast<std::uint32_t>(t.text.size()) << 3 | static_cast<std::uint32_t>(t.kind);
+    k.payload = name;
+    if (t.kind == TokenKind::number) {
+      k.payload = static_cast<std::uint32_t>(numbers_.size());
+      numbers_.push_back(t.number);
+    }
+    const auto line = static_cast<std::size_t>(t.begin.line);
+    if (line_starts_.size() <= line) line_starts_.resize(line + 1, 0);
+    line_starts_[line] = static_cast<std::uint32_t>(t.begin.offset) - static_cast<std::uint32_t>(t.begin.column - 1);
+    ++size_;
+  }
+  double number(const LexedToken& k) const { return numbers_[k.payload]; }
+  int column(const LexedToken& k) const {
+    return static_cast<int>(k.offset - line_starts_[static_cast<std::size_t>(k.line)]) + 1;
+  }
+  LexPosition lexed_to;   // where lexing goes on (just after the last token kept)
+
+ private:
+  static constexpr unsigned kChunkBits = 12;
+  static constexpr std::size_t kChunkSize = std::size_t{1} << kChunkBits;
+  static constexpr std::size_t kChunkMask = kChunkSize - 1;
+  const SourceFile* file_;
+  std::vector<std::unique_ptr<LexedToken[]>> chunks_;
+  std::size_t size_ = 0;
+  std::vector<double> numbers_;
+  std::vector<std::uint32_t> line_starts_;   // by line: offset of its first byte (lines with tokens only)
 };
 
 // Skips white space and comments from `at`, then reads one token. Throws ParseError for an unterminated

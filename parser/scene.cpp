@@ -12,7 +12,7 @@ Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
 }
 
 SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
-  frames_.push_back(Frame{main_file.get(), LexPosition{}, Frame::Kind::main, {}, {}});
+  frames_.push_back(frame_for(*main_file, 0, Frame::Kind::main, {}, {}));
   files_.push_back(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
@@ -135,6 +135,18 @@ void Interpreter::parse_default(const Token& keyword) {
 }
 
 std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
+  // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
+  // and none of the forms below would take them.
+  if (first.kind == TokenKind::number || first.kind == TokenKind::symbol) {
+    unget(first);
+    return Value(parse_additive().stored());
+  }
+  // ('lemon' is no reserved word in 3.7, yet try_parse_item takes it as a shape.)
+  if (first.kind == TokenKind::identifier && (first.element || !reserved(first)) && first.text != "lemon")
+    if (const Value* v = lookup(first); v && std::holds_alternative<Numeric>(*v)) {
+      unget(first);
+      return Value(parse_additive().stored());
+    }
   if (starts_string(first)) {
     unget(first);
     return parse_string();

@@ -1,9 +1,21 @@
 #include "parser/source.hpp"
 
 #include <fstream>
+#include <mutex>
 #include <sstream>
+#include <unordered_set>
 
 namespace povtrace {
+
+FileName::FileName(const std::shared_ptr<const std::string>& name) : name_(name ? intern(*name) : nullptr) {}
+
+const std::string* FileName::intern(std::string_view name) {
+  // Parses may run on several threads (tests do); interning happens once per file, so a lock costs nothing.
+  static std::mutex mutex;
+  static auto* pool = new std::unordered_set<std::string>();   // never freed: locations may outlive main()
+  const std::lock_guard<std::mutex> lock(mutex);
+  return &*pool->emplace(name).first;
+}
 
 std::string_view SourceFile::line_text(int line) const {
   std::size_t begin = 0;

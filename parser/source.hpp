@@ -15,7 +15,7 @@ namespace povtrace {
 
 // One file's text, kept in memory for the whole parse (macros and loops replay it, errors quote it).
 struct SourceFile {
-  std::shared_ptr<const std::string> name;  // as shown in messages
+  FileName name;  // as shown in messages
   std::filesystem::path path;
   std::string text;
 

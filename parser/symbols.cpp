@@ -1,5 +1,7 @@
 #include "parser/symbols.hpp"
 
+#include "parser/reserved_words.hpp"
+
 namespace povtrace::sdl {
 
 std::string value_type_name(const Value& v) {
@@ -49,56 +51,125 @@ std::shared_ptr<ArrayValue> ArrayValue::deep_copy() const {
   return copy;
 }
 
-std::optional<std::size_t> SymbolTable::level_of(std::string_view name) const {
-  for (std::size_t i = tables_.size(); i-- > 0;)
-    if (tables_[i].find(name) != tables_[i].end()) return i;
+SymbolTable::SymbolTable()
+    : names_(1), hashes_(1, 0), ids_(1024, 0), reserved_(1, 0), bindings_(1), scopes_(1), deprecations_(1) {}
+
+std::size_t SymbolTable::slot_of(std::string_view name, std::uint64_t h) const {
+  const std::size_t mask = ids_.size() - 1;
+  for (std::size_t i = static_cast<std::size_t>(h ^ (h >> 29)) & mask;; i = (i + 1) & mask) {
+    const NameId id = ids_[i];
+    if (id == 0 || (hashes_[id] == h && names_[id] == name)) return i;
+  }
+}
+
+SymbolTable::NameId SymbolTable::intern(std::string_view name) {
+  const std::uint64_t h = hash(name);
+  std::size_t slot = slot_of(name, h);
+  if (ids_[slot] != 0) return ids_[slot];
+  const auto id = static_cast<NameId>(names_.size());
+  names_.emplace_back(name);
+  hashes_.push_back(h);
+  reserved_.push_back(is_reserved_word(name) ? 1 : 0);
+  bindings_.emplace_back();
+  if (2 * names_.size() > ids_.size()) {   // at most half full: probes stay short
+    ids_.assign(ids_.size() * 2, 0);
+    for (NameId k = 1; k < id; ++k) ids_[slot_of(names_[k], hashes_[k])] = k;
+    slot = slot_of(name, h);
+  }
+  ids_[slot] = id;
+  return id;
+}
+
+SymbolTable::NameId SymbolTable::id_of(std::string_view name) const { return ids_[slot_of(name, hash(name))]; }
+
+void SymbolTable::pop_scope() {
+  const std::size_t level = scopes_.size() - 1;
+  for (const NameId id : scopes_.back()) {
+    auto& stack = bindings_[id];
+    // #undef may have removed the entry already (a name is listed again when it is bound again).
+    if (stack.empty() || stack.back()->level != level) continue;
+    Entry* e = stack.back();
+    stack.pop_back();
+    e->value = Numeric{};   // release what it held now, not when the entry is reused
+    free_.push_back(e);
+  }
+  scopes_.pop_back();
+  deprecations_.pop_back();
+}
+
+void SymbolTable::add_entry(NameId id, std::size_t level, Value value) {
+  Entry* e = nullptr;
+  if (free_.empty()) {
+    e = &entries_.emplace_back();
+  } else {
+    e = free_.back();
+    free_.pop_back();
+  }
+  e->level = level;
+  e->value = std::move(value);
+  auto& stack = bindings_[id];
+  // Levels increase along a name's entries: a new entry is global only when the name is bound nowhere, and is
+  // otherwise made in the innermost level.
+  stack.insert(level == 0 ? stack.begin() : stack.end(), e);
+  scopes_[level].push_back(id);
+}
+
+std::optional<std::size_t> SymbolTable::level_of(NameId id) const {
+  if (const Entry* e = top(id)) return e->level;
   return std::nullopt;
 }
 
-Value* SymbolTable::resolve_alias(Value* v) {
+Value* SymbolTable::resolve_alias(Value* v) const {
   // Alias chains are finite: an alias always points to an outer (older) table.
   while (v && std::holds_alternative<Alias>(*v)) {
     const Alias& a = std::get<Alias>(*v);
-    auto it = tables_[a.table].find(a.name);
-    v = it == tables_[a.table].end() ? nullptr : &it->second;
+    const NameId id = a.id ? a.id : id_of(a.name);
+    v = nullptr;
+    if (id < bindings_.size())
+      for (Entry* e : bindings_[id])
+        if (e->level == a.table) v = &e->value;
   }
   return v;
 }
 
-const Value* SymbolTable::find(std::string_view name) const {
-  // One hash lookup per level, innermost first (not a search for the level and then another for the entry).
-  auto* self = const_cast<SymbolTable*>(this);
-  for (std::size_t i = tables_.size(); i-- > 0;) {
-    auto& table = self->tables_[i];
-    if (auto it = table.find(name); it != table.end()) return self->resolve_alias(&it->second);
-  }
-  return nullptr;
+const Value* SymbolTable::find(NameId id) const {
+  const Entry* e = top(id);
+  return e ? resolve_alias(const_cast<Value*>(&e->value)) : nullptr;
 }
 
-void SymbolTable::declare(const std::string& name, Value value) {
-  if (auto level = level_of(name)) {
-    Value& slot = tables_[*level][name];
-    if (Value* target = resolve_alias(&slot)) { *target = std::move(value); return; }
-    slot = std::move(value);
+void SymbolTable::declare(NameId id, Value value) {
+  if (Entry* e = top(id)) {
+    if (Value* target = resolve_alias(&e->value)) *target = std::move(value);
+    else e->value = std::move(value);
     return;
   }
-  tables_.front()[name] = std::move(value);
+  add_entry(id, 0, std::move(value));
 }
 
-void SymbolTable::local(const std::string& name, Value value) {
-  auto& table = tables_.back();
-  auto it = table.find(name);
-  if (it != table.end()) {
-    if (Value* target = resolve_alias(&it->second)) { *target = std::move(value); return; }
+void SymbolTable::local(NameId id, Value value) {
+  Entry* e = top(id);
+  if (e && e->level == depth() - 1) {
+    if (Value* target = resolve_alias(&e->value)) *target = std::move(value);
+    else e->value = std::move(value);
+    return;
   }
-  table[name] = std::move(value);
+  add_entry(id, depth() - 1, std::move(value));
+}
+
+void SymbolTable::bind(NameId id, Value value) {
+  Entry* e = top(id);
+  if (e && e->level == depth() - 1) e->value = std::move(value);
+  else add_entry(id, depth() - 1, std::move(value));
 }
 
 bool SymbolTable::undefine(const std::string& name) {
-  auto level = level_of(name);
-  if (!level) return false;
-  tables_[*level].erase(name);
-  deprecations_[*level].erase(name);
+  const NameId id = id_of(name);
+  Entry* e = top(id);
+  if (!e) return false;
+  deprecations_[e->level].erase(name);
+  bindings_[id].pop_back();
+  e->value = Numeric{};
+  free_.push_back(e);
   return true;
 }
 

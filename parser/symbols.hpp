@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,24 +16,36 @@ namespace povtrace::sdl {
 
 class SymbolTable {
  public:
-  SymbolTable() : tables_(1), deprecations_(1) {}
+  // Every identifier gets a small number when its token is first lexed (NameId, 0 = none), so that a lookup
+  // indexes an array instead of hashing and comparing text: loops and macros read the same names millions of
+  // times. Whether the name is a reserved word is decided once, at interning.
+  using NameId = std::uint32_t;
+  NameId intern(std::string_view name);
+  NameId id_of(std::string_view name) const;   // 0 if never interned (then nothing is bound to it)
+  bool is_reserved(NameId id) const { return reserved_[id] != 0; }
 
-  void push_scope() { tables_.emplace_back(); deprecations_.emplace_back(); }
-  void pop_scope() { tables_.pop_back(); deprecations_.pop_back(); }
-  std::size_t depth() const { return tables_.size(); }
+  SymbolTable();
+  void push_scope() { scopes_.emplace_back(); deprecations_.emplace_back(); }
+  void pop_scope();
+  std::size_t depth() const { return scopes_.size(); }
 
   // The value visible under `name`, following macro aliases; nullptr if undeclared. Takes the token's text as it
   // is: no string is made for a lookup.
-  const Value* find(std::string_view name) const;
+  const Value* find(NameId id) const;
+  const Value* find(std::string_view name) const { return find(id_of(name)); }
   // Level of the innermost table that holds `name` (aliases not followed).
-  std::optional<std::size_t> level_of(std::string_view name) const;
+  std::optional<std::size_t> level_of(NameId id) const;
+  std::optional<std::size_t> level_of(std::string_view name) const { return level_of(id_of(name)); }
 
   // #declare: overwrite the visible entry wherever it is (through aliases), else create a global.
-  void declare(const std::string& name, Value value);
+  void declare(NameId id, Value value);
+  void declare(const std::string& name, Value value) { declare(intern(name), std::move(value)); }
   // #local: overwrite in the innermost table (through an alias there), else create there.
-  void local(const std::string& name, Value value);
+  void local(NameId id, Value value);
+  void local(const std::string& name, Value value) { local(intern(name), std::move(value)); }
   // Binds a name in the innermost table without following aliases (macro parameters, #for variables).
-  void bind(const std::string& name, Value value) { tables_.back()[name] = std::move(value); }
+  void bind(NameId id, Value value);
+  void bind(const std::string& name, Value value) { bind(intern(name), std::move(value)); }
   // #undef: removes the innermost visible entry; false if there was none.
   bool undefine(const std::string& name);
 
@@ -50,18 +63,34 @@ class SymbolTable {
   bool any_deprecated() const { return any_deprecated_; }
 
  private:
-  Value* resolve_alias(Value* v);
-  // Hashes a std::string and a std::string_view alike, so that lookups by string_view need no std::string.
-  struct NameHash {
-    using is_transparent = void;
-    std::size_t operator()(std::string_view s) const noexcept {   // FNV-1a, inline: names are short
-      std::uint64_t h = 14695981039346656037ull;
-      for (const char c : s) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
-      return static_cast<std::size_t>(h ^ (h >> 32));
-    }
+  struct Entry {
+    std::size_t level = 0;
+    Value value;
   };
-  std::vector<std::unordered_map<std::string, Value, NameHash, std::equal_to<>>> tables_;
-  std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // parallel to tables_
+  Entry* top(NameId id) const {
+    return id < bindings_.size() && !bindings_[id].empty() ? bindings_[id].back() : nullptr;
+  }
+  Value* resolve_alias(Value* v) const;
+  void add_entry(NameId id, std::size_t level, Value value);
+  static std::uint64_t hash(std::string_view s) {   // FNV-1a: names are short
+    std::uint64_t h = 14695981039346656037ull;
+    for (const char c : s) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    return h;
+  }
+  // The slot of `name` in ids_: the one holding its id, or the empty one where it would go.
+  std::size_t slot_of(std::string_view name, std::uint64_t h) const;
+  std::vector<std::string> names_;       // by id
+  std::vector<std::uint64_t> hashes_;    // by id
+  std::vector<NameId> ids_;              // open addressing on the hash, linear probing; 0 = empty; a power of 2
+  std::vector<std::uint8_t> reserved_;   // by id
+  // Shallow binding: for each name, the entries of the levels that hold it, innermost last (levels increase), so
+  // the visible one is the last. Entries live in a deque (stable addresses: callers keep `const Value*` while
+  // other names are bound) and are recycled through free_.
+  std::vector<std::vector<Entry*>> bindings_;   // by id
+  std::vector<std::vector<NameId>> scopes_;     // by level: the names bound there, to unbind at pop_scope
+  std::deque<Entry> entries_;
+  std::vector<Entry*> free_;
+  std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // by level
   bool any_deprecated_ = false;
 };
 

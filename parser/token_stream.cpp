@@ -16,35 +16,80 @@ constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested fil
 constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
 }  // namespace
 
-Token Interpreter::lex_at(const SourceFile& file, const LexPosition& at) {
-  // 4096 entries (about 500 KB) hold the body of any ordinary loop or macro; a large file just streams through.
-  // They are allocated at the first replay (a loop's #end, a macro call): a scene read once has no use for them.
-  constexpr unsigned kBits = 12;
-  if (lex_cache_.empty()) {
-    if (!replayed_) return lex_token(file, at);
-    lex_cache_.resize(std::size_t{1} << kBits);
+const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
+  const SourceFile& file = tokens.file();
+  while (tokens.size() <= index) {
+    if (tokens.size() > 0 && tokens[tokens.size() - 1].kind() == TokenKind::end_of_input)
+      return tokens[tokens.size() - 1];   // the end of a file reads as the end however often it is asked for
+    const Token t = lex_token(file, tokens.lexed_to);   // a lexical error throws before anything is kept
+    if (t.end.offset > UINT32_MAX || t.text.size() > LexedToken::kMaxLength)
+      fail(t.loc, "the file is larger than 4 GB or has a token longer than 512 MB (the most povtrace reads)");
+    tokens.push_back(t, t.kind == TokenKind::identifier ? symbols_.intern(t.text) : 0);
+    tokens.lexed_to = t.end;
   }
-  const std::uint64_t key = (reinterpret_cast<std::uintptr_t>(&file) >> 4) * 0x9E3779B97F4A7C15ull ^ at.offset;
-  LexCacheEntry& e = lex_cache_[static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - kBits))];
-  if (e.file == &file && e.offset == at.offset) return e.token;
-  Token t = lex_token(file, at);   // a lexical error throws before anything is cached
-  e.file = &file;
-  e.offset = at.offset;
-  e.token = t;
-  return t;
+  return tokens[index];
+}
+
+Token Interpreter::make_token(const FileTokens& tokens, const LexedToken& k) const {
+  const SourceFile& file = tokens.file();
+  const TokenKind kind = k.kind();
+  const std::uint32_t length = k.length();
+  const int column = tokens.column(k);
+  const std::string_view text(file.text.data() + k.offset, length);
+  const LexPosition begin{k.offset, k.line, column};
+  LexPosition end{k.offset + length, k.line, column + static_cast<int>(length)};
+  if (kind == TokenKind::string) {
+    // Only a string may span lines: the end is then counted from its last line break, as the lexer counts.
+    if (const auto last = text.rfind('\n'); last != std::string_view::npos) {
+      end.line += static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+      end.column = static_cast<int>(length - last);
+    }
+  }
+  return Token{kind,
+               text,
+               kind == TokenKind::number ? tokens.number(k) : 0.0,
+               SourceLoc{file.name, k.line, column},
+               begin,
+               end,
+               false,
+               kind == TokenKind::identifier ? k.payload : 0,
+               {}};
+}
+
+FileTokens& Interpreter::tokens_of(const SourceFile& file) {
+  for (const auto& t : token_stores_)
+    if (&t->file() == &file) return *t;
+  return *token_stores_.emplace_back(std::make_unique<FileTokens>(file));
+}
+
+Interpreter::Frame Interpreter::frame_for(const SourceFile& file, std::size_t index, Frame::Kind kind,
+                                          const SourceLoc& origin, std::string_view macro_name) {
+  return Frame{&file, &tokens_of(file), index, kind, origin, macro_name};
+}
+
+bool Interpreter::ahead_is(std::string_view symbol) {
+  return pushed_back_.empty() ? frame_ahead_is(symbol) : pushed_back_.back().is(symbol);
+}
+
+bool Interpreter::frame_ahead_is(std::string_view symbol) {
+  Frame& f = frames_.back();
+  const LexedToken& k = lexed(*f.tokens, f.index);
+  return (k.kind() == TokenKind::symbol || k.kind() == TokenKind::identifier) && k.length() == symbol.size() &&
+         std::string_view(f.file->text.data() + k.offset, symbol.size()) == symbol;
 }
 
 Token Interpreter::raw() {
   while (true) {
     Frame& f = frames_.back();
-    Token t = lex_at(*f.file, f.pos);
-    if (t.kind != TokenKind::end_of_input) {
-      f.pos = t.end;
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() != TokenKind::end_of_input) {
+      ++f.index;
       if (options_.max_tokens && ++tokens_read_ > options_.max_tokens)
-        fail(t.loc, "the parse read more than " + std::to_string(options_.max_tokens) +
-                        " tokens (the token limit of this run)");
-      return t;
+        fail(make_token(*f.tokens, k).loc, "the parse read more than " + std::to_string(options_.max_tokens) +
+                                               " tokens (the token limit of this run)");
+      return make_token(*f.tokens, k);
     }
+    const Token t = make_token(*f.tokens, k);
     if (f.kind == Frame::Kind::main) return t;
     if (f.kind == Frame::Kind::macro)
       fail(t.loc, "end of file inside a macro body: expected '#end'");
@@ -106,8 +151,8 @@ bool Interpreter::is_macro_call(const Token& t) const {
 
 const Value* Interpreter::lookup(const Token& t) const {
   if (t.element) return &t.element->value;
-  if (t.kind != TokenKind::identifier || is_reserved_word(t.text)) return nullptr;
-  return symbols_.find(t.text);
+  if (t.kind != TokenKind::identifier || reserved(t)) return nullptr;
+  return t.name ? symbols_.find(t.name) : symbols_.find(t.text);
 }
 
 Token Interpreter::next() {
@@ -126,8 +171,8 @@ Token Interpreter::next() {
       directive(t);
       continue;
     }
-    if (t.kind == TokenKind::identifier && !is_reserved_word(t.text)) {
-      const Value* v = symbols_.find(t.text);
+    if (t.kind == TokenKind::identifier && !reserved(t)) {
+      const Value* v = t.name ? symbols_.find(t.name) : symbols_.find(t.text);
       if (v && std::holds_alternative<MacroDefinition>(*v)) {
         const NestingGuard guard(*this, t);
         invoke_macro(t);
@@ -149,9 +194,7 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
   // POV-Ray resolves `A[i]…` where it reads the name (Read_Symbol): the token then stands for the element, so
   // every place that takes an identifier of some type takes an element of that type.
   while (const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
-    const Token after =
-        pushed_back_.empty() ? lex_at(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
-    if (!after.is("[")) return;
+    if (!ahead_is("[")) return;
     const std::shared_ptr<ArrayValue> keep = *array;   // the subscripts may run code that reassigns the name
     Token last = t;
     const std::size_t index = parse_subscripts(*keep, std::string(t.text), last);
@@ -165,7 +208,7 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
   }
 }
 
-Token Interpreter::peek_raw() {
+const Token& Interpreter::peek_raw() {
   while (true) {
     // The token looked at stays in pushed_back_ (it is called after every operand: no pop and push again).
     if (pushed_back_.empty()) pushed_back_.push_back(raw());
@@ -175,10 +218,12 @@ Token Interpreter::peek_raw() {
     if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
         controls_.back().frame == frames_.size() - 1) {
       Frame& f = frames_.back();
-      const Token word = lex_at(*f.file, f.pos);
-      if (word.is("end")) {
+      const LexedToken& k = lexed(*f.tokens, f.index);
+      const std::string_view text(f.file->text.data() + k.offset, k.length());
+      if (k.kind() == TokenKind::identifier && text == "end") {
+        const Token word = make_token(*f.tokens, k);
         pushed_back_.pop_back();
-        f.pos = word.end;
+        ++f.index;
         directive_end(word);
         continue;
       }
@@ -187,10 +232,20 @@ Token Interpreter::peek_raw() {
   }
 }
 
-Token Interpreter::peek() {
-  Token t = next();
-  unget(t);
-  return t;
+const Token& Interpreter::peek() {
+  pushed_back_.push_back(next());
+  return pushed_back_.back();
+}
+
+Interpreter::Ahead Interpreter::raw_ahead() {
+  if (pushed_back_.empty()) {
+    const Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    const std::string_view text(f.file->text.data() + k.offset, k.length());
+    if (k.kind() != TokenKind::end_of_input && text != "#") return {k.kind(), text};
+  }
+  const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
+  return {t.kind, t.text};
 }
 
 Token Interpreter::expect(std::string_view symbol, std::string_view context) {
@@ -209,7 +264,7 @@ bool Interpreter::accept(std::string_view symbol) {
 std::string Interpreter::expect_identifier_raw(std::string_view context) {
   Token t = raw();
   if (t.kind != TokenKind::identifier) fail_expected(t, std::string("an identifier ") + std::string(context));
-  if (is_reserved_word(t.text))
+  if (reserved(t))
     fail_at(t, "'" + std::string(t.text) + "' is a reserved word and cannot be used as an identifier " +
                    std::string(context));
   return std::string(t.text);
@@ -254,7 +309,7 @@ std::string Interpreter::describe(const Token& t) const {
     case TokenKind::number: return "the number " + std::string(t.text);
     case TokenKind::string: return "the string " + std::string(t.text);
     case TokenKind::identifier:
-      if (is_reserved_word(t.text)) return "the keyword '" + std::string(t.text) + "'";
+      if (reserved(t)) return "the keyword '" + std::string(t.text) + "'";
       if (const Value* v = lookup(t))
         return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
       return "the undeclared identifier '" + std::string(t.text) + "'";
@@ -277,10 +332,9 @@ void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
   if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
 }
 
-void Interpreter::seek(std::size_t frame, LexPosition pos) {
-  replayed_ = true;
+void Interpreter::seek(std::size_t frame, std::size_t index) {
   frames_.resize(frame + 1);
-  frames_.back().pos = pos;
+  frames_.back().index = index;
   pushed_back_.clear();
 }
 
@@ -298,7 +352,7 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
   } catch (const std::exception& e) {
     fail_at(at, e.what());
   }
-  frames_.push_back(Frame{file.get(), LexPosition{}, kind, at.loc, {}});
+  frames_.push_back(frame_for(*file, 0, kind, at.loc, {}));
   files_.push_back(std::move(file));
   symbols_.push_scope();
 }
@@ -323,12 +377,12 @@ void Interpreter::invoke_macro(const Token& name) {
     // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
     // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
     // of that macro must not run, and drop its locals, before `first` is evaluated.
-    if (first.kind == TokenKind::identifier && !first.element && !is_reserved_word(first.text)) {
-      const Token after =
-          pushed_back_.empty() ? lex_at(*frames_.back().file, frames_.back().pos) : pushed_back_.back();
-      auto level = symbols_.level_of(first.text);
-      if (level && (after.is(",") || after.is(")"))) {
-        bound.emplace_back(macro.parameters[i], Alias{*level, std::string(first.text)});
+    if (first.kind == TokenKind::identifier && !first.element && !reserved(first)) {
+      const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
+      auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
+      if (level && alone) {
+        bound.emplace_back(macro.parameters[i],
+                           Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
         continue;
       }
     }
@@ -342,8 +396,7 @@ void Interpreter::invoke_macro(const Token& name) {
                              std::to_string(macro.parameters.size()) + " parameters)");
   symbols_.push_scope();
   for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
-  frames_.push_back(Frame{macro.file, macro.body, Frame::Kind::macro, name.loc, name.text});
-  replayed_ = true;
+  frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
   Control c;
   c.kind = Control::Kind::macro_call;
   c.frame = frames_.size() - 1;

@@ -42,7 +42,8 @@ using SceneItem = std::variant<Object, Light>;
 
 struct MacroDefinition {
   const SourceFile* file = nullptr;
-  LexPosition body;                 // first byte after the parameter list's ')'
+  FileTokens* tokens = nullptr;     // file's tokens
+  std::size_t body = 0;             // index of the first token after the parameter list's ')'
   std::vector<std::string> parameters;
   SourceLoc loc;
 };
@@ -51,6 +52,7 @@ struct MacroDefinition {
 struct Alias {
   std::size_t table = 0;            // symbol table level holding the variable
   std::string name;
+  std::uint32_t id = 0;             // the name's SymbolTable::NameId (0: look it up by name)
 };
 
 // material { texture interior } as a declared value.
