@@ -2,7 +2,8 @@
 # Regenerates reference/NAME.exr for every scenes/NAME.pov with POV-Ray, and rewrites reference/README.md.
 # Usage: reference/make_references.sh [NAME...]   (no names = every scene)
 # Each scene is rendered from the scenes/ folder (so relative paths resolve as POV-Ray would) with exactly:
-#   povray -D -A +W320 +H240 +FE +O../reference/NAME.exr NAME.pov
+#   povray -D -A +W320 +H240 +FE [switches] +O../reference/NAME.exr NAME.pov
+# where [switches] are those of a "// switches: …" line in the scene (e.g. "+A0.3 +R3 -J" or "+UA"), if any.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 scenes=$(cd "$here/../scenes" && pwd)
@@ -17,7 +18,9 @@ fi
 failed=0
 cd "$scenes"
 for n in "${names[@]}"; do
-  if povray -D -A +W320 +H240 +FE "+O../reference/$n.exr" "$n.pov" > "$log_dir/$n.log" 2>&1; then
+  # A scene may ask for extra switches (antialiasing, alpha) on a line "// switches: …" near its top.
+  read -r -a extra <<< "$(grep -m1 '^// switches:' "$n.pov" | sed 's|^// switches:||')"
+  if povray -D -A +W320 +H240 +FE "${extra[@]}" "+O../reference/$n.exr" "$n.pov" > "$log_dir/$n.log" 2>&1; then
     echo "ok    $n"
   else
     echo "FAIL  $n (last lines of POV-Ray's output follow)"; tail -15 "$log_dir/$n.log"; failed=1
@@ -32,8 +35,9 @@ cat > "$here/README.md" <<README
 changing a scene; \`make_references.sh NAME...\` redoes only those).
 
 - POV-Ray version (first line of \`povray --version\`): \`$version\`
-- Command, run from the \`scenes/\` folder, for each scene: \`povray -D -A +W320 +H240 +FE +O../reference/NAME.exr NAME.pov\`
-  (no anti-aliasing, 320×240, OpenEXR output: half float, RGB, zip, linear, unclipped). Debian's
+- Command, run from the \`scenes/\` folder, for each scene: \`povray -D -A +W320 +H240 +FE [switches] +O../reference/NAME.exr NAME.pov\`
+  (no anti-aliasing, 320×240, OpenEXR output: half float, RGB, zip, linear, unclipped), where [switches] are those
+  of a \`// switches: …\` line in the scene, if it has one (antialiased scenes with \`-J\`, alpha output with \`+UA\`). Debian's
   /etc/povray/3.7/povray.ini is read too; besides settings the command overrides (size, output type, display) it
   adds Library_Path entries, Verbose=On and Bounding_Threshold=3, none of which changes the image. Threads are
   POV-Ray's default (all cores); nothing in these scenes depends on the thread count.

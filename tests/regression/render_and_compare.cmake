@@ -10,8 +10,15 @@ endforeach()
 # A stale image from an earlier run must not be compared if this render fails.
 file(REMOVE ${OUTPUT} ${DIFF})
 
-# Step 1: render, from the scenes folder as POV-Ray did for the reference.
-set(render_command ${POVTRACE} -D -A +W320 +H240 +FE +O${OUTPUT} ${SCENE})
+# Step 1: render, from the scenes folder as POV-Ray did for the reference, with the scene's own extra switches
+# (a "// switches: …" line, as reference/make_references.sh reads it).
+file(STRINGS ${SCENE} switch_lines REGEX "^// switches:" LIMIT_COUNT 1)
+set(extra_switches "")
+if(switch_lines)
+  string(REGEX REPLACE "^// switches:[ ]*" "" switch_text "${switch_lines}")
+  separate_arguments(extra_switches UNIX_COMMAND "${switch_text}")
+endif()
+set(render_command ${POVTRACE} -D -A +W320 +H240 +FE ${extra_switches} +O${OUTPUT} ${SCENE})
 execute_process(COMMAND ${render_command}
   WORKING_DIRECTORY ${SCENE_DIR}
   RESULT_VARIABLE render_result
