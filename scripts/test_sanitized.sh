@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (g++, Debug) in build-asan/.
+# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (g++, Debug with -O1: the tests run several
+# times faster than at -O0 and the sanitizers see the same code) in build-asan/
 # Any sanitizer report fails the test that triggers it (UBSan is made fatal through UBSAN_OPTIONS). g++ leaves
 # float-cast-overflow out of -fsanitize=undefined: it is added, since SDL values reach integer conversions.
 set -euo pipefail
@@ -7,7 +8,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
 out="$root/build-asan"
 cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE=Debug \
-  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer" >/dev/null
+  -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer" >/dev/null
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 cmake --build "$out" -j"$(nproc)"
