@@ -126,6 +126,7 @@ void Interpreter::apply_transform(Light& light, const Matrix& m) {
   light.point_at = m.point(light.point_at);
   light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
   light.axis2 = m.vector(light.axis2);
+  for (Object& o : light.looks_like) apply_transform(o, m);
 }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
@@ -135,7 +136,22 @@ bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   if (k == "color" || k == "colour" || k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft") {
     unget(t);
     light.colour = parse_colour();
-  } else if (k == "spotlight") light.spotlight = true;
+  } else if (k == "spotlight") {
+    // As for `cylinder`, the keyword sets the kind's defaults (a radius written before it is an error in POV-Ray).
+    light.spotlight = true;
+    light.cylinder = false;
+    light.radius = 30.0;
+    light.falloff = 45.0;
+    light.tightness = 0.0;
+  }
+  else if (k == "cylinder") {
+    // POV-Ray's defaults for a cylindrical light are set by the keyword itself.
+    light.cylinder = true;
+    light.spotlight = false;
+    light.radius = 0.75;
+    light.falloff = 1.0;
+    light.tightness = 0.0;
+  } else if (k == "looks_like") parse_looks_like(t, light);
   else if (k == "parallel") light.parallel = true;
   else if (k == "shadowless") light.shadowless = true;
   else if (k == "point_at") light.point_at = parse_vector();
@@ -150,11 +166,28 @@ bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   else if (k == "circular" || k == "orient") {
     (k == "circular" ? light.circular : light.orient) = true;
     if (!light.area) warn(t.loc, "'" + std::string(k) + "' only affects an area_light");
-  } else if (k == "cylinder" || k == "looks_like" || k == "projected_through" || k == "media_interaction" ||
+  } else if (k == "projected_through" || k == "media_interaction" ||
              k == "media_attenuation" || k == "photons" || k == "area_illumination")
     taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;
+}
+
+// looks_like { object modifiers }: the object is moved to the light's location as it is at this point, then takes
+// the modifiers written after it, and every later transform of the light (POV-Ray's Parse_Light_Source). It casts
+// no shadow.
+void Interpreter::parse_looks_like(const Token& keyword, Light& light) {
+  const NestingGuard guard(*this, keyword);
+  if (!light.looks_like.empty()) fail_at(keyword, "a light_source has at most one looks_like object");
+  expect("{", " after 'looks_like'");
+  const Token first = next();
+  auto item = try_parse_item(first);
+  if (!item || !std::holds_alternative<Object>(*item)) fail_expected(first, "an object in looks_like { }");
+  Object object = std::move(std::get<Object>(*item));
+  apply_transform(object, Matrix::translation(light.location));
+  parse_object_modifiers(object);
+  object.no_shadow = true;
+  light.looks_like.push_back(std::move(object));
 }
 
 // area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's

@@ -190,10 +190,11 @@ struct Light {
   Colour colour{1, 1, 1};
   bool parallel = false;
   bool spotlight = false;
+  bool cylinder = false;    // a spotlight with parallel beams (POV-Ray's cylindrical light)
   bool shadowless = false;
   Vec3 point_at{0, 0, 1};
-  double radius = 30.0;     // spotlight, degrees
-  double falloff = 45.0;    // spotlight, degrees
+  double radius = 30.0;     // spotlight: degrees; cylinder: distance from the axis (0.75 by default)
+  double falloff = 45.0;    // spotlight: degrees; cylinder: distance from the axis (1 by default)
   double tightness = 0.0;   // spotlight
   double fade_distance = 0.0;
   double fade_power = 0.0;
@@ -206,6 +207,9 @@ struct Light {
   bool jitter = false;
   bool circular = false;
   bool orient = false;
+  // looks_like { object }: an object placed at the light (moved with it), casting no shadow; the parser places it in
+  // the scene next to the light. At most one.
+  std::vector<Object> looks_like;
   SourceLoc loc;
   Unsupported unsupported;
 };

@@ -259,6 +259,7 @@ class Interpreter {
   Camera parse_camera(const Token& keyword);
   Light parse_light(const Token& keyword);
   void parse_area_light(const Token& keyword, Light& light);
+  void parse_looks_like(const Token& keyword, Light& light);
   bool try_light_modifier(const Token& t, Light& light);
   void apply_transform(Light& light, const Matrix& m);
 
@@ -279,6 +280,7 @@ class Interpreter {
   std::optional<Value> try_parse_rvalue(const Token& first);
   void place_object(Object object, const SourceLoc& at);
   void place_light(Light light, const SourceLoc& at);
+  void add_light(Light light);
   void post_process(Object& object);
 
   const ParseOptions& options_;

@@ -227,8 +227,11 @@ Unsupported first_unsupported(const Object& o) {
   if (const auto* csg = std::get_if<Csg>(&o.shape)) {
     for (const auto& c : csg->children)
       if (auto u = first_unsupported(c)) return u;
-    for (const auto& l : csg->lights)
+    for (const auto& l : csg->lights) {
       if (l.unsupported) return l.unsupported;
+      for (const auto& shown : l.looks_like)
+        if (auto u = first_unsupported(shown)) return u;
+    }
   }
   return std::nullopt;
 }
@@ -236,6 +239,17 @@ Unsupported first_unsupported(const Object& o) {
 
 void Interpreter::place_light(Light light, const SourceLoc& at) {
   refuse_if_unsupported(light.unsupported, at, "light_source");
+  for (Object& shown : light.looks_like) refuse_if_unsupported(first_unsupported(shown), at, "light_source");
+  add_light(std::move(light));
+}
+
+// A light joins the scene's lights; its looks_like object joins the objects.
+void Interpreter::add_light(Light light) {
+  for (Object& shown : light.looks_like) {
+    post_process(shown);
+    scene_.objects.push_back(std::move(shown));
+  }
+  light.looks_like.clear();
   scene_.lights.push_back(std::move(light));
 }
 
@@ -262,7 +276,7 @@ void Interpreter::post_process(Object& object) {
       if (object.no_shadow) child.no_shadow = true;
       post_process(child);
     }
-    for (auto& light : csg->lights) scene_.lights.push_back(light);
+    for (auto& light : csg->lights) add_light(std::move(light));
     csg->lights.clear();
   }
   if (!object.texture) {

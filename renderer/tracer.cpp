@@ -276,6 +276,7 @@ bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 no
 }
 
 bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const {
+  if (l.light.cylinder) return cylinder_light_at(l, point, colour, to_light, distance);
   if (l.light.parallel) {
     // Parallel light (§3): fixed direction; distance is the projection onto it, so only objects between the
     // hit and the plane through `location` cast shadows.
@@ -309,6 +310,26 @@ Rgb shadow_fade(const Interior& in, double depth) {
   return fc + (Rgb{1, 1, 1} - fc) / (1.0 + std::pow(d, in.fade_power));
 }
 }  // namespace
+
+// A cylindrical light (POV-Ray's Attenuate_Light and ComputeOneWhiteLightRay): parallel beams along point_at →
+// location, full inside `radius` of the axis, fading to 0 at `falloff` by the smooth step of 1 − d/falloff, raised
+// to `tightness`; nothing behind the light's plane. The distance for fade and shadows is along the beam.
+bool Tracer::cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const {
+  const Light& light = l.light;
+  to_light = -l.spot_axis;
+  distance = dot(light.location - point, to_light);
+  const Vec3 from_centre = point - light.location;
+  const double along = dot(from_centre, l.spot_axis);
+  if (!(along > 0)) return false;
+  const double off_axis = length(from_centre - l.spot_axis * along);
+  if (!(off_axis < light.falloff)) return false;
+  const double d = 1.0 - off_axis / light.falloff;
+  double a = std::pow(d, light.tightness);
+  if (light.radius > 0 && off_axis > light.radius) a *= smoothstep(0.0, 1.0 - light.radius / light.falloff, d);
+  colour = l.colour * a;
+  if (l.fades) colour *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
+  return !all_below(colour, tolerance::epsilon);
+}
 
 Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state) {
   if (!scene_.any_casts_shadow) return {1, 1, 1};

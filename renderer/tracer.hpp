@@ -71,6 +71,7 @@ class Tracer {
   // Light colour reaching `point` from light `l` before shadowing (spot and fade attenuation), plus L and
   // the distance used by the shadow test. Returns false when the light is cut off (below 1e-10).
   bool light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
+  bool cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
   // Shadow factor along the segment point → light: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
   Rgb shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state);
