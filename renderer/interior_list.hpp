@@ -32,6 +32,18 @@ inline bool same_interior(const InteriorRef& a, const InteriorRef& b) {
 
 class InteriorList {
  public:
+  // Rays are copied at every bounce and most are in no interior at all: construction and copies touch only the
+  // entries in use (the array is deliberately left uninitialised beyond count_).
+  InteriorList() {}   // NOLINT: no zero-fill of entries_
+  InteriorList(const InteriorList& o) : count_(o.count_) {
+    for (int i = 0; i < count_; ++i) entries_[i] = o.entries_[i];
+  }
+  InteriorList& operator=(const InteriorList& o) {
+    count_ = o.count_;
+    for (int i = 0; i < count_; ++i) entries_[i] = o.entries_[i];
+    return *this;
+  }
+
   // Deeper nesting than this is not tracked (the entering is ignored), which only matters for scenes with more
   // than 32 nested or overlapping objects along one ray.
   static constexpr int capacity = 32;
@@ -58,7 +70,7 @@ class InteriorList {
       if (same_interior(entries_[i], r)) return i;
     return -1;
   }
-  std::array<InteriorRef, capacity> entries_{};
+  std::array<InteriorRef, capacity> entries_;
   int count_ = 0;
 };
 

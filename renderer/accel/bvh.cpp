@@ -85,6 +85,18 @@ inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double
   // A hit at exactly the best depth may still win the tie, so the search interval ends just above it.
   const double t_max = best.primitive != ~0u && i < best.primitive ? std::nextafter(best.t, tolerance::bound_huge)
                                                                    : best.t;
+  if (!p.data) {   // few roots, depth-sorted: the first one above t_min decides (no SurfaceHit until it wins)
+    const Intersections xs = intersect_all(p, ray);
+    for (int k = 0; k < xs.count; ++k) {
+      if (!(xs.t[k] > t_min)) continue;
+      if (!(xs.t[k] < t_max)) return;
+      best.t = xs.t[k];
+      best.primitive = i;
+      best.surface = SurfaceHit{xs.t[k], &p, 0, 0, 0};
+      return;
+    }
+    return;
+  }
   SurfaceHit hit;
   if (!nearest_hit(p, ray, t_min, t_max, hit)) return;
   best.t = hit.t;
@@ -268,6 +280,12 @@ void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, Sh
   auto report = [&](std::uint32_t i) {
     const Primitive& p = primitives_[i];
     if (!p.casts_shadow) return true;
+    if (!p.data) {   // few roots: no buffer needed
+      const Intersections xs = intersect_all(p, ray);
+      for (int k = 0; k < xs.count; ++k)
+        if (xs.t[k] > t_min && xs.t[k] < t_max && !visit(context, i, SurfaceHit{xs.t[k], &p, 0, 0, 0})) return false;
+      return true;
+    }
     hits.clear();
     collect_hits(p, ray, hits);
     for (const SurfaceHit& h : hits)
