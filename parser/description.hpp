@@ -158,7 +158,15 @@ struct Cone { Vec3 end1; double radius1 = 1; Vec3 end2{0, 1, 0}; double radius2 
 struct Disc { Vec3 centre; Vec3 normal{0, 0, 1}; double radius = 1, hole_radius = 0; };   // normal unit length
 struct Torus { double major = 0, minor = 0; bool sturm = false; };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus>;
+// poly { N, <c…> }, cubic { <c…> } (N = 3), quartic { <c…> } (N = 4): the surface Σ c·xⁱyʲzᵏ = 0 over i + j + k ≤ N,
+// coefficients in POV-Ray's term order (x's power from N down, then y's, then z's). Shared: 35 or more numbers.
+struct Poly {
+  int order = 4;
+  std::shared_ptr<const std::vector<double>> coefficients;
+  bool sturm = false;
+};
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly>;
 
 struct Object {
   Shape shape;

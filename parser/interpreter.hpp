@@ -254,6 +254,8 @@ class Interpreter {
   // `sturm [bool]` as an object modifier: legal only on a torus among the rendered shapes (POV-Ray's
   // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
+  // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
+  Object parse_poly(const Token& keyword, int order);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

@@ -258,6 +258,9 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "box") return parse_box(t);
   if (k == "object") return parse_object_block(t);
   if (k == "light_source") return parse_light(t);
+  if (k == "poly") return parse_poly(t, 0);
+  if (k == "cubic") return parse_poly(t, 3);
+  if (k == "quartic") return parse_poly(t, 4);
   if (k == "union") return parse_csg(t, CsgKind::union_);
   if (k == "merge") return parse_csg(t, CsgKind::merge);
   if (k == "intersection") return parse_csg(t, CsgKind::intersection);
@@ -269,7 +272,7 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   static const std::string_view shapes[] = {
       "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
       "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",
-      "sphere_sweep", "bicubic_patch", "quadric", "cubic", "quartic", "poly", "parametric", "ovus", "lemon",
+      "sphere_sweep", "bicubic_patch", "quadric", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)
     if (k == s) {

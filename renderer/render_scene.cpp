@@ -1,4 +1,5 @@
 #include "renderer/render_scene.hpp"
+#include "renderer/shapes/poly_shape.hpp"
 
 #include "renderer/shapes/quadric_shapes.hpp"
 
@@ -80,6 +81,10 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.transformed = shape->transformed;
     p.world_from_object = shape->world_from_object;
     p.object_from_world = shape->object_from_world;
+  } else if (const auto* poly = std::get_if<Poly>(&o.shape)) {
+    const Primitive shape = make_poly(*poly, o.world_from_object);
+    p.type = shape.type;
+    p.data = shape.data;
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }

@@ -46,6 +46,11 @@ Intersections intersect_torus(const Primitive& p, const Ray& ray);
 Vec3 torus_normal(const Primitive& p, Vec3 world_point);
 bool inside_torus(const Primitive& p, Vec3 world_point);
 Bounds torus_object_bounds(const Primitive& p);
+
+Intersections intersect_poly(const Primitive& p, const Ray& ray);
+Vec3 poly_normal(const Primitive& p, Vec3 world_point);
+bool inside_poly(const Primitive& p, Vec3 world_point);
+Bounds poly_world_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -69,6 +74,7 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::cone: return shapes::intersect_cone(p, ray);
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
+    case ShapeType::poly: return shapes::intersect_poly(p, ray);
   }
   return {};
 }
@@ -100,6 +106,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::cone: return shapes::cone_normal(p, world_point);
     case ShapeType::disc: return shapes::disc_normal(p, world_point);
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
+    case ShapeType::poly: return shapes::poly_normal(p, world_point);
   }
   return {};
 }
@@ -113,6 +120,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::cone: return shapes::inside_cone(p, world_point);
     case ShapeType::disc: return shapes::inside_disc(p, world_point);
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
+    case ShapeType::poly: return shapes::inside_poly(p, world_point);
   }
   return false;
 }
@@ -140,6 +148,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::cone: return to_world(p, shapes::cone_object_bounds(p));
     case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
+    case ShapeType::poly: return shapes::poly_world_bounds(p);
   }
   return {};
 }

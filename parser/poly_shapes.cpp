@@ -1,0 +1,53 @@
+// poly, cubic and quartic (POV-Ray's polynomial surfaces). Facts from POV-Ray 3.7's parser (source/backend/parser/
+// parse.cpp, Parse_Poly and Parse_Coeffs, 3.7-stable):
+// - `poly { N, <c…> }` reads the order first (2…35, else "Order of poly is out of range"); `cubic` and `quartic` are
+//   orders 3 and 4. Then exactly (N+1)(N+2)(N+3)/6 coefficients inside < >, commas optional.
+// - `sturm` is an object modifier (try_sturm_modifier).
+// povtrace renders orders 2 to 4 (what every sample scene and shapesq.inc use); a higher order parses and is refused
+// by name when the object reaches the scene.
+#include "parser/interpreter.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr int kMaxPolyOrder = 35;       // POV-Ray's MAX_ORDER
+constexpr int kMaxRenderedOrder = 4;    // the polynomial solvers povtrace has
+
+int term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
+}  // namespace
+
+Object Interpreter::parse_poly(const Token& keyword, int order) {
+  expect("{", " after '" + std::string(keyword.text) + "'");
+  Object o;
+  o.loc = keyword.loc;
+  if (order == 0) {
+    const Token at = peek();
+    const double n = parse_float();
+    accept(",");
+    if (!(n >= 2 && n < kMaxPolyOrder + 1)) fail_at(at, "the order of a poly must be 2 to 35");
+    order = static_cast<int>(n);
+  }
+  const Token open = next();
+  if (!open.is("<")) fail_expected(open, "'<' starting the " + std::to_string(term_count(order)) + " coefficients");
+  auto coefficients = std::make_shared<std::vector<double>>();
+  coefficients->reserve(static_cast<std::size_t>(term_count(order)));
+  coefficients->push_back(parse_float());
+  for (int i = 1; i < term_count(order); ++i) {
+    accept(",");
+    coefficients->push_back(parse_float());
+  }
+  if (const Token close = next(); !close.is(">"))
+    fail_expected(close, "'>' after the " + std::to_string(term_count(order)) + " coefficients of a " +
+                             std::to_string(order) + "th-order polynomial");
+  Poly poly;
+  poly.order = order;
+  poly.coefficients = std::move(coefficients);
+  o.shape = poly;
+  if (order > kMaxRenderedOrder)
+    o.unsupported = UnsupportedFeature{"a poly of order " + std::to_string(order) + " (povtrace renders orders 2 to 4)",
+                                       keyword.loc};
+  parse_object_modifiers(o);
+  return o;
+}
+
+}  // namespace povtrace::sdl
