@@ -134,6 +134,8 @@ struct Interior {
   double fade_power = 0.0;
   Colour fade_colour{};          // single precision, filter/transmit unused
   double refraction = 1.0;       // legacy `refraction`: scales the light seen through the object
+  bool hollow = false;           // the object's `hollow` flag (POV-Ray keeps it on the interior): fog and media
+                                 // reach rays inside hollow objects only
   Unsupported unsupported;
 };
 
@@ -175,6 +177,7 @@ struct Object {
   std::optional<Interior> interior;
   bool inverse = false;
   bool no_shadow = false;
+  std::optional<bool> hollow;               // unset: inherited from a CSG parent, else false
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -233,6 +236,19 @@ struct SkySphere {
   Unsupported unsupported;
 };
 
+// fog { … } (POV-Ray's Parse_Fog): constant fog (type 1) or ground fog (type 2) thinning out above `offset` along
+// `up` with the scale `alt`; `distance` is where the fog reaches 1 − 1/e; `turbulence` varies its density.
+struct Fog {
+  int type = 1;
+  double distance = 0;      // 0: the fog has no effect
+  Colour colour;            // filter and transmit: the fog tints / lets through part of what is behind it
+  double alt = 0, offset = 0;
+  Vec3 up{0, 1, 0};         // unit length; turned by the fog's transforms
+  std::optional<Turbulence> turbulence;
+  double turb_depth = 0.5;
+  SourceLoc loc;
+};
+
 // ---- Whole scene ----------------------------------------------------------------------------------------
 struct GlobalSettings {
   std::optional<double> assumed_gamma;   // absent: 1.0 for #version ≥ 3.7, legacy sRGB otherwise (pipeline §6)
@@ -249,6 +265,7 @@ struct SceneDescription {
   Camera camera;
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
   std::optional<SkySphere> sky_sphere;
+  std::vector<Fog> fogs;                 // in POV-Ray's list order: the last one written first
   std::vector<Light> lights;
   std::vector<Object> objects;           // every object has a texture after parsing (CSG inheritance and the
                                          // #default texture resolved as POV-Ray's Post_Process does)

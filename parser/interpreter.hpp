@@ -209,6 +209,7 @@ class Interpreter {
   Finish parse_finish_block(const Token& keyword, const Finish& start);
   void parse_finish_reflection(Finish& f);
   SkySphere parse_sky_sphere(const Token& keyword);
+  Fog parse_fog(const Token& keyword);
   double optional_float(double fallback);
   Interior parse_interior_block(const Token& keyword, const Interior& start);
   std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);

@@ -80,12 +80,8 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "hollow") {
-    // hollow only matters for media and fog inside objects, which povtrace does not render yet; the flag
-    // itself changes nothing in the image otherwise. An optional boolean follows.
-    Token n = peek();
-    if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false") || n.is("yes") ||
-        n.is("no") || n.is("("))
-      parse_float();
+    // hollow [bool]: fog (and media) reach rays inside hollow objects only.
+    object.hollow = optional_float(1.0) > 0.0;
     return true;
   }
   if (k == "sturm" && try_sturm_modifier(t, object)) return true;

@@ -67,7 +67,12 @@ void Interpreter::parse_statement(const Token& t) {
     else place_object(std::move(std::get<Object>(*item)), t.loc);
     return;
   }
-  static const std::string_view unsupported[] = {"fog", "media", "rainbow", "photons", "radiosity"};
+  if (k == "fog") {
+    // POV-Ray keeps fogs in a list, the newest first.
+    scene_.fogs.insert(scene_.fogs.begin(), parse_fog(t));
+    return;
+  }
+  static const std::string_view unsupported[] = {"media", "rainbow", "photons", "radiosity"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
   if (k == "declare" || k == "include" || k == "version")
@@ -273,11 +278,18 @@ void Interpreter::post_process(Object& object) {
     for (auto& child : csg->children) {
       if (!child.texture) child.texture = object.texture;
       if (!child.interior) child.interior = object.interior;
+      if (!child.hollow) child.hollow = object.hollow;   // hollow reaches the children that did not set it
       if (object.no_shadow) child.no_shadow = true;
       post_process(child);
     }
     for (auto& light : csg->lights) add_light(std::move(light));
     csg->lights.clear();
+  }
+  // POV-Ray gives every object an interior and keeps the hollow flag there.
+  if (object.hollow.value_or(false)) {
+    Interior in = object.interior.value_or(Interior{});
+    in.hollow = true;
+    object.interior = in;
   }
   if (!object.texture) {
     // One shared copy per #default state: untextured objects by the thousand must not copy it each.

@@ -1,5 +1,6 @@
 // pigment, finish, texture and interior blocks, and the transforms shared with objects
 // (povray-sdl-and-geometry.md §9, §11; finish defaults in povray-pixel-pipeline.md §2).
+#include <algorithm>
 #include <cmath>
 
 #include "parser/interpreter.hpp"
@@ -202,6 +203,64 @@ SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
   }
   if (sky.pigments.empty()) fail_at(keyword, "a sky_sphere needs at least one pigment");
   return sky;
+}
+
+// fog { [colour] [distance D | D] [fog_type 1|2] [fog_alt] [fog_offset] [turb_depth] [up V] [turbulence V octaves
+// omega lambda] [rotate scale matrix transform] } (POV-Ray's Parse_Fog): transforms turn only the up vector (a translate
+// warns and does nothing), which is normalised at the end.
+Fog Interpreter::parse_fog(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'fog'");
+  Fog fog;
+  fog.loc = keyword.loc;
+  auto turbulence = [&fog]() -> Turbulence& {
+    if (!fog.turbulence) fog.turbulence = Turbulence{};
+    return *fog.turbulence;
+  };
+  for (Token t = next(); !t.is("}"); t = next()) {
+    Matrix m;
+    if (starts_colour(t)) {
+      unget(t);
+      fog.colour = parse_colour();
+    } else if (t.is("distance")) {
+      fog.distance = parse_float();
+    } else if (t.is("fog_type")) {
+      const double type = parse_float();
+      if (type != 1 && type != 2) warn(t.loc, "unknown fog_type (1 is constant fog, 2 ground fog)");
+      fog.type = static_cast<int>(type);
+    } else if (t.is("fog_alt")) {
+      fog.alt = parse_float();
+    } else if (t.is("fog_offset")) {
+      fog.offset = parse_float();
+    } else if (t.is("turb_depth")) {
+      fog.turb_depth = parse_float();
+    } else if (t.is("up")) {
+      fog.up = parse_vector();
+    } else if (t.is("turbulence")) {
+      turbulence().amount = parse_vector();
+    } else if (t.is("octaves")) {
+      turbulence().octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
+    } else if (t.is("omega")) {
+      turbulence().omega = parse_float();
+    } else if (t.is("lambda")) {
+      turbulence().lambda = parse_float();
+    } else if (t.is("translate")) {
+      parse_vector();
+      warn(t.loc, "a fog's up vector cannot be translated: the translate does nothing");
+    } else if (try_transform(t, m)) {
+      fog.up = m.vector(fog.up);
+    } else if (t.kind == TokenKind::number || t.is("(") || t.is("-")) {
+      unget(t);
+      warn(t.loc, "the fog distance should be written with the 'distance' keyword");
+      fog.distance = parse_float();
+    } else {
+      fail_expected(t, "a fog item (a colour, distance, fog_type, fog_alt, fog_offset, turb_depth, up, turbulence, "
+                       "octaves, omega, lambda, a transform) or '}'");
+    }
+  }
+  const double l = length(fog.up);
+  if (l > 0) fog.up = fog.up / l;
+  return fog;
 }
 
 // POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the

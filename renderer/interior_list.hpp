@@ -27,7 +27,7 @@ inline bool same_interior(const InteriorRef& a, const InteriorRef& b) {
   const Interior& x = *a.interior;
   const Interior& y = *b.interior;
   return x.ior == y.ior && x.fade_distance == y.fade_distance && x.fade_power == y.fade_power &&
-         x.fade_colour == y.fade_colour && x.refraction == y.refraction;
+         x.fade_colour == y.fade_colour && x.refraction == y.refraction && x.hollow == y.hollow;
 }
 
 class InteriorList {
@@ -52,6 +52,12 @@ class InteriorList {
   int size() const { return count_; }
   const InteriorRef& back() const { return entries_[count_ - 1]; }
   bool contains(const InteriorRef& r) const { return find(r) >= 0; }
+  // True when every interior the ray is in is hollow (or it is in none): POV-Ray's "hollow ray", which fog reaches.
+  bool all_hollow() const {
+    for (int i = 0; i < count_; ++i)
+      if (!entries_[i].interior->hollow) return false;
+    return true;
+  }
   void append(const InteriorRef& r) {
     if (count_ < capacity) entries_[count_++] = r;
   }

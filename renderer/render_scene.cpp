@@ -151,6 +151,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   use_noise_generator(r.materials, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
   r.accelerator = Accelerator(std::move(primitives));
   r.camera_interiors = r.containing_interiors(scene.camera.location);
+  r.fogs = scene.fogs;
+  r.noise_generator = generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected;
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
                           scene.camera.right};

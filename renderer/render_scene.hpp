@@ -99,6 +99,8 @@ struct RenderScene {
   double assumed_gamma = 1.0;
   bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
+  std::vector<Fog> fogs;             // as POV-Ray lists them (the last written first)
+  NoiseGenerator noise_generator = NoiseGenerator::range_corrected;   // for turbulent fog
   std::vector<InteriorRef> camera_interiors;   // the interiors that contain the camera location
   std::vector<InteriorRef> containing_interiors(Vec3 point) const;
   std::vector<std::string> warnings; // approximations the build had to make, for the user to see

@@ -50,8 +50,10 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
 Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
-  if (!hit.found()) return background(ray.direction, state);
-  return shade_hit(ray, hit.surface, level, weight, state);
+  Radiance r = hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
+  // Fog reaches rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away (hit.t).
+  if (!scene_.fogs.empty() && state.interiors.all_hollow()) apply_fog(ray, hit.t, r);
+  return r;
 }
 
 // The colour of a miss (pipeline §5, POV-Ray's ComputeSky): the sky_sphere's pigments, last written first, at the

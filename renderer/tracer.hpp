@@ -84,6 +84,8 @@ class Tracer {
   Rgb area_sample(AreaSampling& s, int u, int v);
   Rgb area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level);
   Radiance background(Vec3 direction, const RayState& state) const;
+  // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
+  void apply_fog(const Ray& ray, double depth, Radiance& r) const;
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
 
   const RenderScene& scene_;

@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "unsupported: the pigment item 'wrinkles'"},
         ErrorCase{"ClippedBy", "#version 3.7;\nsphere { 0, 1 clipped_by { plane { y, 0 } } }\n", 2, 1,
                   "unsupported: the object modifier 'clipped_by'"},
-        ErrorCase{"Fog", "#version 3.7;\nfog { distance 1 }\n", 2, 1, "unsupported: 'fog'"},
+        ErrorCase{"Rainbow", "#version 3.7;\nrainbow { angle 42 }\n", 2, 1, "unsupported: 'rainbow'"},
         ErrorCase{"Fisheye", "#version 3.7;\ncamera { fisheye }\n", 2, 1, "unsupported: the camera item 'fisheye'"}),
     [](const auto& p) { return p.param.name; });
 
