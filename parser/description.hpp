@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "mesh_description.hpp"
 #include "source_location.hpp"
 #include "vecmath.hpp"
 
@@ -99,7 +100,7 @@ struct Csg {
   std::vector<Light> lights;      // light sources written inside the CSG move with it
 };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg>;
+using Shape = std::variant<Sphere, Plane, Box, Csg, Triangle, Polygon, Mesh>;
 
 struct Object {
   Shape shape;

@@ -13,6 +13,7 @@
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -198,6 +199,27 @@ class Interpreter {
   void apply_transform(Object& object, const Matrix& m);
   void parse_material_block(const Token& keyword, Object& object);
   static std::string csg_name(CsgKind kind);
+
+  // ---- triangles, polygons and meshes (meshes.cpp, mesh2.cpp) ----
+  struct MeshBuilder;
+  std::optional<Object> parse_declared_object_body();   // `shape { Declared_Id modifiers }`
+  Object parse_triangle(const Token& keyword, bool smooth);
+  Object parse_polygon(const Token& keyword);
+  Object parse_mesh(const Token& keyword);
+  void parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh);
+  std::array<std::int32_t, 3> parse_mesh_triangle_textures(MeshBuilder& mesh);
+  std::optional<Vec3> parse_inside_vector();
+  Object parse_mesh2(const Token& keyword);
+  std::size_t parse_mesh2_count(const Token& keyword, bool zero_allowed);
+  void check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count, const std::string& items);
+  void expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items);
+  std::vector<float> parse_mesh2_vectors(const Token& keyword, bool normals);
+  std::size_t parse_mesh2_uv_vectors(const Token& keyword);
+  std::array<std::uint32_t, 3> mesh2_index_triple(const Token& at, const Numeric& value, std::size_t limit,
+                                                  const std::string& what);
+  std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
+                                                 const std::string& what);
+  void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
