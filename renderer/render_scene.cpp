@@ -1,4 +1,5 @@
 #include "renderer/render_scene.hpp"
+#include "renderer/shapes/triangle_shapes.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -80,6 +81,15 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.type = ShapeType::box;
     p.a = b->corner1;
     p.b = b->corner2;
+  } else if (const auto* tri = std::get_if<Triangle>(&o.shape)) {
+    p.type = ShapeType::triangle;
+    shapes::set_up_triangle(p, *tri);
+  } else if (const auto* poly = std::get_if<Polygon>(&o.shape)) {
+    p.type = ShapeType::polygon;
+    shapes::set_up_polygon(p, *poly);
+  } else if (const auto* mesh = std::get_if<Mesh>(&o.shape)) {
+    p.type = ShapeType::mesh;
+    shapes::set_up_mesh(p, *mesh);
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }
@@ -98,6 +108,13 @@ class MaterialTable {
     if (!o.interior) shared_.emplace(o.texture.get(), index);
     return index;
   }
+  // A mesh placement's own textures, as consecutive materials (the index of the first is returned).
+  std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures,
+                       const std::optional<Interior>& interior) {
+    const auto first = static_cast<std::uint32_t>(materials_.size());
+    for (const auto& t : textures) materials_.push_back(make_material(*t, interior));
+    return first;
+  }
 
  private:
   std::vector<Material>& materials_;
@@ -114,6 +131,8 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
     return;
   }
   add_primitives(o, materials.material_for(o), object_index, out);
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
+    out.back().element_materials = materials.append(mesh->textures, o.interior);
 }
 // Refraction uses ior/1 at every surface (each object seen from air). POV-Ray tracks the list of interiors
 // a ray is in, which differs where refracting objects overlap or nest: say so instead of differing silently.

@@ -48,12 +48,27 @@ Radiance Tracer::trace(const Ray& ray, int level, double weight) {
 Radiance Tracer::background() const { return {scene_.background, scene_.background_transmit}; }
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight) {
+  const MaterialBlend blend = materials_at(hit);
+  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], level, weight);
+  // A mesh triangle with a texture_list: each texture shaded whole, the results blended by their weights; weights
+  // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
+  Radiance out;
+  for (int k = 0; k < blend.count; ++k) {
+    if (blend.weight[k] < scene_.settings.adc_bailout) continue;
+    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], level, weight);
+    out.colour += r.colour * blend.weight[k];
+    out.transmit += r.transmit * blend.weight[k];
+  }
+  return out;
+}
+
+Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level,
+                                double weight) {
   const Primitive& prim = *hit.leaf;
   const Vec3 point = ray.origin + ray.direction * hit.t;
   const Vec3 raw_normal = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 normal = dot(raw_normal, ray.direction) > 0 ? -raw_normal : raw_normal;
-  const Material& material = scene_.materials[prim.material];
 
   // Layers top first; each is weighted by what the layers above let through (§2 "Layers").
   Radiance out;
@@ -131,14 +146,24 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance) {
   const Ray ray{point, to_light};
   scene_.accelerator.for_each_shadow_hit(
       ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-        const Material& m = scene_.materials[hit.leaf->material];
-        if (m.opaque) {
+        const MaterialBlend blend = materials_at(hit);
+        if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) {
           f = {0, 0, 0};
           return false;
         }
-        // A transparent object filters at every surface crossing, through all its layers (§3).
+        // A transparent object filters at every surface crossing, through all its layers (§3); a texture_list
+        // triangle by the weighted sum of its textures' filters.
         const Vec3 at = point + to_light * hit.t;
-        for (const RenderLayer& layer : m.layers) f = mul(f, pass_through(evaluate_pigment(layer.pigment, at)));
+        Rgb through{0, 0, 0};
+        for (int k = 0; k < blend.count; ++k) {
+          const Material& m = scene_.materials[blend.material[k]];
+          Rgb layers = m.opaque ? Rgb{0, 0, 0} : Rgb{1, 1, 1};
+          if (!m.opaque)
+            for (const RenderLayer& layer : m.layers)
+              layers = mul(layers, pass_through(evaluate_pigment(layer.pigment, at)));
+          through += layers * blend.weight[k];
+        }
+        f = mul(f, through);
         return !all_below(f, tolerance::epsilon);
       });
   return f;

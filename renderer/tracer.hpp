@@ -38,6 +38,7 @@ class Tracer {
  private:
   Radiance trace(const Ray& ray, int level, double weight);
   Radiance shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight);
+  Radiance shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level, double weight);
   Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view);
   // Light colour reaching `point` from light `l` before shadowing (spot and fade attenuation), plus L and
