@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "mesh_description.hpp"
 #include "source_location.hpp"
 #include "vecmath.hpp"
 
@@ -168,7 +169,7 @@ struct Poly {
   bool sturm = false;
 };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly>;
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh>;
 
 struct Object {
   Shape shape;

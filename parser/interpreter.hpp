@@ -14,6 +14,7 @@
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -257,6 +258,26 @@ class Interpreter {
   bool try_sturm_modifier(const Token& t, Object& object);
   // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
   Object parse_poly(const Token& keyword, int order);
+  // ---- triangles, polygons and meshes (meshes.cpp, mesh2.cpp) ----
+  struct MeshBuilder;
+  std::optional<Object> parse_declared_object_body();   // `shape { Declared_Id modifiers }`
+  Object parse_triangle(const Token& keyword, bool smooth);
+  Object parse_polygon(const Token& keyword);
+  Object parse_mesh(const Token& keyword);
+  void parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh);
+  std::array<std::int32_t, 3> parse_mesh_triangle_textures(MeshBuilder& mesh);
+  std::optional<Vec3> parse_inside_vector();
+  Object parse_mesh2(const Token& keyword);
+  std::size_t parse_mesh2_count(const Token& keyword, bool zero_allowed);
+  void check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count, const std::string& items);
+  void expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items);
+  std::vector<float> parse_mesh2_vectors(const Token& keyword, bool normals);
+  std::size_t parse_mesh2_uv_vectors(const Token& keyword);
+  std::array<std::uint32_t, 3> mesh2_index_triple(const Token& at, const Numeric& value, std::size_t limit,
+                                                  const std::string& what);
+  std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
+                                                 const std::string& what);
+  void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

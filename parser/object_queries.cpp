@@ -137,6 +137,13 @@ bool inside(const Object& o, Vec3 p, bool invert) {
       const double value = dot(n, p - on) / length(n);
       return invert ? value > -kInsideEpsilon : value < kInsideEpsilon;
     }
+    // A triangle or polygon has no inside, inverse or not (POV-Ray's Inside returns false, Invert does nothing).
+    bool operator()(const Triangle&) const { return false; }
+    bool operator()(const Polygon&) const { return false; }
+    bool operator()(const Mesh& m) const {
+      if (!m.data->inside_vector) return false;   // no inside_vector: no inside, inverse or not
+      return mesh_inside(*m.data, o.world_from_object, p) != invert;
+    }
     bool operator()(const Csg& c) const {
       // Difference = intersection with the later children inverted; an inverted CSG swaps any and all (§10).
       const bool all = (c.kind == CsgKind::intersection || c.kind == CsgKind::difference) != invert;
@@ -177,6 +184,35 @@ BBox bounding_box(const Object& o) {
       return is_identity(o.world_from_object) ? local : local.transformed(o.world_from_object);
     }
     BBox operator()(const Plane&) const { return BBox::huge(); }
+    // Triangles: the box of the world corners grown by EPSILON; polygons and meshes: the object-space box of
+    // their points carried to world space (POV-Ray's Compute_BBox, then Recompute_BBox for each transform).
+    BBox operator()(const Triangle& t) const {
+      Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
+      for (const Vec3& c : t.corners) {
+        lo = min(lo, o.world_from_object.point(c));
+        hi = max(hi, o.world_from_object.point(c));
+      }
+      const Vec3 e{kInsideEpsilon, kInsideEpsilon, kInsideEpsilon};
+      return BBox::from_min_max(lo - e, hi + e);
+    }
+    BBox operator()(const Polygon& poly) const {
+      Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
+      for (const auto& q : poly.points) {
+        const Vec3 w = (poly.world_from_plane * o.world_from_object).point({q[0], q[1], 0});
+        lo = min(lo, w);
+        hi = max(hi, w);
+      }
+      return BBox::from_min_max(lo, hi);
+    }
+    BBox operator()(const Mesh& m) const {
+      Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
+      for (std::uint32_t i = 0; i < m.data->vertices.size() / 3; ++i) {
+        lo = min(lo, m.data->vertex(i));
+        hi = max(hi, m.data->vertex(i));
+      }
+      const BBox local = BBox::from_min_max(lo, hi);
+      return is_identity(o.world_from_object) ? local : local.transformed(o.world_from_object);
+    }
     BBox operator()(const Csg& c) const {
       Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
       for (const auto& child : c.children) {

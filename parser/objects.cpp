@@ -34,6 +34,8 @@ void Interpreter::apply_transform(Object& object, const Matrix& m) {
     for (auto& light : csg->lights) apply_transform(light, m);
     return;
   }
+  if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
+    for (auto& texture : mesh->textures) transform_texture(texture, m);
   object.world_from_object = object.world_from_object * m;
 }
 
@@ -265,6 +267,11 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "cone") return parse_cone(t);
   if (k == "disc") return parse_disc(t);
   if (k == "torus") return parse_torus(t);
+  if (k == "triangle") return parse_triangle(t, false);
+  if (k == "smooth_triangle") return parse_triangle(t, true);
+  if (k == "polygon") return parse_polygon(t);
+  if (k == "mesh") return parse_mesh(t);
+  if (k == "mesh2") return parse_mesh2(t);
   static const std::string_view shapes[] = {
       "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
       "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",

@@ -43,7 +43,7 @@ struct Bounds {
   double surface_area() const;
 };
 
-enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly };
+enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly, triangle, polygon, mesh };
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is
@@ -67,6 +67,7 @@ struct Primitive {
   bool casts_shadow = true;      // false for no_shadow objects
   bool inverse = false;          // inside/outside flipped
   std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
+  std::uint32_t element_materials = 0;     // meshes: material of texture k of the mesh's list is this + k
 };
 
 // One intersection of a ray with a surface, with what shading needs to know about where it is.
@@ -76,6 +77,15 @@ struct SurfaceHit {
   std::uint32_t element = 0;          // which part of the leaf (a mesh's triangle index)
   double u = 0, v = 0;                // where on that part (barycentric coordinates on a triangle)
 };
+// The material(s) at a hit: one (the leaf's, or a mesh triangle's own), or three with weights for a mesh triangle
+// with a texture_list (POV-Ray shades with each texture and blends the colours by the barycentric weights).
+struct MaterialBlend {
+  std::uint32_t material[3] = {0, 0, 0};
+  double weight[3] = {1, 0, 0};
+  int count = 1;
+};
+MaterialBlend materials_at(const SurfaceHit& hit);
+
 // Scratch list of hits. Shapes with many roots (CSG, meshes) append to one, so that a ray allocates only while a
 // thread's buffer is still growing.
 using HitBuffer = std::vector<SurfaceHit>;

@@ -2,6 +2,7 @@
 #include "renderer/shapes/poly_shape.hpp"
 
 #include "renderer/shapes/quadric_shapes.hpp"
+#include "renderer/shapes/triangle_shapes.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -81,10 +82,19 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.transformed = shape->transformed;
     p.world_from_object = shape->world_from_object;
     p.object_from_world = shape->object_from_world;
-  } else if (const auto* poly = std::get_if<Poly>(&o.shape)) {
-    const Primitive shape = make_poly(*poly, o.world_from_object);
+  } else if (const auto* polynomial = std::get_if<Poly>(&o.shape)) {
+    const Primitive shape = make_poly(*polynomial, o.world_from_object);
     p.type = shape.type;
     p.data = shape.data;
+  } else if (const auto* tri = std::get_if<Triangle>(&o.shape)) {
+    p.type = ShapeType::triangle;
+    shapes::set_up_triangle(p, *tri);
+  } else if (const auto* poly = std::get_if<Polygon>(&o.shape)) {
+    p.type = ShapeType::polygon;
+    shapes::set_up_polygon(p, *poly);
+  } else if (const auto* mesh = std::get_if<Mesh>(&o.shape)) {
+    p.type = ShapeType::mesh;
+    shapes::set_up_mesh(p, *mesh);
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }
@@ -103,6 +113,13 @@ class MaterialTable {
     if (!o.interior) shared_.emplace(o.texture.get(), index);
     return index;
   }
+  // A mesh placement's own textures, as consecutive materials (the index of the first is returned).
+  std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures,
+                       const std::optional<Interior>& interior) {
+    const auto first = static_cast<std::uint32_t>(materials_.size());
+    for (const auto& t : textures) materials_.push_back(make_material(*t, interior));
+    return first;
+  }
 
  private:
   std::vector<Material>& materials_;
@@ -119,6 +136,8 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
     return;
   }
   add_primitives(o, materials.material_for(o), object_index, out);
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
+    out.back().element_materials = materials.append(mesh->textures, o.interior);
 }
 }  // namespace
 

@@ -140,13 +140,27 @@ bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
 }  // namespace
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
-  const Primitive& prim = *hit.leaf;
+  const MaterialBlend blend = materials_at(hit);
+  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], level, weight, state);
+  // A mesh triangle with a texture_list: each texture shaded whole, the results blended by their weights; weights
+  // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
+  Radiance out;
+  for (int k = 0; k < blend.count; ++k) {
+    if (blend.weight[k] < scene_.settings.adc_bailout) continue;
+    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], level, weight, state);
+    out.colour += r.colour * blend.weight[k];
+    out.transmit += r.transmit * blend.weight[k];
+  }
+  return out;
+}
+
+Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level,
+                                double weight, const RayState& state) {
   const Vec3 point = ray.origin + ray.direction * hit.t;
   const Vec3 geometric = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
   const Vec3 normal = raw_normal;   // no normal perturbation yet: every layer's normal is the raw one
-  const Material& material = scene_.materials[prim.material];
   const InteriorRef self = interior_of(hit);
 
   // Layers top first; each is weighted by what the layers above let through (§2 "Layers"). Their reflections are
@@ -333,27 +347,35 @@ bool Tracer::cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Ve
   return !all_below(colour, tolerance::epsilon);
 }
 
+// A transparent object filters at every surface crossing, through all its layers (§3); a texture_list triangle by the
+// weighted sum of its textures' filters (an opaque texture among them passes nothing).
+Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque) {
+  const MaterialBlend blend = materials_at(hit);
+  opaque = blend.count == 1 && scene_.materials[blend.material[0]].opaque;
+  if (opaque) return {0, 0, 0};
+  Rgb through{0, 0, 0};
+  for (int k = 0; k < blend.count; ++k) {
+    const Material& m = scene_.materials[blend.material[k]];
+    if (m.opaque) continue;
+    Rgb layers{1, 1, 1};
+    for (const RenderLayer& layer : m.layers) layers = mul(layers, pass_through(evaluate_pigment(layer.pigment, at)));
+    through += layers * blend.weight[k];
+  }
+  return through;
+}
+
 Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state) {
   if (!scene_.any_casts_shadow) return {1, 1, 1};
   ++counts_.shadow;
   Rgb f{1, 1, 1};
   // Hits count only with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE).
   const Ray ray{point, to_light};
-  // A transparent object filters at every surface crossing, through all its layers (§3).
-  auto filter_at = [&](const SurfaceHit& hit, const Material& m) {
-    const Vec3 at = point + to_light * hit.t;
-    for (const RenderLayer& layer : m.layers) f = mul(f, pass_through(evaluate_pigment(layer.pigment, at)));
-  };
   if (!scene_.any_shadow_fade) {
     scene_.accelerator.for_each_shadow_hit(
         ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-          const Material& m = scene_.materials[hit.leaf->material];
-          if (m.opaque) {
-            f = {0, 0, 0};
-            return false;
-          }
-          filter_at(hit, m);
-          return !all_below(f, tolerance::epsilon);
+          bool opaque = false;
+          f = mul(f, filter_through(hit, point + to_light * hit.t, opaque));
+          return !opaque && !all_below(f, tolerance::epsilon);
         });
     return f;
   }
@@ -364,7 +386,8 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayS
   bool blocked = false;
   scene_.accelerator.for_each_shadow_hit(
       ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-        blocked = scene_.materials[hit.leaf->material].opaque;
+        const MaterialBlend blend = materials_at(hit);
+        blocked = blend.count == 1 && scene_.materials[blend.material[0]].opaque;
         if (!blocked) hits.push_back(hit);
         return !blocked;
       });
@@ -373,10 +396,10 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayS
   InteriorList in = state.interiors;
   double previous = 0;
   for (const SurfaceHit& hit : hits) {
-    const Material& m = scene_.materials[hit.leaf->material];
     const InteriorRef self = interior_of(hit);
-    filter_at(hit, m);
-    if (in.contains(self)) f = mul(f, shadow_fade(m.interior, hit.t - previous));
+    bool opaque = false;
+    f = mul(f, filter_through(hit, point + to_light * hit.t, opaque));
+    if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, hit.t - previous));
     if (in.empty() || !in.remove(self)) in.append(self);
     previous = hit.t;
     if (all_below(f, tolerance::epsilon)) break;

@@ -55,6 +55,11 @@ class Tracer {
 
   Radiance trace(const Ray& ray, int level, double weight, const RayState& state);
   Radiance shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state);
+  Radiance shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level, double weight,
+                          const RayState& state);
+  // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
+  // (S·f + t), or for a texture_list triangle the weighted sum over its textures; `opaque` when it stops it.
+  Rgb filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque);
   // The transmitted ray (refracted, continued through ior 1, or totally reflected) of a hit, with interior fade.
   // Returns true on total internal reflection.
   bool transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 normal, Vec3 raw_normal, int level,

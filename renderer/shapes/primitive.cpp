@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/triangle_shapes.hpp"
 
 namespace povtrace::render {
 
@@ -75,16 +76,21 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
     case ShapeType::poly: return shapes::intersect_poly(p, ray);
+    case ShapeType::triangle: return shapes::intersect_triangle(p, ray);
+    case ShapeType::polygon: return shapes::intersect_polygon(p, ray);
+    case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
   }
   return {};
 }
 
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+  if (p.type == ShapeType::mesh) return shapes::collect_mesh_hits(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
 
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+  if (p.type == ShapeType::mesh) return shapes::nearest_mesh_hit(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -95,7 +101,10 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
   return false;
 }
 
-Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) { return surface_normal(*hit.leaf, world_point); }
+Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
+  if (hit.leaf->type == ShapeType::mesh) return shapes::mesh_hit_normal(hit);
+  return surface_normal(*hit.leaf, world_point);
+}
 
 Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
   switch (p.type) {
@@ -107,6 +116,9 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::disc_normal(p, world_point);
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
     case ShapeType::poly: return shapes::poly_normal(p, world_point);
+    case ShapeType::triangle: return shapes::triangle_normal(p, world_point);
+    case ShapeType::polygon: return shapes::polygon_normal(p, world_point);
+    case ShapeType::mesh: return shapes::mesh_normal(p, world_point);
   }
   return {};
 }
@@ -121,6 +133,9 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::inside_disc(p, world_point);
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
     case ShapeType::poly: return shapes::inside_poly(p, world_point);
+    case ShapeType::triangle: return false;   // POV-Ray: never inside, inverse or not
+    case ShapeType::polygon: return false;
+    case ShapeType::mesh: return shapes::inside_mesh(p, world_point);
   }
   return false;
 }
@@ -149,6 +164,9 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
     case ShapeType::poly: return shapes::poly_world_bounds(p);
+    case ShapeType::triangle: return shapes::triangle_world_bounds(p);
+    case ShapeType::polygon: return to_world(p, shapes::polygon_object_bounds(p));
+    case ShapeType::mesh: return to_world(p, shapes::mesh_object_bounds(p));
   }
   return {};
 }

@@ -1,0 +1,170 @@
+// Build of the per-mesh triangle BVH (triangle_bvh.hpp): top-down binned SAH (16 bins per axis, leaves of at most
+// 4 triangles), switching to object-median splits below depth 32 so the depth stays under 64 for any input. Build
+// temporaries are single precision (36 bytes per triangle, freed after the build).
+#include "renderer/accel/triangle_bvh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace povtrace::render {
+
+namespace {
+constexpr int bin_count = 16;
+constexpr std::uint32_t max_leaf_size = 4;
+constexpr int sah_depth_limit = 32;
+
+struct Box3f {
+  std::array<float, 3> lo{std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::infinity()};
+  std::array<float, 3> hi{-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()};
+  void extend(const Box3f& b) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], b.lo[i]);
+      hi[i] = std::max(hi[i], b.hi[i]);
+    }
+  }
+  void extend(const std::array<float, 3>& p) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  }
+  double area() const {
+    if (lo[0] > hi[0]) return 0.0;
+    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
+    return 2.0 * (x * y + y * z + z * x);
+  }
+};
+
+class Builder {
+ public:
+  Builder(const std::vector<float>& vertices, const std::vector<std::uint32_t>& faces,
+          std::vector<TriangleBvh::Node>& nodes, std::vector<std::uint32_t>& order)
+      : nodes_(nodes), order_(order) {
+    const std::size_t n = faces.size() / 3;
+    boxes_.resize(n);
+    centroids_.resize(n);
+    order_.resize(n);
+    for (std::size_t t = 0; t < n; ++t) {
+      Box3f b;
+      for (int k = 0; k < 3; ++k) {
+        const float* v = &vertices[3 * std::size_t(faces[3 * t + k])];
+        b.extend(std::array<float, 3>{v[0], v[1], v[2]});
+      }
+      boxes_[t] = b;
+      for (int i = 0; i < 3; ++i) centroids_[t][i] = 0.5f * (b.lo[i] + b.hi[i]);
+      order_[t] = static_cast<std::uint32_t>(t);
+    }
+    nodes_.reserve(2 * n / max_leaf_size + 2);
+    if (n > 0) build(0, static_cast<std::uint32_t>(n), 0);
+  }
+
+ private:
+  std::uint32_t build(std::uint32_t begin, std::uint32_t end, int depth) {
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    Box3f box, centroid_box;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      box.extend(boxes_[order_[k]]);
+      centroid_box.extend(centroids_[order_[k]]);
+    }
+    for (int i = 0; i < 3; ++i) {
+      nodes_[index].lo[i] = box.lo[i];
+      nodes_[index].hi[i] = box.hi[i];
+    }
+    const std::uint32_t count = end - begin;
+    if (count <= max_leaf_size) {
+      nodes_[index].first = begin;
+      nodes_[index].count = static_cast<std::uint16_t>(count);
+      return index;
+    }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (centroid_box.hi[a] - centroid_box.lo[a] > centroid_box.hi[axis] - centroid_box.lo[axis]) axis = a;
+    std::uint32_t mid = 0;
+    if (!(depth < sah_depth_limit && sah_split(begin, end, centroid_box, axis, mid))) {
+      mid = begin + count / 2;
+      std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                       [&](std::uint32_t l, std::uint32_t r) { return centroids_[l][axis] < centroids_[r][axis]; });
+    }
+    nodes_[index].axis = static_cast<std::uint16_t>(axis);
+    build(begin, mid, depth + 1);   // the left child lands at index + 1
+    const std::uint32_t right = build(mid, end, depth + 1);
+    nodes_[index].first = right;
+    return index;
+  }
+
+  int bin_of(std::uint32_t t, int axis, const Box3f& centroid_box) const {
+    const double extent = double(centroid_box.hi[axis]) - centroid_box.lo[axis];
+    const double x = (double(centroids_[t][axis]) - centroid_box.lo[axis]) * (bin_count / extent);
+    return std::clamp(static_cast<int>(x), 0, bin_count - 1);
+  }
+
+  // The cheapest binned SAH split over the three axes; partitions order_ and sets mid/axis. False when no split
+  // separates the triangles.
+  bool sah_split(std::uint32_t begin, std::uint32_t end, const Box3f& centroid_box, int& axis, std::uint32_t& mid) {
+    double best_cost = std::numeric_limits<double>::infinity();
+    int best_axis = -1, best_split = -1;
+    for (int a = 0; a < 3; ++a) {
+      if (!(centroid_box.hi[a] > centroid_box.lo[a])) continue;
+      Box3f bins[bin_count];
+      std::uint32_t counts[bin_count] = {};
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const int b = bin_of(order_[k], a, centroid_box);
+        ++counts[b];
+        bins[b].extend(boxes_[order_[k]]);
+      }
+      double right_area[bin_count];
+      std::uint32_t right_count[bin_count];
+      Box3f acc;
+      std::uint32_t acc_count = 0;
+      for (int s = bin_count - 1; s > 0; --s) {
+        acc.extend(bins[s]);
+        acc_count += counts[s];
+        right_area[s] = acc.area();
+        right_count[s] = acc_count;
+      }
+      acc = Box3f{};
+      acc_count = 0;
+      for (int s = 0; s < bin_count - 1; ++s) {
+        acc.extend(bins[s]);
+        acc_count += counts[s];
+        if (acc_count == 0 || right_count[s + 1] == 0) continue;
+        const double cost = acc.area() * acc_count + right_area[s + 1] * right_count[s + 1];
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_axis = a;
+          best_split = s;
+        }
+      }
+    }
+    if (best_axis < 0) return false;
+    auto* split = std::partition(order_.data() + begin, order_.data() + end, [&](std::uint32_t t) {
+      return bin_of(t, best_axis, centroid_box) <= best_split;
+    });
+    mid = static_cast<std::uint32_t>(split - order_.data());
+    axis = best_axis;
+    return mid > begin && mid < end;
+  }
+
+  std::vector<TriangleBvh::Node>& nodes_;
+  std::vector<std::uint32_t>& order_;
+  std::vector<Box3f> boxes_;
+  std::vector<std::array<float, 3>> centroids_;
+};
+}  // namespace
+
+TriangleBvh::TriangleBvh(const std::vector<float>& vertices, const std::vector<std::uint32_t>& faces) {
+  Builder(vertices, faces, nodes_, order_);
+  nodes_.shrink_to_fit();
+}
+
+Bounds TriangleBvh::bounds() const {
+  if (nodes_.empty()) return {};
+  const Node& root = nodes_[0];
+  return Bounds{{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+}
+
+}  // namespace povtrace::render

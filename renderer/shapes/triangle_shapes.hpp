@@ -1,0 +1,55 @@
+// The triangle-based shapes' render-side data and entry points (triangle.cpp, polygon.cpp, mesh.cpp): what
+// render_scene.cpp calls to turn a description into a Primitive, and what primitive.cpp dispatches to.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "renderer/accel/triangle_bvh.hpp"
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render::shapes {
+
+// triangle / smooth_triangle, in world space (POV-Ray moves a triangle's vertices by its transforms).
+struct TriangleData : ShapeData {
+  std::array<Vec3, 3> corners;
+  std::array<Vec3, 3> normals;   // smooth: the world-space vertex normals
+  bool smooth = false;
+  bool degenerate = false;       // never hit
+};
+
+// polygon: its points in its own plane (z = 0 of the primitive's object space).
+struct PolygonData : ShapeData {
+  std::vector<std::array<double, 2>> points;
+  bool degenerate = false;       // never hit
+};
+
+// mesh / mesh2: the parser's arrays and a BVH over them, in object space; one per mesh, shared by every placement.
+struct MeshShape : ShapeData {
+  std::shared_ptr<const MeshData> data;
+  TriangleBvh bvh;
+};
+
+// Fill in a primitive whose common fields (material, transform, flags) are already set.
+void set_up_triangle(Primitive& p, const Triangle& triangle);
+void set_up_polygon(Primitive& p, const Polygon& polygon);
+void set_up_mesh(Primitive& p, const Mesh& mesh);   // shares the MeshShape of every placement of the same mesh
+
+Intersections intersect_triangle(const Primitive& p, const Ray& ray);
+Vec3 triangle_normal(const Primitive& p, Vec3 world_point);
+Bounds triangle_world_bounds(const Primitive& p);
+
+Intersections intersect_polygon(const Primitive& p, const Ray& ray);
+Vec3 polygon_normal(const Primitive& p, Vec3 world_point);
+Bounds polygon_object_bounds(const Primitive& p);
+
+void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
+bool nearest_mesh_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+Vec3 mesh_hit_normal(const SurfaceHit& hit);
+Vec3 mesh_normal(const Primitive& p, Vec3 world_point);
+bool inside_mesh(const Primitive& p, Vec3 world_point);
+Bounds mesh_object_bounds(const Primitive& p);
+
+}  // namespace povtrace::render::shapes
