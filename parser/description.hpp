@@ -169,7 +169,10 @@ struct Poly {
   bool sturm = false;
 };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh>;
+// quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
+struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric>;
 
 struct Object {
   Shape shape;

@@ -258,6 +258,7 @@ class Interpreter {
   bool try_sturm_modifier(const Token& t, Object& object);
   // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
   Object parse_poly(const Token& keyword, int order);
+  Object parse_quadric(const Token& keyword);
   // ---- triangles, polygons and meshes (meshes.cpp, mesh2.cpp) ----
   struct MeshBuilder;
   std::optional<Object> parse_declared_object_body();   // `shape { Declared_Id modifiers }`

@@ -109,6 +109,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
   if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Poly>(o.shape)) return std::string("the shape 'poly'");
+  if (std::holds_alternative<Quadric>(o.shape)) return std::string("the shape 'quadric'");
   return std::nullopt;
 }
 
@@ -161,6 +162,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Disc&) const { throw std::logic_error("inside() of a disc"); }
     bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
     bool operator()(const Poly&) const { throw std::logic_error("inside() of a poly"); }
+    bool operator()(const Quadric&) const { throw std::logic_error("inside() of a quadric"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -232,6 +234,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
     BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
     BBox operator()(const Poly&) const { throw std::logic_error("extent of a poly"); }
+    BBox operator()(const Quadric&) const { throw std::logic_error("extent of a quadric"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -257,6 +257,7 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "object") return parse_object_block(t);
   if (k == "light_source") return parse_light(t);
   if (k == "poly") return parse_poly(t, 0);
+  if (k == "quadric") return parse_quadric(t);
   if (k == "cubic") return parse_poly(t, 3);
   if (k == "quartic") return parse_poly(t, 4);
   if (k == "union") return parse_csg(t, CsgKind::union_);
@@ -275,7 +276,7 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   static const std::string_view shapes[] = {
       "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
       "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",
-      "sphere_sweep", "bicubic_patch", "quadric", "parametric", "ovus", "lemon",
+      "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)
     if (k == s) {

@@ -1,4 +1,4 @@
-// poly, cubic and quartic (POV-Ray's polynomial surfaces). Facts from POV-Ray 3.7's parser (source/backend/parser/
+// poly, cubic, quartic and quadric (POV-Ray's polynomial surfaces). Facts from POV-Ray 3.7's parser (source/backend/parser/
 // parse.cpp, Parse_Poly and Parse_Coeffs, 3.7-stable):
 // - `poly { N, <c…> }` reads the order first (2…35, else "Order of poly is out of range"); `cubic` and `quartic` are
 //   orders 3 and 4. Then exactly (N+1)(N+2)(N+3)/6 coefficients inside < >, commas optional.
@@ -46,6 +46,25 @@ Object Interpreter::parse_poly(const Token& keyword, int order) {
   if (order > kMaxRenderedOrder)
     o.unsupported = UnsupportedFeature{"a poly of order " + std::to_string(order) + " (povtrace renders orders 2 to 4)",
                                        keyword.loc};
+  parse_object_modifiers(o);
+  return o;
+}
+
+// quadric { <A,B,C>, <D,E,F>, <G,H,I>, J } (POV-Ray's Parse_Quadric): square, mixed and linear terms, then the
+// constant; commas optional.
+Object Interpreter::parse_quadric(const Token& keyword) {
+  expect("{", " after 'quadric'");
+  Object o;
+  o.loc = keyword.loc;
+  Quadric q;
+  q.square = parse_vector();
+  accept(",");
+  q.mixed = parse_vector();
+  accept(",");
+  q.linear = parse_vector();
+  accept(",");
+  q.constant = parse_float();
+  o.shape = q;
   parse_object_modifiers(o);
   return o;
 }

@@ -82,6 +82,13 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.transformed = shape->transformed;
     p.world_from_object = shape->world_from_object;
     p.object_from_world = shape->object_from_world;
+  } else if (const auto* quadric = std::get_if<Quadric>(&o.shape)) {
+    // Kept in world space, as POV-Ray keeps it: the transforms are in the coefficients.
+    const Primitive shape = make_quadric(*quadric, o.world_from_object);
+    p.type = shape.type;
+    p.data = shape.data;
+    p.transformed = false;
+    p.world_from_object = Matrix::identity();
   } else if (const auto* polynomial = std::get_if<Poly>(&o.shape)) {
     const Primitive shape = make_poly(*polynomial, o.world_from_object);
     p.type = shape.type;

@@ -52,6 +52,11 @@ Intersections intersect_poly(const Primitive& p, const Ray& ray);
 Vec3 poly_normal(const Primitive& p, Vec3 world_point);
 bool inside_poly(const Primitive& p, Vec3 world_point);
 Bounds poly_world_bounds(const Primitive& p);
+
+Intersections intersect_quadric(const Primitive& p, const Ray& ray);
+Vec3 quadric_normal(const Primitive& p, Vec3 world_point);
+bool inside_quadric(const Primitive& p, Vec3 world_point);
+Bounds quadric_world_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -76,6 +81,7 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
     case ShapeType::poly: return shapes::intersect_poly(p, ray);
+    case ShapeType::quadric: return shapes::intersect_quadric(p, ray);
     case ShapeType::triangle: return shapes::intersect_triangle(p, ray);
     case ShapeType::polygon: return shapes::intersect_polygon(p, ray);
     case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
@@ -116,6 +122,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::disc_normal(p, world_point);
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
     case ShapeType::poly: return shapes::poly_normal(p, world_point);
+    case ShapeType::quadric: return shapes::quadric_normal(p, world_point);
     case ShapeType::triangle: return shapes::triangle_normal(p, world_point);
     case ShapeType::polygon: return shapes::polygon_normal(p, world_point);
     case ShapeType::mesh: return shapes::mesh_normal(p, world_point);
@@ -133,6 +140,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::inside_disc(p, world_point);
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
     case ShapeType::poly: return shapes::inside_poly(p, world_point);
+    case ShapeType::quadric: return shapes::inside_quadric(p, world_point);
     case ShapeType::triangle: return false;   // POV-Ray: never inside, inverse or not
     case ShapeType::polygon: return false;
     case ShapeType::mesh: return shapes::inside_mesh(p, world_point);
@@ -164,6 +172,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
     case ShapeType::poly: return shapes::poly_world_bounds(p);
+    case ShapeType::quadric: return shapes::quadric_world_bounds(p);
     case ShapeType::triangle: return shapes::triangle_world_bounds(p);
     case ShapeType::polygon: return to_world(p, shapes::polygon_object_bounds(p));
     case ShapeType::mesh: return to_world(p, shapes::mesh_object_bounds(p));

@@ -122,4 +122,44 @@ TEST(Poly, RootsCloserThanTheDepthToleranceAreDropped) {
   EXPECT_EQ(intersect_all(p, Ray{{0, 0, -1 - 2e-4}, {0, 0, 1}}).count, 2);
 }
 
+TEST(Quadric, TransformedQuadricMatchesTheTransformedSphere) {
+  // x² + y² + z² − 1 = 0 scaled, rotated and moved: the transforms are folded into the coefficients, and the result
+  // must agree with a sphere primitive carrying the same transform (an ellipsoid).
+  Matrix m = Matrix::scaling({1.5, 0.5, 0.8}) * Matrix::rotation({20, 35, -10}) * Matrix::translation({1, -2, 3});
+  const Primitive q = make_quadric(Quadric{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}, -1}, m);
+  const Primitive s = transformed(sphere({0, 0, 0}, 1), m);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int hits = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 o = Vec3{1, -2, 3} + Vec3{u(rng), u(rng), u(rng)} * 5.0;
+    const Vec3 aim = Vec3{1, -2, 3} + Vec3{u(rng), u(rng), u(rng)} * 1.2;
+    const Ray r{o, normalize(aim - o)};
+    const Intersections a = intersect_all(q, r), b = intersect_all(s, r);
+    std::vector<double> ta, tb;
+    for (int i = 0; i < a.count; ++i) if (a.t[i] > 1e-3) ta.push_back(a.t[i]);
+    for (int i = 0; i < b.count; ++i) if (b.t[i] > 1e-3) tb.push_back(b.t[i]);
+    ASSERT_EQ(ta.size(), tb.size()) << k;
+    for (std::size_t i = 0; i < ta.size(); ++i) {
+      EXPECT_NEAR(ta[i], tb[i], 1e-9) << k;
+      const Vec3 at = r.origin + r.direction * ta[i];
+      EXPECT_NEAR(dot(surface_normal(q, at), surface_normal(s, at)), 1.0, 1e-9) << k;
+      ++hits;
+    }
+    EXPECT_EQ(inside(q, o), inside(s, o)) << k;
+  }
+  EXPECT_GT(hits, 1500);   // coverage: most of the 2000 rays cross the flattened ellipsoid
+}
+
+TEST(Quadric, LinearQuadricIsAPlaneWithItsOwnInsideRule) {
+  // y − 1 = 0 (no quadratic terms): one root; the surface itself counts as inside (value <= 0).
+  const Primitive q = make_quadric(Quadric{{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, -1}, Matrix::identity());
+  const Intersections xs = intersect_all(q, Ray{{0, 5, 0}, {0, -1, 0}});
+  ASSERT_EQ(xs.count, 1);
+  EXPECT_NEAR(xs.t[0], 4.0, 1e-12);
+  EXPECT_TRUE(inside(q, {0, 1, 0}));
+  EXPECT_TRUE(inside(q, {0, 0, 0}));
+  EXPECT_FALSE(inside(q, {0, 2, 0}));
+}
+
 }  // namespace
