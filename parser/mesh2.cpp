@@ -78,7 +78,7 @@ std::size_t Interpreter::parse_mesh2_uv_vectors(const Token& keyword) {
   const std::size_t n = parse_mesh2_count(keyword, true);
   for (std::size_t i = 0; i < n; ++i) {
     check_mesh2_item(keyword, i, n, "vector");
-    parse_expression();
+    parse_additive();   // parameter level, as POV-Ray's Parse_UV_Vect: `<1, 1> <-1, 1>` are two vectors, not a comparison
     accept(",");
   }
   expect_mesh2_section_end(keyword, n, "vector");
@@ -108,7 +108,7 @@ std::vector<std::uint32_t> Interpreter::parse_mesh2_indices(const Token& keyword
   for (std::size_t i = 0; i < count; ++i) {
     check_mesh2_item(keyword, i, count, "index triple");
     const Token at = peek();
-    const auto triple = mesh2_index_triple(at, parse_expression(), limit, what);
+    const auto triple = mesh2_index_triple(at, parse_additive(), limit, what);
     out.insert(out.end(), triple.begin(), triple.end());
     accept(",");
   }
@@ -127,7 +127,7 @@ void Interpreter::parse_mesh2_faces(const Token& keyword, std::size_t vertex_cou
   for (std::size_t i = 0; i < n; ++i) {
     if (!pending) check_mesh2_item(keyword, i, n, "face");
     const Token at = pending ? pending_at : peek();
-    const Numeric face = pending ? *pending : parse_expression();
+    const Numeric face = pending ? *pending : parse_additive();
     pending.reset();
     const auto triple = mesh2_index_triple(at, face, vertex_count, "face_indices vertex");
     data.faces.insert(data.faces.end(), triple.begin(), triple.end());
@@ -136,7 +136,7 @@ void Interpreter::parse_mesh2_faces(const Token& keyword, std::size_t vertex_cou
     for (int k = 0; k < 3; ++k) {
       const Token t = peek();
       if (t.is("<") || t.is("}")) break;
-      const Numeric x = parse_expression();
+      const Numeric x = parse_additive();
       if (x.terms != 1) {
         pending = x;
         pending_at = t;

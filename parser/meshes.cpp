@@ -311,7 +311,7 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   if (accept("uv_vectors")) {
     for (int k = 0; k < 3; ++k) {
       if (k > 0) accept(",");
-      parse_expression();
+      parse_additive();
     }
   }
   const std::array<std::int32_t, 3> tex = parse_mesh_triangle_textures(mesh);
