@@ -10,7 +10,9 @@ echo "|---|---:|---:|---:|---:|"
 cd "$root/scenes"
 for ref in "$root"/reference/*.exr; do
   name=$(basename "$ref" .exr)
-  if ! "$root/build/povtrace" -D -A +W320 +H240 +FE +O"$out/$name.exr" "$name.pov" 2>"$out/$name.log"; then
+  # The scene's own extra switches ("// switches: …"), as the reference was made (reference/make_references.sh).
+  read -r -a extra <<< "$(grep -m1 '^// switches:' "$name.pov" | sed 's|^// switches:||')"
+  if ! "$root/build/povtrace" -D -A +W320 +H240 +FE "${extra[@]}" +O"$out/$name.exr" "$name.pov" 2>"$out/$name.log"; then
     echo "| $name | render failed: $(head -1 "$out/$name.log") | | | |"
     continue
   fi
