@@ -134,6 +134,15 @@ void Interpreter::parse_default(const Token& keyword) {
   }
 }
 
+bool Interpreter::numeric_ahead() {
+  const LexedToken* k = plain_ahead();
+  if (!k) return false;
+  if (k->kind() == TokenKind::number || k->kind() == TokenKind::symbol) return true;
+  if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
+  const Value* v = symbols_.find(k->payload);
+  return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
+}
+
 std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
   // and none of the forms below would take them.
@@ -180,7 +189,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "array") return parse_array_declaration(first);
   if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
-      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) {
+      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
     if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
     return *v;
   }
