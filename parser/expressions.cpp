@@ -20,14 +20,15 @@ constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| �
 enum class Comparison { none, less, greater, less_equal, greater_equal, equal, not_equal };
 
 Comparison comparison_of(TokenKind kind, std::string_view s) {
-  if (kind != TokenKind::symbol) return Comparison::none;
-  if (s == "<") return Comparison::less;
-  if (s == ">") return Comparison::greater;
-  if (s == "<=") return Comparison::less_equal;
-  if (s == ">=") return Comparison::greater_equal;
-  if (s == "=") return Comparison::equal;
-  if (s == "!=") return Comparison::not_equal;
-  return Comparison::none;
+  // By the bytes, not by six string comparisons: asked after every operand at the full level.
+  if (kind != TokenKind::symbol || s.empty() || s.size() > 2) return Comparison::none;
+  const char a = s[0];
+  if (s.size() == 1)
+    return a == '<' ? Comparison::less : a == '>' ? Comparison::greater : a == '=' ? Comparison::equal
+                                                                                   : Comparison::none;
+  if (s[1] != '=') return Comparison::none;
+  return a == '<' ? Comparison::less_equal : a == '>' ? Comparison::greater_equal
+                                           : a == '!' ? Comparison::not_equal : Comparison::none;
 }
 
 // '=' and its kin compare with a tolerance (§5).

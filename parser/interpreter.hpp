@@ -81,7 +81,9 @@ class Interpreter {
     TokenKind kind;
     std::string_view text;
     bool is(std::string_view s) const {
-      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text == s;
+      // Length and first byte first, as Token::is: asked after every operand, mostly of one-byte symbols.
+      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text.size() == s.size() &&
+             (text.empty() || text[0] == s[0]) && text == s;
     }
   };
   Ahead raw_ahead();

@@ -242,7 +242,7 @@ Interpreter::Ahead Interpreter::raw_ahead() {
     const Frame& f = frames_.back();
     const LexedToken& k = lexed(*f.tokens, f.index);
     const std::string_view text(f.file->text.data() + k.offset, k.length());
-    if (k.kind() != TokenKind::end_of_input && text != "#") return {k.kind(), text};
+    if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
   }
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
