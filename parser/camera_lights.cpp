@@ -64,8 +64,8 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   bool spherical = false;
   Token t = next();
   if (const Value* v = lookup(t)) {
-    if (v && std::holds_alternative<Camera>(*v)) {
-      in.camera = std::get<Camera>(*v);
+    if (v && std::holds_alternative<Boxed<Camera>>(*v)) {
+      in.camera = *std::get<Boxed<Camera>>(*v);
       t = next();
     }
   }

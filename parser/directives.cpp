@@ -108,12 +108,20 @@ void Interpreter::directive_declare(const Token& at, bool local) {
     if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v))
       return directive_declare_element(name_token, local);
   }
-  Token eq = next();
-  if (!eq.is("=")) fail_expected(eq, "'=' after #declare " + name);
-  Token first = next();
-  auto value = try_parse_rvalue(first);
-  if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
-                                   "interior or camera) for " + name);
+  if (plain_symbol(plain_ahead(), '=')) {
+    consume_plain();
+  } else if (Token eq = next(); !eq.is("=")) {
+    fail_expected(eq, "'=' after #declare " + name);
+  }
+  std::optional<Value> value;
+  if (numeric_ahead()) {
+    value = Value(parse_additive().stored());   // what try_parse_rvalue() makes of it, without a Token
+  } else {
+    Token first = next();
+    value = try_parse_rvalue(first);
+    if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
+                                     "interior or camera) for " + name);
+  }
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
   check_function_redeclaration(name_token, local, *value);
@@ -121,7 +129,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   if (local) symbols_.local(id, std::move(*value)); else symbols_.declare(id, std::move(*value));
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
-  if (raw_ahead().is(";")) next();
+  if (raw_ahead().is(";")) skip_ahead();
   else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
   (void)at;
 }
@@ -176,9 +184,9 @@ void Interpreter::directive_include(const Token& at) {
 }
 
 bool Interpreter::condition_in_parens() {
-  expect("(", " (conditions are written in parentheses)");
+  skip_expected('(', " (conditions are written in parentheses)");
   const double v = parse_float_full();
-  expect(")", " closing the condition");
+  skip_expected(')', " closing the condition");
   return std::fabs(v) > kConditionEpsilon;
 }
 
@@ -422,6 +430,7 @@ void Interpreter::directive_macro(const Token& at) {
     if (t.kind != TokenKind::identifier || is_reserved_word(t.text))
       fail_expected(t, "a parameter name or ')' in the definition of macro " + name);
     m.parameters.emplace_back(t.text);
+    m.parameter_ids.push_back(symbols_.intern(t.text));
     t = raw();
     if (t.is(",")) t = raw();
   }

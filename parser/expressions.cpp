@@ -20,14 +20,15 @@ constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| �
 enum class Comparison { none, less, greater, less_equal, greater_equal, equal, not_equal };
 
 Comparison comparison_of(TokenKind kind, std::string_view s) {
-  if (kind != TokenKind::symbol) return Comparison::none;
-  if (s == "<") return Comparison::less;
-  if (s == ">") return Comparison::greater;
-  if (s == "<=") return Comparison::less_equal;
-  if (s == ">=") return Comparison::greater_equal;
-  if (s == "=") return Comparison::equal;
-  if (s == "!=") return Comparison::not_equal;
-  return Comparison::none;
+  // By the bytes, not by six string comparisons: asked after every operand at the full level.
+  if (kind != TokenKind::symbol || s.empty() || s.size() > 2) return Comparison::none;
+  const char a = s[0];
+  if (s.size() == 1)
+    return a == '<' ? Comparison::less : a == '>' ? Comparison::greater : a == '=' ? Comparison::equal
+                                                                                   : Comparison::none;
+  if (s[1] != '=') return Comparison::none;
+  return a == '<' ? Comparison::less_equal : a == '>' ? Comparison::greater_equal
+                                           : a == '!' ? Comparison::not_equal : Comparison::none;
 }
 
 // '=' and its kin compare with a tolerance (§5).
@@ -76,20 +77,40 @@ double Interpreter::to_float(const Numeric& n, const Token& at) const {
   return n.v[0];
 }
 
+// The first token of an expression, for its error messages: where the token ahead is plain it is made only if
+// an error needs it (peek() would make it, and push it back, for every expression).
+class Interpreter::ExpressionStart {
+ public:
+  explicit ExpressionStart(Interpreter& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
+    if (kept_) tokens_ = in.frames_.back().tokens;
+    else token_ = in.peek();
+  }
+  Token token() const { return kept_ ? in_.make_token(*tokens_, *kept_) : token_; }
+
+ private:
+  Interpreter& in_;
+  const FileTokens* tokens_;
+  const LexedToken* kept_;   // chunked storage: stays where it is while the expression is read
+  Token token_;
+};
+
 double Interpreter::parse_float() {
-  Token start = peek();
-  return to_float(parse_additive(), start);
+  const ExpressionStart start(*this);
+  const Numeric n = parse_additive();
+  return n.terms == 1 ? n.v[0] : to_float(n, start.token());
 }
 
 double Interpreter::parse_float_full() {
-  Token start = peek();
-  return to_float(parse_expression(), start);
+  const ExpressionStart start(*this);
+  const Numeric n = parse_expression();
+  return n.terms == 1 ? n.v[0] : to_float(n, start.token());
 }
 
 Vec3 Interpreter::parse_vector() {
-  Token start = peek();
+  const ExpressionStart start(*this);
   Numeric n = parse_additive();
-  if (n.terms > 3 && !n.colour) fail_at(start, "expected a 3-D vector, found a " + value_type_name(Value(n)));
+  if (n.terms > 3 && !n.colour)
+    fail_at(start.token(), "expected a 3-D vector, found a " + value_type_name(Value(n)));
   return promoted_to(n, 3).as_vec3();
 }
 
@@ -144,7 +165,7 @@ std::string Interpreter::parse_datetime() {
 Numeric Interpreter::parse_expression() {
   auto comparison = [this]() {
     // A string operand takes exactly one comparison with another string, in strcmp order (§5).
-    if (starts_string(peek())) return compare_strings();
+    if (string_ahead()) return compare_strings();
     Numeric left = parse_additive();
     while (true) {
       const Ahead ahead = raw_ahead();
@@ -183,7 +204,7 @@ Numeric Interpreter::parse_additive() {
     const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
     const bool plus = op.is("+");
     if (!plus && !op.is("-")) return value;
-    next();
+    skip_ahead();
     if (plus) value = componentwise(value, parse_multiplicative(), std::plus<>());
     else value = componentwise(value, parse_multiplicative(), std::minus<>());
   }
@@ -195,10 +216,11 @@ Numeric Interpreter::parse_multiplicative() {
     const Ahead look = raw_ahead();
     const bool times = look.is("*");
     if (!times && !look.is("/")) return value;
-    const Token op = next();
     if (times) {
+      skip_ahead();
       value = componentwise(value, parse_unary(), std::multiplies<>());
     } else {
+      const Token op = next();   // its location, should the divisor be zero
       Numeric divisor = parse_unary();
       promote(value, divisor);
       for (int i = 0; i < value.terms; ++i) {
@@ -210,9 +232,10 @@ Numeric Interpreter::parse_multiplicative() {
 }
 
 Numeric Interpreter::parse_unary() {
+  if (Numeric n; fast_operand(n)) return n;
   const Token t = next();
   const NestingGuard guard(*this, t);   // every nested operand passes through here
-  if (t.kind != TokenKind::symbol) return parse_postfix(parse_primary(t), t);
+  if (t.kind != TokenKind::symbol) return parse_postfix(parse_primary(t));
   if (t.is("-")) {
     Numeric n = parse_unary();
     for (int i = 0; i < n.terms; ++i) n.v[i] = -n.v[i];
@@ -224,11 +247,11 @@ Numeric Interpreter::parse_unary() {
     for (int i = 0; i < n.terms; ++i) n.v[i] = std::fabs(n.v[i]) <= kEqualEpsilon ? 1.0 : 0.0;
     return n;
   }
-  return parse_postfix(parse_primary(t), t);
+  return parse_postfix(parse_primary(t));
 }
 
 // .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
-Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
+Numeric Interpreter::parse_postfix(Numeric value) {
   while (true) {
     if (!raw_ahead().is(".")) return value;
     next();
@@ -248,7 +271,6 @@ Numeric Interpreter::parse_postfix(Numeric value, const Token& start) {
                           value_type_name(Value(value)) + " does not have");
     value = Numeric::scalar(value.v[it->second]);
   }
-  (void)start;
 }
 
 Numeric Interpreter::parse_vector_literal(const Token& open) {
@@ -256,8 +278,19 @@ Numeric Interpreter::parse_vector_literal(const Token& open) {
   n.terms = 0;
   do {
     if (n.terms == 5) fail_at(open, "a vector has at most 5 components");
-    Token at = peek();
-    n.v[n.terms++] = to_float(parse_additive(), at);
+    n.v[n.terms++] = parse_float();
+    // The separator: a plain ',' or '>' is taken where it stands (no Token made, none pushed back).
+    if (const LexedToken* k = plain_ahead(); plain_symbol(k, '>')) {
+      consume_plain();
+      break;
+    } else if (plain_symbol(k, ',')) {
+      consume_plain();
+      if (plain_symbol(plain_ahead(), '>')) { consume_plain(); break; }
+      if (!plain_ahead() && peek().is(">")) { next(); break; }
+      continue;
+    } else if (k) {
+      continue;   // commas between components are optional (§5)
+    }
     Token sep = next();
     if (sep.is(">")) break;
     if (!sep.is(",")) unget(sep);   // commas between components are optional (§5)
@@ -350,6 +383,14 @@ Colour Interpreter::parse_colour() {
   }
   if (!have_base) fail_expected(peek(), "a colour (rgb <r,g,b>, a colour identifier or an expression)");
   return c.stored().as_colour();
+}
+
+bool Interpreter::string_ahead() {
+  const LexedToken* k = plain_ahead();
+  if (!k) return starts_string(peek());
+  if (k->kind() != TokenKind::identifier) return k->kind() == TokenKind::string;
+  const FileTokens& tokens = *frames_.back().tokens;
+  return starts_string(make_token(tokens, *k));
 }
 
 bool Interpreter::starts_string(const Token& t) const {

@@ -860,11 +860,12 @@ Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<c
 // POV-Ray refuses to declare a name again while it holds a function, and to turn a declared value of another
 // type into a function (§3: #undef first).
 void Interpreter::check_function_redeclaration(const Token& name, bool local, const Value& value) {
-  const std::string n(name.text);
-  const Value* visible = symbols_.find(n);
+  // By the token's NameId: this runs for every #declare, most of them of plain values.
+  const Value* visible = name.name ? symbols_.find(name.name) : symbols_.find(name.text);
   if (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible))
-    fail_at(name, "redeclaring the function '" + n + "' is not allowed: #undef it first");
+    fail_at(name, "redeclaring the function '" + std::string(name.text) + "' is not allowed: #undef it first");
   if (!std::holds_alternative<std::shared_ptr<const FunctionValue>>(value) || !visible) return;
+  const std::string n(name.text);
   if (local && symbols_.level_of(n) != symbols_.depth() - 1) return;   // a new local in this scope
   fail_at(name, "cannot redefine the " + value_type_name(*visible) + " identifier '" + n +
                     "' as a function: #undef it first");

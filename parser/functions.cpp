@@ -212,7 +212,7 @@ Numeric Interpreter::parse_primary(const Token& t) {
     case TokenKind::symbol:
       if (t.is("(")) {
         Numeric n = parse_expression();
-        expect(")", " closing the parenthesis");
+        skip_expected(')', " closing the parenthesis");
         return n;
       }
       if (t.is("<")) return parse_vector_literal(t);
@@ -226,7 +226,8 @@ Numeric Interpreter::parse_primary(const Token& t) {
     if (!v) fail_at(t, "undeclared identifier '" + std::string(w) + "'");
     // An identifier holding a value povtrace parses but cannot use yet (a function, an array, …) is refused by
     // the name of that feature.
-    if (const auto* opaque = std::get_if<OpaqueValue>(v)) refuse_if_unsupported(opaque->feature, t.loc, "expression");
+    if (const auto* opaque = std::get_if<Boxed<OpaqueValue>>(v))
+      refuse_if_unsupported((*opaque)->feature, t.loc, "expression");
     if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return call_function_from_sdl(t, *fn);
     if (!std::holds_alternative<Numeric>(*v))
       fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +

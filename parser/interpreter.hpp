@@ -82,10 +82,33 @@ class Interpreter {
     TokenKind kind;
     std::string_view text;
     bool is(std::string_view s) const {
-      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text == s;
+      // Length and first byte first, as Token::is: asked after every operand, mostly of one-byte symbols.
+      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text.size() == s.size() &&
+             (text.empty() || text[0] == s[0]) && text == s;
     }
   };
   Ahead raw_ahead();
+  // Reading without making Tokens, where next() would return the frame's next kept token unchanged: nothing is
+  // pushed back, and that token is neither '#', nor the end of a file, nor an identifier that runs something or
+  // resolves to something else when read (a macro call, an array that subscripts may follow, a deprecated name).
+  // The kept token then; nullptr where only next() may read on. A look: nothing is run or consumed.
+  const LexedToken* plain_ahead();
+  // Consumes the token plain_ahead() or raw_ahead() (when not pushed back) just returned: a symbol, counted
+  // against the token limit as next() would count it.
+  void consume_plain();
+  void skip_ahead();   // consumes the symbol raw_ahead() just returned, pushed back or not
+  std::string_view text_of(const LexedToken& k) const {
+    return std::string_view(frames_.back().file->text.data() + k.offset, k.length());
+  }
+  bool plain_symbol(const LexedToken* k, char c) const {
+    return k && k->kind() == TokenKind::symbol && k->length() == 1 && frames_.back().file->text[k->offset] == c;
+  }
+  // expect() where its Token is not needed: a plain `symbol` ahead is consumed without making one.
+  void skip_expected(char symbol, std::string_view context);
+  // A number or a numeric identifier as a whole operand, read from the kept tokens without a Token (most operands
+  // are one); false, having read nothing, where the full parse_unary() must run.
+  bool fast_operand(Numeric& out);
+  bool nesting_room() const;   // whether NestingGuard would let one more level in
   void unget(const Token& t) { pushed_back_.push_back(t); }
   Token pop_pushed_back() {
     Token t = std::move(pushed_back_.back());
@@ -148,7 +171,7 @@ class Interpreter {
   Numeric parse_additive();              // parameter level (Parse_Rel_Factor)
   Numeric parse_multiplicative();
   Numeric parse_unary();
-  Numeric parse_postfix(Numeric value, const Token& start);
+  Numeric parse_postfix(Numeric value);
   Numeric parse_primary(const Token& t);   // t: the operand's first token, already read
   Numeric parse_vector_literal(const Token& open);
   Numeric parse_colour_keyword_form(const Token& keyword);
@@ -163,6 +186,8 @@ class Interpreter {
   Numeric compare_strings();   // "a" < "b" and the other comparisons of two strings
   static int strcmp_value(const std::string& a, const std::string& b);   // POV-Ray's strcmp(): a char difference
   bool starts_string(const Token& t) const;
+  bool string_ahead();   // starts_string() of what comes next, made a Token only where needed
+  class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
   std::vector<double> parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
 
@@ -303,6 +328,9 @@ class Interpreter {
   void parse_background(const Token& keyword);
   void parse_default(const Token& keyword);
   std::optional<Value> try_parse_rvalue(const Token& first);
+  // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
+  // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
+  bool numeric_ahead();
   void place_object(Object object, const SourceLoc& at);
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);

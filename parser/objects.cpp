@@ -110,8 +110,8 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   Object holder;   // collects the material's parts with the object-modifier rules, then hands them over
   Token t = next();
   if (const Value* v = lookup(t)) {
-    if (v && std::holds_alternative<MaterialValue>(*v)) {
-      const auto& m = std::get<MaterialValue>(*v);
+    if (v && std::holds_alternative<Boxed<MaterialValue>>(*v)) {
+      const auto& m = *std::get<Boxed<MaterialValue>>(*v);
       holder.texture = m.texture;
       holder.interior = m.interior;
       t = next();
@@ -240,12 +240,12 @@ SceneItem Interpreter::parse_object_block(const Token& keyword) {
       if (m.is("}")) break;
       if (!try_light_modifier(m, *light)) fail_expected(m, "a light_source modifier or '}'");
     }
-    return *item;
+    return std::move(*item);
   }
   Object& o = std::get<Object>(*item);
   (void)keyword;
   parse_object_modifiers(o);
-  return *item;
+  return std::move(*item);   // not a copy: an object is large
 }
 
 std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {

@@ -302,8 +302,8 @@ Pigment Interpreter::parse_pigment_contents(const Pigment& start, const SourceLo
   Pigment p = start;
   p.loc = loc;
   Token t = next();
-  if (const Value* v = lookup(t); v && std::holds_alternative<Pigment>(*v)) {
-    p = std::get<Pigment>(*v);
+  if (const Value* v = lookup(t); v && std::holds_alternative<Boxed<Pigment>>(*v)) {
+    p = *std::get<Boxed<Pigment>>(*v);
     t = next();
   }
   while (!t.is(closer)) {

@@ -139,6 +139,15 @@ void Interpreter::parse_default(const Token& keyword) {
   }
 }
 
+bool Interpreter::numeric_ahead() {
+  const LexedToken* k = plain_ahead();
+  if (!k) return false;
+  if (k->kind() == TokenKind::number || k->kind() == TokenKind::symbol) return true;
+  if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
+  const Value* v = symbols_.find(k->payload);
+  return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
+}
+
 std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
   // and none of the forms below would take them.
@@ -185,7 +194,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "array") return parse_array_declaration(first);
   if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
-      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<MacroDefinition>(*v)) {
+      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
     if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
     return *v;
   }
@@ -318,16 +327,21 @@ ParseOptions with_standard_includes(const ParseOptions& options) {
     o.library_paths.push_back(standard);
   return o;
 }
-}  // namespace
 
-SceneDescription parse_scene_text(const std::string& text, const std::string& name, const ParseOptions& options) {
+// Takes the text over: a scene file read from disk is not copied once more (7 MB in a large scene).
+SceneDescription parse_owned_text(std::string text, const std::string& name, const ParseOptions& options) {
   auto file = std::make_unique<SourceFile>();
   file->name = std::make_shared<const std::string>(name);
   file->path = name;
-  file->text = text;
+  file->text = std::move(text);
   const ParseOptions o = with_standard_includes(options);
   sdl::Interpreter interpreter(o);
   return interpreter.run(std::move(file));
+}
+}  // namespace
+
+SceneDescription parse_scene_text(const std::string& text, const std::string& name, const ParseOptions& options) {
+  return parse_owned_text(text, name, options);
 }
 
 SceneDescription parse_scene(const std::filesystem::path& path, const ParseOptions& options) {
@@ -337,7 +351,7 @@ SceneDescription parse_scene(const std::filesystem::path& path, const ParseOptio
   } catch (const std::exception& e) {
     throw ParseError(SourceLoc{std::make_shared<const std::string>(path.string()), 0, 0}, e.what());
   }
-  return parse_scene_text(text, path.string(), options);
+  return parse_owned_text(std::move(text), path.string(), options);
 }
 
 }  // namespace povtrace

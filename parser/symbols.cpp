@@ -4,35 +4,37 @@
 
 namespace povtrace::sdl {
 
-std::string value_type_name(const Value& v) {
-  struct Namer {
-    std::string operator()(const Numeric& n) const {
-      if (n.colour) return "colour";
-      static const char* names[] = {"", "float", "2-D vector", "vector", "4-D vector", "colour"};
-      return names[n.terms];
-    }
-    std::string operator()(const std::string&) const { return "string"; }
-    std::string operator()(const std::shared_ptr<const SceneItem>& s) const {
-      return std::holds_alternative<Light>(*s) ? "light_source" : "object";
-    }
-    std::string operator()(const std::shared_ptr<const Texture>&) const { return "texture"; }
-    std::string operator()(const Pigment&) const { return "pigment"; }
-    std::string operator()(const Finish&) const { return "finish"; }
-    std::string operator()(const Interior&) const { return "interior"; }
-    std::string operator()(const Camera&) const { return "camera"; }
-    std::string operator()(const MacroDefinition&) const { return "macro"; }
-    std::string operator()(const Alias&) const { return "alias"; }
-    std::string operator()(const Matrix&) const { return "transform"; }
-    std::string operator()(const OpaqueValue& o) const { return o.keyword; }
-    std::string operator()(const MaterialValue&) const { return "material"; }
-    std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "array"; }
-    std::string operator()(const std::shared_ptr<UserFile>&) const { return "file"; }
-    std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "function"; }
-    std::string operator()(const SkySphere&) const { return "sky_sphere"; }
-    std::string operator()(const BlendMapValue& m) const { return m.pigments ? "pigment_map" : "color_map"; }
-  };
-  return std::visit(Namer{}, v);
-}
+namespace {
+struct Namer {
+  template <class T> std::string operator()(const Boxed<T>& b) const { return (*this)(*b); }
+  std::string operator()(const Numeric& n) const {
+    if (n.colour) return "colour";
+    static const char* names[] = {"", "float", "2-D vector", "vector", "4-D vector", "colour"};
+    return names[n.terms];
+  }
+  std::string operator()(const std::string&) const { return "string"; }
+  std::string operator()(const std::shared_ptr<const SceneItem>& s) const {
+    return std::holds_alternative<Light>(*s) ? "light_source" : "object";
+  }
+  std::string operator()(const std::shared_ptr<const Texture>&) const { return "texture"; }
+  std::string operator()(const Pigment&) const { return "pigment"; }
+  std::string operator()(const Finish&) const { return "finish"; }
+  std::string operator()(const Interior&) const { return "interior"; }
+  std::string operator()(const Camera&) const { return "camera"; }
+  std::string operator()(const MacroDefinition&) const { return "macro"; }
+  std::string operator()(const Alias&) const { return "alias"; }
+  std::string operator()(const Matrix&) const { return "transform"; }
+  std::string operator()(const OpaqueValue& o) const { return o.keyword; }
+  std::string operator()(const MaterialValue&) const { return "material"; }
+  std::string operator()(const std::shared_ptr<ArrayValue>&) const { return "array"; }
+  std::string operator()(const std::shared_ptr<UserFile>&) const { return "file"; }
+  std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "function"; }
+  std::string operator()(const SkySphere&) const { return "sky_sphere"; }
+  std::string operator()(const BlendMapValue& m) const { return m.pigments ? "pigment_map" : "color_map"; }
+};
+}  // namespace
+
+std::string value_type_name(const Value& v) { return std::visit(Namer{}, v); }
 
 std::string array_type_of(const Value& v) {
   if (const auto* n = std::get_if<Numeric>(&v)) {

@@ -10,7 +10,7 @@ namespace povtrace::sdl {
 
 namespace {
 template <class T> const T* identifier_value(const Value* v) {
-  return v && std::holds_alternative<T>(*v) ? &std::get<T>(*v) : nullptr;
+  return v && std::holds_alternative<Boxed<T>>(*v) ? &*std::get<Boxed<T>>(*v) : nullptr;
 }
 
 void transform_pigment(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
@@ -183,8 +183,8 @@ SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
   SkySphere sky;
   sky.loc = keyword.loc;
   Token t = next();
-  if (const Value* v = lookup(t); v && std::holds_alternative<SkySphere>(*v)) {
-    sky = std::get<SkySphere>(*v);
+  if (const Value* v = lookup(t); v && std::holds_alternative<Boxed<SkySphere>>(*v)) {
+    sky = *std::get<Boxed<SkySphere>>(*v);
     t = next();
   }
   for (; !t.is("}"); t = next()) {

@@ -146,7 +146,7 @@ Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(
 
 bool Interpreter::is_macro_call(const Token& t) const {
   const Value* v = lookup(t);
-  return v && std::holds_alternative<MacroDefinition>(*v);
+  return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
 }
 
 const Value* Interpreter::lookup(const Token& t) const {
@@ -173,7 +173,7 @@ Token Interpreter::next() {
     }
     if (t.kind == TokenKind::identifier && !reserved(t)) {
       const Value* v = t.name ? symbols_.find(t.name) : symbols_.find(t.text);
-      if (v && std::holds_alternative<MacroDefinition>(*v)) {
+      if (v && std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
         const NestingGuard guard(*this, t);
         invoke_macro(t);
         continue;
@@ -242,10 +242,77 @@ Interpreter::Ahead Interpreter::raw_ahead() {
     const Frame& f = frames_.back();
     const LexedToken& k = lexed(*f.tokens, f.index);
     const std::string_view text(f.file->text.data() + k.offset, k.length());
-    if (k.kind() != TokenKind::end_of_input && text != "#") return {k.kind(), text};
+    if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
   }
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
+}
+
+const LexedToken* Interpreter::plain_ahead() {
+  if (!pushed_back_.empty()) return nullptr;
+  const Frame& f = frames_.back();
+  const LexedToken& k = lexed(*f.tokens, f.index);
+  switch (k.kind()) {
+    case TokenKind::number:
+    case TokenKind::string: return &k;
+    case TokenKind::symbol: return plain_symbol(&k, '#') ? nullptr : &k;
+    case TokenKind::identifier: {
+      if (symbols_.is_reserved(k.payload)) return &k;
+      if (symbols_.any_deprecated()) return nullptr;
+      const Value* v = symbols_.find(k.payload);
+      if (v && (std::holds_alternative<Boxed<MacroDefinition>>(*v) ||
+                std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)))
+        return nullptr;
+      return &k;
+    }
+    case TokenKind::end_of_input: break;
+  }
+  return nullptr;
+}
+
+void Interpreter::consume_plain() {
+  if (options_.max_tokens) {   // next() counts it and reports the limit as everywhere else
+    next();
+    return;
+  }
+  ++frames_.back().index;
+}
+
+void Interpreter::skip_ahead() {
+  if (pushed_back_.empty()) consume_plain();
+  else pushed_back_.pop_back();   // a symbol, which next() would return as it is
+}
+
+void Interpreter::skip_expected(char symbol, std::string_view context) {
+  if (plain_symbol(plain_ahead(), symbol)) consume_plain();
+  else expect(std::string_view(&symbol, 1), context);
+}
+
+bool Interpreter::nesting_room() const {
+  const char* lowest = stack_lowest_address();
+  const char* here = static_cast<const char*>(__builtin_frame_address(0));
+  return nesting_ < kMaxNesting && !(lowest && here - lowest < kStackReserve);
+}
+
+bool Interpreter::fast_operand(Numeric& out) {
+  // The token limit is counted by next() alone; a component selector (.x) goes through parse_postfix.
+  if (options_.max_tokens || !nesting_room()) return false;
+  const LexedToken* k = plain_ahead();
+  if (!k) return false;
+  Frame& f = frames_.back();
+  if (k->kind() == TokenKind::number) {
+    out = Numeric::scalar(f.tokens->number(*k));
+  } else if (k->kind() == TokenKind::identifier && !symbols_.is_reserved(k->payload)) {
+    const Value* v = symbols_.find(k->payload);
+    const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
+    if (!n) return false;   // undeclared, or no number: parse_primary says what it is
+    out = *n;
+  } else {
+    return false;
+  }
+  ++f.index;
+  if (raw_ahead().is(".")) out = parse_postfix(out);
+  return true;
 }
 
 Token Interpreter::expect(std::string_view symbol, std::string_view context) {
@@ -255,6 +322,13 @@ Token Interpreter::expect(std::string_view symbol, std::string_view context) {
 }
 
 bool Interpreter::accept(std::string_view symbol) {
+  // A plain token ahead is looked at where it stands: no Token made, none pushed back.
+  if (const LexedToken* k = plain_ahead()) {
+    if ((k->kind() != TokenKind::symbol && k->kind() != TokenKind::identifier) || text_of(*k) != symbol)
+      return false;
+    consume_plain();
+    return true;
+  }
   Token t = next();
   if (t.is(symbol)) return true;
   unget(t);
@@ -360,7 +434,10 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
 // A macro call: arguments are bound in a new symbol table, then the body's tokens continue the stream until
 // its #end, which returns to just after the call's ')' (§1 item 4, §4 #macro).
 void Interpreter::invoke_macro(const Token& name) {
-  const MacroDefinition macro = std::get<MacroDefinition>(*symbols_.find(std::string(name.text)));
+  // The shared definition, not a copy: a call needs no allocation for it (and keeps it alive should the call
+  // redefine the macro).
+  const Boxed<MacroDefinition> boxed = std::get<Boxed<MacroDefinition>>(*lookup(name));
+  const MacroDefinition& macro = *boxed;
   const auto calls = std::count_if(frames_.begin(), frames_.end(),
                                    [](const Frame& f) { return f.kind == Frame::Kind::macro; });
   if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
@@ -369,7 +446,7 @@ void Interpreter::invoke_macro(const Token& name) {
   // Checked here rather than with expect(): its message would be built on every call.
   if (const Token open = next(); !open.is("("))
     fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
-  std::vector<std::pair<std::string, Value>> bound;
+  std::vector<std::pair<SymbolTable::NameId, Value>> bound;
   bound.reserve(macro.parameters.size());
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
     if (i > 0) accept(",");
@@ -381,14 +458,14 @@ void Interpreter::invoke_macro(const Token& name) {
       const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
       auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
       if (level && alone) {
-        bound.emplace_back(macro.parameters[i],
+        bound.emplace_back(macro.parameter_ids[i],
                            Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
         continue;
       }
     }
     auto value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
-    bound.emplace_back(macro.parameters[i], std::move(*value));
+    bound.emplace_back(macro.parameter_ids[i], std::move(*value));
   }
   Token close = next();
   if (!close.is(")"))

@@ -45,6 +45,7 @@ struct MacroDefinition {
   FileTokens* tokens = nullptr;     // file's tokens
   std::size_t body = 0;             // index of the first token after the parameter list's ')'
   std::vector<std::string> parameters;
+  std::vector<std::uint32_t> parameter_ids;   // their SymbolTable::NameIds: a call binds without hashing
   SourceLoc loc;
 };
 
@@ -74,14 +75,28 @@ struct BlendMapValue {
   std::vector<MapEntry> entries;
 };
 
+// A large value held behind a shared pointer and immutable once made, so that a Value stays small: the symbol
+// table holds one Value per name (100,000 declared vectors must not each carry room for a pigment), and copying a
+// declared pigment, camera or macro shares it instead of copying it.
+template <class T> class Boxed {
+ public:
+  Boxed(T value) : p_(std::make_shared<const T>(std::move(value))) {}   // NOLINT: implicit, as T converted
+  const T& operator*() const { return *p_; }
+  const T* operator->() const { return p_.get(); }
+
+ private:
+  std::shared_ptr<const T> p_;
+};
+
 struct ArrayValue;   // array[N]… (below: it holds Values)
 struct UserFile;     // a file opened by #fopen (file_io.cpp)
 struct FunctionValue;   // function { … } (function_value.hpp)
 
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
-                           Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue,
-                           MaterialValue, std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
-                           std::shared_ptr<const FunctionValue>, SkySphere, BlendMapValue>;
+                           Boxed<Pigment>, Boxed<Finish>, Boxed<Interior>, Boxed<Camera>, Boxed<MacroDefinition>,
+                           Alias, Boxed<Matrix>, Boxed<OpaqueValue>, Boxed<MaterialValue>,
+                           std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
+                           std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies
