@@ -116,9 +116,34 @@ struct Finish {
   Unsupported unsupported;
 };
 
+// normal { } (POV-Ray's TNORMAL, texture/normal.cpp Perturb_Normal). The normal-only patterns perturb the normal
+// with their own formula; any pigment pattern used as a normal (`pattern`) is sampled around the point and its
+// slope bends the normal.
+enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves };
+
+// A slope_map entry `[value, <height, slope>]` (single precision, as POV-Ray's blend map entries).
+struct SlopeEntry {
+  double value = 0, height = 0, slope = 0;
+};
+
+struct Normal {
+  NormalKind kind = NormalKind::pattern;
+  // The pattern and what it shares with pigments: pattern kind and parameters (for `pattern`), frequency, phase,
+  // wave type, turbulence, warps and transforms (for every kind). Its colour and entries are unused.
+  Pigment pattern;
+  bool has_type = false;         // POV-Ray's "No normal type given" otherwise
+  double amount = 0.5;           // the float after the pattern, or bump_size
+  double accuracy = 0.02;        // the sampling distance of pattern normals (POV-Ray's Delta)
+  bool no_bump_scale = false;
+  std::vector<SlopeEntry> slope_map;
+  SourceLoc loc;
+  Unsupported unsupported;
+};
+
 struct TextureLayer {
   Pigment pigment;
   Finish finish;
+  std::optional<Normal> normal;   // none: the layer uses the surface's own normal
 };
 
 // Layers in written order: the *last* one is the top layer (pipeline §2 "Layers").

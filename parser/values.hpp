@@ -81,7 +81,7 @@ struct FunctionValue;   // function { … } (function_value.hpp)
 using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem>, std::shared_ptr<const Texture>,
                            Pigment, Finish, Interior, Camera, MacroDefinition, Alias, Matrix, OpaqueValue,
                            MaterialValue, std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
-                           std::shared_ptr<const FunctionValue>, SkySphere, BlendMapValue>;
+                           std::shared_ptr<const FunctionValue>, SkySphere, BlendMapValue, Normal>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies

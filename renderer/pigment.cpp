@@ -16,6 +16,8 @@ Vec3 displaced(Vec3 p, const Turbulence& t) {
   return {p.x + d.x * t.amount.x, p.y + d.y * t.amount.y, p.z + d.z * t.amount.z};
 }
 
+}  // namespace
+
 Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 p) {
   for (const PatternStep& s : pigment.steps) {
     if (s.transformed) p = s.pattern_from_world.point(p);
@@ -26,6 +28,7 @@ Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 p) {
   return p;
 }
 
+namespace {
 Colour lerp(const Colour& a, const Colour& b, double f) {
   return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), a.f + f * (b.f - a.f),
           a.t + f * (b.t - a.t)};

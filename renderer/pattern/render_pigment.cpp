@@ -71,7 +71,10 @@ bool pigment_has_transparency(const Pigment& p) {
 
 void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator) {
   for (auto& m : materials)
-    for (auto& layer : m.layers) set_generator(layer.pigment, generator);
+    for (auto& layer : m.layers) {
+      set_generator(layer.pigment, generator);
+      if (layer.normal) set_generator(layer.normal->pattern, generator);
+    }
 }
 
 }  // namespace povtrace::render
