@@ -36,6 +36,7 @@ enum class PatternKind {
   solid, checker, hexagon, brick,                                   // list patterns: entries 0, 1 (, 2)
   gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
   bozo, spotted, granite, marble, wood, agate,                      // noise-based
+  crackle, cells,                                                   // a random point or value per unit cube
   average                                                           // mean of its pigment_map's pigments
 };
 
@@ -55,6 +56,16 @@ struct Turbulence {
 struct PatternWarp {
   Turbulence turbulence;
   Matrix before;
+};
+
+// crackle's parameters (Parse_Pattern's defaults): the value is form·(d1, d2, d3) of the distances to the three
+// nearest cell points under `metric`, each with `offset` added; `solid` takes the nearest cell's noise instead.
+struct CrackleParams {
+  Vec3 form{-1, 1, 0};
+  double metric = 2;
+  double offset = 0;
+  bool solid = false;
+  friend bool operator==(const CrackleParams&, const CrackleParams&) = default;
 };
 
 struct Pigment;
@@ -78,6 +89,7 @@ struct Pigment {
   // POV-Ray keeps mortar, agate_turb, frequency, phase and exponent in single precision; so does the parser.
   double mortar = 0.5;           // brick: float(mortar − 2e-10), as POV-Ray stores it
   double agate_turb = 1.0;
+  CrackleParams crackle;
   double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
   double phase = 0.0;
   WaveType wave = WaveType::ramp;

@@ -34,7 +34,7 @@ constexpr SimplePattern kSimplePatterns[] = {
     {"onion", PatternKind::onion},       {"radial", PatternKind::radial},
     {"planar", PatternKind::planar},     {"boxed", PatternKind::boxed},
     {"spherical", PatternKind::spherical}, {"cylindrical", PatternKind::cylindrical},
-    {"average", PatternKind::average},
+    {"average", PatternKind::average},   {"cells", PatternKind::cells},
 };
 
 struct WaveKeyword {
@@ -127,6 +127,11 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
   if (t.is("marble") || t.is("wood")) {
     p.pattern = t.is("marble") ? PatternKind::marble : PatternKind::wood;
     p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
+  if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)
+    p.pattern = PatternKind::crackle;
+    p.crackle = CrackleParams{};
     return true;
   }
   if (t.is("agate")) {
@@ -284,6 +289,26 @@ bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
   if (t.is("brick_size")) {
     require(PatternKind::brick, "brick");
     p.brick_size = parse_vector();
+    return true;
+  }
+  if (t.is("metric")) {   // a vector for backward compatibility: only its x is used
+    require(PatternKind::crackle, "crackle");
+    p.crackle.metric = parse_vector().x;
+    return true;
+  }
+  if (t.is("form")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.form = parse_vector();
+    return true;
+  }
+  if (t.is("offset")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.offset = parse_float();
+    return true;
+  }
+  if (t.is("solid")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.solid = true;
     return true;
   }
   if (t.is("mortar")) {

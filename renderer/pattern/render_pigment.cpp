@@ -50,8 +50,8 @@ RenderPigment build_render_pigment(const Pigment& p) {
   r.pattern = p.pattern;
   r.colour = p.colour;
   if (p.pattern == PatternKind::solid) return r;
-  r.params = PatternParams{p.pattern, p.gradient, p.brick_size, p.mortar, p.agate_turb, p.turbulence,
-                           NoiseGenerator::range_corrected};
+  r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
+                           p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected};
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
