@@ -53,8 +53,18 @@ struct Turbulence {
 
 // `warp { turbulence … }` (POV-Ray's extra turbulence warp). `before` is the pattern transform written before
 // this warp (and after the previous one): warps and transforms apply in the order they are written.
+// `warp { repeat V [offset O] [flip F] }`: space cut into slabs of V's one non-zero component along its axis,
+// each slab mapped onto the first, shifted by O per slab and, in odd slabs, mirrored on the axes F names.
+struct RepeatWarp {
+  int axis = 0;
+  double width = 1;
+  Vec3 offset{0, 0, 0};
+  Vec3 flip{1, 1, 1};   // −1 on the flipped axes (POV-Ray stores them so)
+};
+
 struct PatternWarp {
   Turbulence turbulence;
+  std::optional<RepeatWarp> repeat;   // a repeat warp instead of a turbulence warp
   Matrix before;
 };
 

@@ -231,6 +231,7 @@ class Interpreter {
   void parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional);
   void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
   void parse_warp(const Token& keyword, Pigment& p);
+  RepeatWarp parse_repeat_warp(const Token& keyword);
 
   // ---- normal { } (normals.cpp) ----
   Normal parse_normal_block(const Token& keyword, const Normal& start);

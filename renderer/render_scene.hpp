@@ -27,6 +27,7 @@ struct PatternStep {
   bool transformed = false;
   Matrix pattern_from_world;
   std::optional<Turbulence> turbulence;
+  std::optional<RepeatWarp> repeat;
 };
 
 // An entry of the pigment's map: a colour, or a child pigment (index into RenderPigment::children).

@@ -20,10 +20,14 @@ std::vector<PatternStep> steps_of(const Pigment& p) {
   const Matrix* outer = &p.world_from_pattern;
   for (auto it = p.warps.rbegin(); it != p.warps.rend(); ++it) {
     steps.push_back(step(*outer, it->turbulence));   // the transforms after this warp, then the warp
+    if (it->repeat) {
+      steps.back().turbulence.reset();
+      steps.back().repeat = it->repeat;
+    }
     outer = &it->before;
   }
   steps.push_back(step(*outer, std::nullopt));
-  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence; });
+  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence && !s.repeat; });
   return steps;
 }
 
