@@ -37,6 +37,7 @@ enum class PatternKind {
   solid, checker, hexagon, brick,                                   // list patterns: entries 0, 1 (, 2)
   gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
   bozo, spotted, granite, marble, wood, agate,                      // noise-based
+  crackle, cells,                                                   // a random point or value per unit cube
   average                                                           // mean of its pigment_map's pigments
 };
 
@@ -53,9 +54,29 @@ struct Turbulence {
 
 // `warp { turbulence … }` (POV-Ray's extra turbulence warp). `before` is the pattern transform written before
 // this warp (and after the previous one): warps and transforms apply in the order they are written.
+// `warp { repeat V [offset O] [flip F] }`: space cut into slabs of V's one non-zero component along its axis,
+// each slab mapped onto the first, shifted by O per slab and, in odd slabs, mirrored on the axes F names.
+struct RepeatWarp {
+  int axis = 0;
+  double width = 1;
+  Vec3 offset{0, 0, 0};
+  Vec3 flip{1, 1, 1};   // −1 on the flipped axes (POV-Ray stores them so)
+};
+
 struct PatternWarp {
   Turbulence turbulence;
+  std::optional<RepeatWarp> repeat;   // a repeat warp instead of a turbulence warp
   Matrix before;
+};
+
+// crackle's parameters (Parse_Pattern's defaults): the value is form·(d1, d2, d3) of the distances to the three
+// nearest cell points under `metric`, each with `offset` added; `solid` takes the nearest cell's noise instead.
+struct CrackleParams {
+  Vec3 form{-1, 1, 0};
+  double metric = 2;
+  double offset = 0;
+  bool solid = false;
+  friend bool operator==(const CrackleParams&, const CrackleParams&) = default;
 };
 
 struct Pigment;
@@ -79,6 +100,7 @@ struct Pigment {
   // POV-Ray keeps mortar, agate_turb, frequency, phase and exponent in single precision; so does the parser.
   double mortar = 0.5;           // brick: float(mortar − 2e-10), as POV-Ray stores it
   double agate_turb = 1.0;
+  CrackleParams crackle;
   double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
   double phase = 0.0;
   WaveType wave = WaveType::ramp;
@@ -117,9 +139,34 @@ struct Finish {
   Unsupported unsupported;
 };
 
+// normal { } (POV-Ray's TNORMAL, texture/normal.cpp Perturb_Normal). The normal-only patterns perturb the normal
+// with their own formula; any pigment pattern used as a normal (`pattern`) is sampled around the point and its
+// slope bends the normal.
+enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves };
+
+// A slope_map entry `[value, <height, slope>]` (single precision, as POV-Ray's blend map entries).
+struct SlopeEntry {
+  double value = 0, height = 0, slope = 0;
+};
+
+struct Normal {
+  NormalKind kind = NormalKind::pattern;
+  // The pattern and what it shares with pigments: pattern kind and parameters (for `pattern`), frequency, phase,
+  // wave type, turbulence, warps and transforms (for every kind). Its colour and entries are unused.
+  Pigment pattern;
+  bool has_type = false;         // POV-Ray's "No normal type given" otherwise
+  double amount = 0.5;           // the float after the pattern, or bump_size
+  double accuracy = 0.02;        // the sampling distance of pattern normals (POV-Ray's Delta)
+  bool no_bump_scale = false;
+  std::vector<SlopeEntry> slope_map;
+  SourceLoc loc;
+  Unsupported unsupported;
+};
+
 struct TextureLayer {
   Pigment pigment;
   Finish finish;
+  std::optional<Normal> normal;   // none: the layer uses the surface's own normal
 };
 
 // Layers in written order: the *last* one is the top layer (pipeline §2 "Layers").

@@ -5,6 +5,7 @@
 //   directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
 //   expressions.cpp   float/vector/colour/string expressions and built-in functions
 //   textures.cpp      pigment, finish, texture, interior
+//   normals.cpp       normal { } perturbations
 //   objects.cpp       shapes, CSG, object modifiers and transforms
 //   camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
 //   scene.cpp         top-level statements, global_settings, background, post-processing, entry points
@@ -257,6 +258,15 @@ class Interpreter {
   void parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional);
   void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
   void parse_warp(const Token& keyword, Pigment& p);
+  RepeatWarp parse_repeat_warp(const Token& keyword);
+
+  // ---- normal { } (normals.cpp) ----
+  Normal parse_normal_block(const Token& keyword, const Normal& start);
+  bool try_normal_pattern(const Token& t, Normal& n);
+  bool try_normal_modifier(const Token& t, Normal& n);
+  std::vector<SlopeEntry> parse_slope_map(const Token& keyword);
+  // The normal a `normal { }` block edits: the layer's own, else the #default texture's, else a new one.
+  Normal starting_normal(const std::optional<Normal>& current) const;
 
   // ---- objects (objects.cpp) ----
   std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source

@@ -12,7 +12,10 @@ namespace {
 void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
   if (!texture) return;
   auto moved = std::make_shared<Texture>(*texture);
-  for (auto& layer : moved->layers) layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
+  for (auto& layer : moved->layers) {
+    layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
+    if (layer.normal) layer.normal->pattern.world_from_pattern = layer.normal->pattern.world_from_pattern * m;
+  }
   texture = std::move(moved);
 }
 
@@ -61,6 +64,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     layer.pigment = parse_pigment_block(t, layer.pigment);
     return true;
   }
+  if (k == "normal") {
+    TextureLayer& layer = own_top_layer(object, default_texture());
+    layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+    taint(object.unsupported, layer.normal->unsupported);
+    return true;
+  }
   if (k == "finish") {
     TextureLayer& layer = own_top_layer(object, default_texture());
     layer.finish = parse_finish_block(t, layer.finish);
@@ -91,13 +100,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     fail_at(t, "'open' must directly follow the parameters of a cylinder or cone; it is no object modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "normal", "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
+      "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
       "sturm", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {
-      taint(object.unsupported, skip_unsupported(t, k == "normal" ? std::string("'normal { }' perturbation")
-                                                                   : "the object modifier '" + std::string(k) + "'"));
+      taint(object.unsupported, skip_unsupported(t, "the object modifier '" + std::string(k) + "'"));
       return true;
     }
   return false;
@@ -119,7 +127,8 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   while (!t.is("}")) {
     Matrix m;
-    if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("finish")) try_object_modifier(t, holder);
+    if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("normal") || t.is("finish"))
+      try_object_modifier(t, holder);
     else if (try_transform(t, m)) transform_texture(holder.texture, m);
     else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(holder.unsupported, skip_unsupported(t, "the material item '" + std::string(t.text) + "'"));

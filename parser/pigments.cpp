@@ -34,7 +34,7 @@ constexpr SimplePattern kSimplePatterns[] = {
     {"onion", PatternKind::onion},       {"radial", PatternKind::radial},
     {"planar", PatternKind::planar},     {"boxed", PatternKind::boxed},
     {"spherical", PatternKind::spherical}, {"cylindrical", PatternKind::cylindrical},
-    {"average", PatternKind::average},
+    {"average", PatternKind::average},   {"cells", PatternKind::cells},
 };
 
 struct WaveKeyword {
@@ -127,6 +127,11 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
   if (t.is("marble") || t.is("wood")) {
     p.pattern = t.is("marble") ? PatternKind::marble : PatternKind::wood;
     p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
+  if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)
+    p.pattern = PatternKind::crackle;
+    p.crackle = CrackleParams{};
     return true;
   }
   if (t.is("agate")) {
@@ -222,6 +227,14 @@ void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
   const NestingGuard guard(*this, keyword);
   const Token open = expect("{", " after 'warp'");
   Token kind = next();
+  if (kind.is("repeat")) {
+    PatternWarp w;
+    w.repeat = parse_repeat_warp(kind);
+    w.before = p.world_from_pattern;
+    p.world_from_pattern = Matrix::identity();
+    p.warps.push_back(w);
+    return;
+  }
   if (!kind.is("turbulence")) {
     taint(p.unsupported, UnsupportedFeature{"the warp '" + std::string(kind.text) + "'", kind.loc});
     unget(kind);
@@ -242,6 +255,29 @@ void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
   w.before = p.world_from_pattern;
   p.world_from_pattern = Matrix::identity();
   p.warps.push_back(w);
+}
+
+// `repeat V [offset O] [flip F] }` (Parse_Warp): V must name exactly one axis.
+RepeatWarp Interpreter::parse_repeat_warp(const Token& keyword) {
+  RepeatWarp r;
+  const Vec3 v = parse_vector();
+  int axes = 0;
+  for (int i = 0; i < 3; ++i)
+    if (v[i] != 0.0) {
+      r.axis = i;
+      ++axes;
+    }
+  if (axes > 1) fail_at(keyword, "can only repeat along 1 axis");
+  if (axes == 0) fail_at(keyword, "no axis specified in repeat");
+  r.width = v[r.axis];
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (t.is("offset")) r.offset = parse_vector();
+    else if (t.is("flip")) {
+      const Vec3 f = parse_vector();
+      r.flip = {f.x != 0.0 ? -1.0 : 1.0, f.y != 0.0 ? -1.0 : 1.0, f.z != 0.0 ? -1.0 : 1.0};
+    } else fail_expected(t, "offset, flip or '}' in warp { repeat … }");
+  }
+  return r;
 }
 
 bool Interpreter::try_pattern_modifier(const Token& t, Pigment& p) {
@@ -284,6 +320,26 @@ bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
   if (t.is("brick_size")) {
     require(PatternKind::brick, "brick");
     p.brick_size = parse_vector();
+    return true;
+  }
+  if (t.is("metric")) {   // a vector for backward compatibility: only its x is used
+    require(PatternKind::crackle, "crackle");
+    p.crackle.metric = parse_vector().x;
+    return true;
+  }
+  if (t.is("form")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.form = parse_vector();
+    return true;
+  }
+  if (t.is("offset")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.offset = parse_float();
+    return true;
+  }
+  if (t.is("solid")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.solid = true;
     return true;
   }
   if (t.is("mortar")) {

@@ -133,9 +133,12 @@ void Interpreter::parse_default(const Token& keyword) {
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
     else if (t.is("texture")) default_texture_ = *parse_texture_block(t);
-    else if (t.is("normal") || t.is("camera") || t.is("radiosity"))
+    else if (t.is("normal")) {
+      layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+      refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
+    } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
-    else fail_expected(t, "texture, pigment or finish in #default { }");
+    else fail_expected(t, "texture, pigment, normal or finish in #default { }");
   }
 }
 
@@ -180,6 +183,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "normal") return Value(parse_normal_block(first, starting_normal(std::nullopt)));
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
@@ -235,6 +239,7 @@ Unsupported first_unsupported(const Object& o) {
     for (const auto& l : o.texture->layers) {
       if (l.pigment.unsupported) return l.pigment.unsupported;
       if (l.finish.unsupported) return l.finish.unsupported;
+      if (l.normal && l.normal->unsupported) return l.normal->unsupported;
     }
   }
   if (o.interior && o.interior->unsupported) return o.interior->unsupported;

@@ -14,6 +14,12 @@ template <class T> const T* identifier_value(const Value* v) {
 }
 
 void transform_pigment(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
+
+// A texture's transforms move every layer's pigment and normal (POV-Ray's Transform_Textures).
+void transform_layer(TextureLayer& l, const Matrix& m) {
+  transform_pigment(l.pigment, m);
+  if (l.normal) transform_pigment(l.normal->pattern, m);
+}
 }  // namespace
 
 // translate/rotate/scale/matrix/transform: composes into `m` in written order (§9).
@@ -378,18 +384,20 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
     else if (try_transform(t, m)) {
-      for (auto& l : tex.layers) transform_pigment(l.pigment, m);
+      for (auto& l : tex.layers) transform_layer(l, m);
+    } else if (t.is("normal")) {
+      layer.normal = parse_normal_block(t, starting_normal(layer.normal));
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
-      taint(tex.unsupported, skip_unsupported(t, t.is("normal") ? "'normal { }' perturbation"
-                                                                : "the texture item '" + std::string(t.text) + "'"));
+      taint(tex.unsupported, skip_unsupported(t, "the texture item '" + std::string(t.text) + "'"));
     } else {
-      fail_expected(t, "pigment, finish, a transform or '}' in texture { }");
+      fail_expected(t, "pigment, normal, finish, a transform or '}' in texture { }");
     }
     t = next();
   }
   for (const auto& l : tex.layers) {
     taint(tex.unsupported, l.pigment.unsupported);
     taint(tex.unsupported, l.finish.unsupported);
+    if (l.normal) taint(tex.unsupported, l.normal->unsupported);
   }
   return std::make_shared<const Texture>(std::move(tex));
 }

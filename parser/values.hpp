@@ -96,7 +96,7 @@ using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem
                            Boxed<Pigment>, Boxed<Finish>, Boxed<Interior>, Boxed<Camera>, Boxed<MacroDefinition>,
                            Alias, Boxed<Matrix>, Boxed<OpaqueValue>, Boxed<MaterialValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
-                           std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue>;
+                           std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue, Boxed<Normal>>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies

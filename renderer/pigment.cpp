@@ -16,16 +16,31 @@ Vec3 displaced(Vec3 p, const Turbulence& t) {
   return {p.x + d.x * t.amount.x, p.y + d.y * t.amount.y, p.z + d.z * t.amount.z};
 }
 
+// POV-Ray's repeat warp (Warp_EPoint): the slab number is kept in single precision, as POV-Ray does.
+Vec3 repeated(Vec3 p, const RepeatWarp& r) {
+  const auto slab = static_cast<float>(std::floor(p[r.axis] / r.width));
+  Vec3 q = p;
+  q[r.axis] = p[r.axis] - slab * r.width;
+  if ((static_cast<int>(slab) & 1) != 0) {
+    q = {q.x * r.flip.x, q.y * r.flip.y, q.z * r.flip.z};
+    if (r.flip[r.axis] < 0) q[r.axis] = r.width + q[r.axis];
+  }
+  return q + r.offset * static_cast<double>(slab);
+}
+}  // namespace
+
 Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 p) {
   for (const PatternStep& s : pigment.steps) {
     if (s.transformed) p = s.pattern_from_world.point(p);
     if (s.turbulence) p = displaced(p, *s.turbulence);
+    if (s.repeat) p = repeated(p, *s.repeat);
   }
   if (pigment.classic_turbulence_warps) p = displaced(p, *pigment.params.turbulence);
   for (double* c : {&p.x, &p.y, &p.z}) *c = std::clamp(*c, -kCoordinateLimit, kCoordinateLimit);
   return p;
 }
 
+namespace {
 Colour lerp(const Colour& a, const Colour& b, double f) {
   return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), a.f + f * (b.f - a.f),
           a.t + f * (b.t - a.t)};

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 
 namespace povtrace::render {
@@ -21,6 +22,7 @@ Material make_material(const Texture& texture, const std::optional<Interior>& in
     RenderLayer layer;
     layer.pigment = build_render_pigment(it->pigment);
     layer.finish = it->finish;
+    if (it->normal) layer.normal = build_render_normal(*it->normal);
     layer.specular_exponent = 1.0 / it->finish.roughness;
     layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
     const auto nonzero = [](const Colour& c) { return c.r != 0 || c.g != 0 || c.b != 0; };
@@ -176,6 +178,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   use_noise_generator(r.materials, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
   r.accelerator = Accelerator(std::move(primitives));
+  constexpr int kNumberOfWaves = 10;   // POV-Ray's default number_of_waves
+  r.wave_sources = make_wave_sources(kNumberOfWaves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
   r.fogs = scene.fogs;
   r.noise_generator = generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected;

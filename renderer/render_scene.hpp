@@ -27,6 +27,7 @@ struct PatternStep {
   bool transformed = false;
   Matrix pattern_from_world;
   std::optional<Turbulence> turbulence;
+  std::optional<RepeatWarp> repeat;
 };
 
 // An entry of the pigment's map: a colour, or a child pigment (index into RenderPigment::children).
@@ -47,8 +48,29 @@ struct RenderPigment {
   std::vector<RenderPigment> children;   // pigment_map / pigment list entries
 };
 
+// A layer's normal perturbation (POV-Ray's Perturb_Normal, pattern/normal_perturbation.cpp). `pattern` carries the
+// warps and transforms from world to pattern space and, for pattern normals, the pattern and its wave step.
+struct RenderNormal {
+  NormalKind kind = NormalKind::pattern;
+  RenderPigment pattern;
+  bool transformed = false;
+  Matrix world_from_pattern;   // every transform of the normal composed (warps other than transforms left out)
+  Matrix pattern_from_world;
+  double amount = 0.5;
+  double accuracy = 0.02;
+  bool no_bump_scale = false;
+  std::vector<SlopeEntry> slope_map;
+};
+
+// The wave sources that ripples and waves sum over (POV-Ray's Initialize_Waves, number_of_waves of them).
+struct WaveSource {
+  Vec3 centre;
+  double frequency = 1;
+};
+
 struct RenderLayer {
   RenderPigment pigment;
+  std::optional<RenderNormal> normal;
   Finish finish;
   double specular_exponent = 20;   // 1/roughness
   bool has_highlights = false;     // phong or specular non-zero
@@ -104,6 +126,7 @@ struct RenderScene {
   std::vector<InteriorRef> camera_interiors;   // the interiors that contain the camera location
   std::vector<InteriorRef> containing_interiors(Vec3 point) const;
   std::vector<std::string> warnings; // approximations the build had to make, for the user to see
+  std::vector<WaveSource> wave_sources;   // for ripples and waves normals
 };
 
 struct BuildOptions {

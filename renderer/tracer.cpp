@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/pattern/normal_perturbation.hpp"
+
 namespace povtrace::render {
 
 namespace {
@@ -160,7 +162,6 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
   const Vec3 geometric = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
-  const Vec3 normal = raw_normal;   // no normal perturbation yet: every layer's normal is the raw one
   const InteriorRef self = interior_of(hit);
 
   // Layers top first; each is weighted by what the layers above let through (§2 "Layers"). Their reflections are
@@ -169,8 +170,13 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
   Rgb filter{1, 1, 1};
   double trans = 1.0;
   const std::size_t first_reflection = reflections_.size();
+  Vec3 top_normal = raw_normal;   // the top layer's normal: refraction and TIR use it (§4)
   for (const RenderLayer& layer : material.layers) {
     if (trans <= scene_.settings.adc_bailout) break;
+    // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
+    const Vec3 normal = layer.normal ? perturb_normal(*layer.normal, raw_normal, point, scene_.wave_sources)
+                                     : raw_normal;
+    if (&layer == &material.layers.front()) top_normal = normal;
     const Colour s = evaluate_pigment(layer.pigment, point);
     if (layer.reflects) {
       const double c = -dot(ray.direction, normal);
@@ -198,13 +204,13 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
   bool total_internal_reflection = false;
   if (trans > scene_.settings.adc_bailout)
     total_internal_reflection =
-        transmit(ray, hit, point, normal, raw_normal, level, weight, state, out, filter, trans);
+        transmit(ray, hit, point, top_normal, raw_normal, level, weight, state, out, filter, trans);
 
   // Reflections; after total internal reflection those sharing the top layer's normal are skipped (§4 TIR).
   for (std::size_t i = first_reflection; i < reflections_.size(); ++i) {
     const PendingReflection r = reflections_[i];
     if (is_zero(r.amount)) continue;
-    if (total_internal_reflection && r.normal == normal) continue;
+    if (total_internal_reflection && r.normal == top_normal) continue;
     const Radiance seen = trace_reflection(ray, point, r.normal, raw_normal, level, r.weight, state);
     if (r.exponent != 1.0)
       out.colour += mul(r.amount, Rgb{std::pow(seen.colour.x, r.exponent), std::pow(seen.colour.y, r.exponent),

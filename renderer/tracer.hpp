@@ -102,6 +102,8 @@ class Tracer {
 
 // Pigment colour at a world point (pattern evaluated in the pigment's own space).
 Colour evaluate_pigment(const RenderPigment& pigment, Vec3 world_point);
+// The point in the pigment's pattern space: its transforms and warps in POV-Ray's order (Warp_EPoint).
+Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 world_point);
 
 // POV-Ray's empirical metallic highlight fade F(x), x = angle/(π/2) (pipeline §2).
 double metallic_fade(double x);

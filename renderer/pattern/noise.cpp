@@ -116,6 +116,11 @@ double lattice_sum(Vec3 p, int component) {
 constexpr double kRangeCorrectedScale = 0.48985582;
 }  // namespace
 
+std::size_t lattice_hash3(long long x, long long y, long long z) {
+  const auto wrap = [](long long v) { return static_cast<std::size_t>(v & kLatticeMask); };
+  return kPermutation[kPermutation[kPermutation[wrap(x)] ^ wrap(y)] ^ wrap(z)];
+}
+
 double noise(Vec3 p, NoiseGenerator generator) {
   const double sum = lattice_sum(p, 0);
   const double v = generator == NoiseGenerator::range_corrected ? 0.5 + sum * kRangeCorrectedScale : sum + 0.5;

@@ -12,6 +12,10 @@ namespace povtrace::render {
 // #version 3.5 and later).
 enum class NoiseGenerator { original = 1, range_corrected = 2 };
 
+// POV-Ray's Hash3d: the lattice permutation applied to x, then to that xor y, then to that xor z (each of x, y, z
+// wrapped to 12 bits): a value in 0..4095 per integer cell.
+std::size_t lattice_hash3(long long x, long long y, long long z);
+
 // Scalar noise in [0, 1], centred on 0.5: smooth (an S-curve blend of the 8 lattice corners around the point, each
 // corner contributing a constant plus a linear ramp), with unit lattice spacing.
 double noise(Vec3 p, NoiseGenerator generator);

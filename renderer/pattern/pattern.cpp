@@ -68,6 +68,8 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::wood: return patterns::wood(p, params.turbulence);
     case PatternKind::agate:
       return patterns::agate(p, params.turbulence.value_or(Turbulence{}), params.agate_turb, params.noise_generator);
+    case PatternKind::crackle: return patterns::crackle(p, params.crackle, params.noise_generator);
+    case PatternKind::cells: return patterns::cells(p);
     case PatternKind::solid:
     case PatternKind::average: break;   // no pattern value: evaluate_pigment handles them
   }

@@ -16,6 +16,7 @@ struct PatternParams {
   Vec3 brick_size{8, 3, 4.5};
   double mortar = 0.5;
   double agate_turb = 1.0;
+  CrackleParams crackle;
   std::optional<Turbulence> turbulence;   // the classic turbulence: marble, wood and agate use it inside
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
 };

@@ -20,10 +20,14 @@ std::vector<PatternStep> steps_of(const Pigment& p) {
   const Matrix* outer = &p.world_from_pattern;
   for (auto it = p.warps.rbegin(); it != p.warps.rend(); ++it) {
     steps.push_back(step(*outer, it->turbulence));   // the transforms after this warp, then the warp
+    if (it->repeat) {
+      steps.back().turbulence.reset();
+      steps.back().repeat = it->repeat;
+    }
     outer = &it->before;
   }
   steps.push_back(step(*outer, std::nullopt));
-  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence; });
+  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence && !s.repeat; });
   return steps;
 }
 
@@ -50,8 +54,8 @@ RenderPigment build_render_pigment(const Pigment& p) {
   r.pattern = p.pattern;
   r.colour = p.colour;
   if (p.pattern == PatternKind::solid) return r;
-  r.params = PatternParams{p.pattern, p.gradient, p.brick_size, p.mortar, p.agate_turb, p.turbulence,
-                           NoiseGenerator::range_corrected};
+  r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
+                           p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected};
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
@@ -71,7 +75,10 @@ bool pigment_has_transparency(const Pigment& p) {
 
 void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator) {
   for (auto& m : materials)
-    for (auto& layer : m.layers) set_generator(layer.pigment, generator);
+    for (auto& layer : m.layers) {
+      set_generator(layer.pigment, generator);
+      if (layer.normal) set_generator(layer.normal->pattern, generator);
+    }
 }
 
 }  // namespace povtrace::render

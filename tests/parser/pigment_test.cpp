@@ -93,10 +93,10 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("non-brick"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { average } }\n")
                 .bare_message().find("pigment_map"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { repeat x } } }\n")
-                .bare_message().find("unsupported: the warp 'repeat'"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 crackle] [1 rgb 1] } } }\n")
-                .bare_message().find("unsupported: the pigment item 'crackle'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n")
+                .bare_message().find("unsupported: the warp 'black_hole'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 spiral1 2] [1 rgb 1] } } }\n")
+                .bare_message().find("unsupported: the pigment item 'spiral1'"), std::string::npos);
 }
 
 TEST(PigmentParse, GlobalNoiseGenerator) {
@@ -104,6 +104,37 @@ TEST(PigmentParse, GlobalNoiseGenerator) {
   EXPECT_FALSE(scene("global_settings { }\n").settings.noise_generator);
   EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 3 }\n")
                 .bare_message().find("unsupported: the global setting 'noise_generator 3'"), std::string::npos);
+}
+
+TEST(PigmentParse, CrackleParameters) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 pigment { crackle metric 1 form <1, 0.5, 0> offset 0.2 solid } }\n"
+      "sphere { 0, 1 pigment { crackle } }\n");
+  const CrackleParams& c = pigment_of(s, 0).crackle;
+  EXPECT_EQ(c.metric, 1.0);
+  EXPECT_EQ(c.form, (Vec3{1, 0.5, 0}));
+  EXPECT_EQ(c.offset, 0.2);
+  EXPECT_TRUE(c.solid);
+  EXPECT_EQ(pigment_of(s, 1).crackle, CrackleParams{});
+  EXPECT_EQ(pigment_of(s, 1).crackle.form, (Vec3{-1, 1, 0}));   // POV-Ray's default form
+  const ParseError e = parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo metric 1 } }\n");
+  EXPECT_NE(std::string(e.what()).find("non-crackle"), std::string::npos) << e.what();
+}
+
+TEST(PigmentParse, RepeatWarp) {
+  const SceneDescription s = scene("sphere { 0, 1 pigment { onion scale 2 warp { repeat y*0.5 offset x flip <1, 0, 1> } } }\n");
+  const Pigment& p = pigment_of(s);
+  ASSERT_EQ(p.warps.size(), 1u);
+  ASSERT_TRUE(p.warps[0].repeat);
+  EXPECT_EQ(p.warps[0].repeat->axis, 1);
+  EXPECT_EQ(p.warps[0].repeat->width, 0.5);
+  EXPECT_EQ(p.warps[0].repeat->offset, (Vec3{1, 0, 0}));
+  EXPECT_EQ(p.warps[0].repeat->flip, (Vec3{-1, 1, -1}));
+  EXPECT_EQ(p.warps[0].before, Matrix::scaling({2, 2, 2}));   // the transform written before the warp
+  EXPECT_NE(std::string(parse_error("#version 3.7;\nsphere { 0, 1 pigment { onion warp { repeat <1, 1, 0> } } }\n")
+                            .what()).find("only repeat along 1 axis"), std::string::npos);
+  EXPECT_NE(std::string(parse_error("#version 3.7;\nsphere { 0, 1 pigment { onion warp { repeat 0*x } } }\n")
+                            .what()).find("no axis specified"), std::string::npos);
 }
 
 }  // namespace

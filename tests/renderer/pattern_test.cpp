@@ -254,5 +254,24 @@ TEST(NoisePatterns, ValuesStayInRange) {
   }
 }
 
+// warp { repeat x*2 offset <0, 1, 0> flip x }: x = 5.5 lies in slab 2 (even) at 1.5, shifted 2 along y; x = 3.5
+// lies in slab 1 (odd) at 1.5, mirrored to −1.5 and moved back into the slab (2 − 1.5), shifted 1 along y.
+TEST(Pattern, RepeatWarpMapsEverySlabOntoTheFirst) {
+  RenderPigment p;
+  PatternStep step;
+  step.repeat = RepeatWarp{0, 2.0, {0, 1, 0}, {-1, 1, 1}};
+  p.steps.push_back(step);
+  const Vec3 even = to_pattern_space(p, {5.5, 0.25, 0.75});
+  EXPECT_DOUBLE_EQ(even.x, 1.5);
+  EXPECT_DOUBLE_EQ(even.y, 2.25);
+  const Vec3 odd = to_pattern_space(p, {3.5, 0.25, 0.75});
+  EXPECT_DOUBLE_EQ(odd.x, 0.5);
+  EXPECT_DOUBLE_EQ(odd.y, 1.25);
+  EXPECT_DOUBLE_EQ(odd.z, 0.75);
+  const Vec3 negative = to_pattern_space(p, {-0.5, 0, 0});   // slab −1 is odd too
+  EXPECT_DOUBLE_EQ(negative.x, 0.5);
+  EXPECT_DOUBLE_EQ(negative.y, -1.0);
+}
+
 }  // namespace
 }  // namespace povtrace::render

@@ -1,0 +1,146 @@
+// normal { [N_id] [pattern [, amount]] modifiers } (POV-Ray 3.7 parstxtr.cpp Parse_Tnormal and Parse_Pattern with
+// NORMAL_TYPE): the normal-only patterns, any pigment pattern used as a normal, the amount after the pattern,
+// bump_size, accuracy, no_bump_scale, slope_map, and the pattern modifiers shared with pigments.
+#include "parser/interpreter.hpp"
+#include "parser/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+struct NormalOnly {
+  std::string_view keyword;
+  NormalKind kind;
+};
+constexpr NormalOnly kNormalOnly[] = {
+    {"bumps", NormalKind::bumps},       {"dents", NormalKind::dents}, {"wrinkles", NormalKind::wrinkles},
+    {"ripples", NormalKind::ripples},   {"waves", NormalKind::waves},
+};
+
+double single(double d) { return static_cast<double>(static_cast<float>(d)); }
+
+// POV-Ray sets the sampling distance of the list patterns back to its default when they are (re)selected.
+constexpr double kDefaultAccuracy = 0.02;
+}  // namespace
+
+// The pattern keyword of a normal: a normal-only pattern, a list pattern (whose entries, when written, are
+// normals: refused by name until normal maps are rendered) or any pigment pattern povtrace renders.
+bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
+  for (const auto& k : kNormalOnly)
+    if (t.is(k.keyword)) {
+      n.kind = k.kind;
+      n.has_type = true;
+      return true;
+    }
+  if (t.is("checker") || t.is("hexagon") || t.is("brick")) {
+    const PatternKind kind = t.is("checker") ? PatternKind::checker
+                             : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
+    if (kind == PatternKind::brick && n.pattern.pattern != PatternKind::brick) {
+      n.pattern.brick_size = {8, 3, 4.5};
+      n.pattern.mortar = single(0.5 - 2e-10);
+    }
+    n.kind = NormalKind::pattern;
+    n.pattern.pattern = kind;
+    n.pattern.frequency = 0.0;
+    n.accuracy = kDefaultAccuracy;
+    n.has_type = true;
+    while (peek().is("normal")) {   // Parse_Blend_List with NORMAL_TYPE
+      const Token entry = next();
+      taint(n.unsupported, skip_unsupported(entry, "normal entries of a list pattern in normal { }"));
+      accept(",");
+    }
+    return true;
+  }
+  if (t.is("average")) return false;   // an average of normals needs a normal_map: refused by name
+  if (try_pattern(t, n.pattern)) {
+    n.kind = NormalKind::pattern;
+    n.has_type = true;
+    return true;
+  }
+  return false;
+}
+
+// `slope_map { [v, <height, slope>] … }` (Parse_Blend_Map with SLOPE_TYPE). The normal-only patterns ignore it.
+std::vector<SlopeEntry> Interpreter::parse_slope_map(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'slope_map'");
+  std::vector<SlopeEntry> entries;
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (!t.is("[")) fail_expected(t, "'[' starting a slope_map entry, or '}'");
+    if (entries.size() >= 256) fail_at(t, "too many entries in the map: POV-Ray allows at most 256");
+    SlopeEntry e;
+    e.value = single(parse_float());
+    accept(",");
+    const Token at = peek();
+    const Numeric v = parse_additive();
+    if (v.terms < 2) fail_at(at, "expected <height, slope> in the slope_map entry");
+    e.height = v.v[0];
+    e.slope = v.v[1];
+    expect("]", " closing the slope_map entry");
+    entries.push_back(e);
+  }
+  if (entries.empty()) fail_at(keyword, "a map needs at least one entry");
+  return entries;
+}
+
+bool Interpreter::try_normal_modifier(const Token& t, Normal& n) {
+  Matrix m;
+  if (try_transform(t, m)) {
+    n.pattern.world_from_pattern = n.pattern.world_from_pattern * m;
+    return true;
+  }
+  if (t.is("bump_size")) { n.amount = parse_float(); return true; }
+  if (t.is("accuracy")) { n.accuracy = parse_float(); return true; }
+  if (t.is("no_bump_scale")) { n.no_bump_scale = true; return true; }
+  if (t.is("slope_map")) {
+    const PatternKind k = n.pattern.pattern;
+    if (n.kind == NormalKind::pattern &&
+        (k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick))
+      fail_at(t, "slope_map cannot be used with this normal type (as in POV-Ray)");
+    n.slope_map = parse_slope_map(t);
+    return true;
+  }
+  if (t.is("color_map") || t.is("colour_map") || t.is("pigment_map"))
+    fail_at(t, "'" + std::string(t.text) + "' can only be used in a pigment");
+  if (t.is("normal_map")) {
+    taint(n.unsupported, skip_unsupported(t, "'normal_map'"));
+    return true;
+  }
+  return try_pattern_modifier(t, n.pattern);
+}
+
+Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'normal'");
+  Normal n = start;
+  n.loc = keyword.loc;
+  Token t = next();
+  if (const Value* v = lookup(t); v && std::holds_alternative<Boxed<Normal>>(*v)) {
+    n = *std::get<Boxed<Normal>>(*v);
+    t = next();
+  }
+  if (try_normal_pattern(t, n)) {
+    accept(",");
+    n.amount = optional_float(n.amount);
+    t = next();
+  }
+  while (!t.is("}")) {
+    if (try_normal_modifier(t, n)) { t = next(); continue; }
+    if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
+      taint(n.unsupported, skip_unsupported(t, "the normal item '" + std::string(t.text) + "'"));
+      t = next();
+      continue;
+    }
+    fail_expected(t, "a normal pattern, bump_size, accuracy, a transform or '}' in normal { }");
+  }
+  taint(n.unsupported, n.pattern.unsupported);
+  if (!n.has_type && !n.unsupported) fail_at(keyword, "no normal type given (as in POV-Ray)");
+  return n;
+}
+
+Normal Interpreter::starting_normal(const std::optional<Normal>& current) const {
+  if (current) return *current;
+  const auto& defaults = default_texture().layers.back().normal;
+  return defaults ? *defaults : Normal{};
+}
+
+}  // namespace povtrace::sdl

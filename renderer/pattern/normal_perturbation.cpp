@@ -1,0 +1,149 @@
+#include "renderer/pattern/normal_perturbation.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "renderer/pattern/render_pigment.hpp"
+#include "renderer/tracer.hpp"
+
+namespace povtrace::render {
+
+namespace {
+// The four vertices of a regular tetrahedron around the origin (one on +y), at which POV-Ray samples a pattern
+// normal's pattern; the decimals are those POV-Ray uses (√(8/9), √(2/9), √(2/3) and 1/3 to nine places).
+constexpr std::array<Vec3, 4> kPyramid = {{{0.942809041, -0.333333333, 0.0},
+                                           {-0.471404521, -0.333333333, 0.816496581},
+                                           {-0.471404521, -0.333333333, -0.816496581},
+                                           {0.0, 1.0, 0.0}}};
+
+// Pattern normals: the sum of the tetrahedron's vertices weighted by the pattern there, scaled by
+// −5·amount·(0.02/accuracy) — POV-Ray's "fudge factor", which makes the default accuracy 0.02 a plain −5.
+constexpr double kSlopeFudge = -5.0;
+constexpr double kDefaultAccuracy = 0.02;
+
+Vec3 pattern_slope(const RenderNormal& n, Vec3 p) {
+  const double amount = n.amount * kSlopeFudge * (kDefaultAccuracy / n.accuracy);
+  Vec3 sum{0, 0, 0};
+  for (const Vec3& v : kPyramid) sum += v * (slope_value(n, p + v * n.accuracy) * amount);
+  return sum;
+}
+
+// ripples: each source's distance d from the point gives a sine of d·frequency + phase; the normal is pushed
+// along the direction from the source, the sum averaged over the sources.
+Vec3 ripples(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& waves, bool per_source_frequency) {
+  Vec3 sum{0, 0, 0};
+  const double count = static_cast<double>(waves.size());
+  for (const WaveSource& w : waves) {
+    const Vec3 d = p - w.centre;
+    double len = length(d);
+    if (len == 0.0) len = 1.0;
+    const double f = per_source_frequency ? w.frequency : 1.0;
+    const double s = cycloidal(len * n.pattern.wave.frequency * f + n.pattern.wave.phase) * n.amount / f;
+    sum += d * (s / (len * count));
+  }
+  return sum;
+}
+
+// wrinkles: ten octaves of the absolute vector noise, each at twice the frequency and half the weight.
+Vec3 wrinkles(Vec3 p) {
+  constexpr int kOctaves = 10;
+  Vec3 sum{0, 0, 0};
+  double scale = 1.0;
+  for (int i = 0; i < kOctaves; ++i, scale *= 2.0) {
+    const Vec3 v = vector_noise(p * scale);
+    sum += Vec3{std::fabs(v.x / scale), std::fabs(v.y / scale), std::fabs(v.z / scale)};
+  }
+  return sum;
+}
+
+Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& waves) {
+  switch (n.kind) {
+    case NormalKind::pattern: return pattern_slope(n, p);
+    case NormalKind::bumps: return vector_noise(p) * n.amount;
+    case NormalKind::dents: {
+      const double v = noise(p, n.pattern.params.noise_generator);
+      return vector_noise(p) * (v * v * v * n.amount);
+    }
+    case NormalKind::wrinkles: return wrinkles(p) * n.amount;
+    case NormalKind::ripples: return ripples(n, p, waves, false);
+    case NormalKind::waves: return ripples(n, p, waves, true);
+  }
+  return {0, 0, 0};
+}
+
+// POV-Ray's Hermite_Cubic between two slope_map entries (height and slope at each end, t in [0, 1]).
+double hermite(double t, const SlopeEntry& a, const SlopeEntry& b) {
+  const double t2 = t * t, t3 = t2 * t;
+  return a.height * (2 * t3 - 3 * t2 + 1) + a.slope * (t3 - 2 * t2 + t) + b.height * (3 * t2 - 2 * t3) +
+         b.slope * (t3 - t2);
+}
+
+double slope_map(const std::vector<SlopeEntry>& map, double value) {
+  if (map.empty()) return value;
+  std::size_t cur = 0;
+  if (value >= map.back().value) cur = map.size() - 1;
+  else
+    while (value > map[cur].value) ++cur;
+  if (cur == 0 || value == map[cur].value || value >= map.back().value) return map[cur].height;
+  const SlopeEntry& prev = map[cur - 1];
+  return hermite((value - prev.value) / (map[cur].value - prev.value), prev, map[cur]);
+}
+
+Vec3 normalized_unless(bool keep, Vec3 v) { return keep ? v : normalize(v); }
+}  // namespace
+
+double slope_value(const RenderNormal& n, Vec3 p) {
+  return slope_map(n.slope_map, apply_wave(pattern_value(n.pattern.params, p), n.pattern.wave));
+}
+
+RenderNormal build_render_normal(const Normal& normal) {
+  RenderNormal r;
+  r.kind = normal.kind;
+  Pigment carrier = normal.pattern;
+  // The normal-only patterns evaluate no pattern of their own; the carrier only moves the point (as a pattern
+  // with a value would: POV-Ray applies the classic turbulence to every pattern but marble and wood).
+  if (normal.kind != NormalKind::pattern) carrier.pattern = PatternKind::bozo;
+  r.pattern = build_render_pigment(carrier);
+  r.pattern.children.clear();
+  r.pattern.map.clear();
+  Matrix pattern_from_world;
+  for (const PatternStep& s : r.pattern.steps)
+    if (s.transformed) pattern_from_world = pattern_from_world * s.pattern_from_world;
+  r.transformed = !(pattern_from_world == Matrix::identity());
+  r.pattern_from_world = pattern_from_world;
+  r.world_from_pattern = pattern_from_world.inverse();
+  r.amount = normal.amount;
+  r.accuracy = normal.accuracy;
+  r.no_bump_scale = normal.no_bump_scale;
+  r.slope_map = normal.slope_map;
+  return r;
+}
+
+// Warp_Normal, the perturbation, UnWarp_Normal: without no_bump_scale the normal is unit length in pattern space
+// when bent and is normalised again on the way back, so scaling a normal scales its bumps with it.
+Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, Vec3 world_point, const std::vector<WaveSource>& waves) {
+  const bool keep = n.no_bump_scale;
+  Vec3 v = normalized_unless(keep, normal);
+  if (n.transformed) v = normalized_unless(keep, n.world_from_pattern.normal_from_inverse(v));
+  v += displacement(n, to_pattern_space(n.pattern, world_point), waves);
+  v = normalized_unless(keep, v);
+  if (n.transformed) v = n.pattern_from_world.normal_from_inverse(v);
+  return normalize(v);
+}
+
+std::vector<WaveSource> make_wave_sources(int count) {
+  std::vector<WaveSource> sources;
+  std::uint32_t state = static_cast<std::uint32_t>(-560851967);
+  constexpr double kUnit = 0.000030518509476;   // 1/32767, as POV-Ray writes it
+  constexpr double kLowest = 0.01;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 d = vector_noise(Vec3{static_cast<double>(i), 0, 0});
+    state = state * 1812433253u + 12345u;
+    const double bits = static_cast<double>((state >> 16) & 0x7FFFu);
+    sources.push_back(WaveSource{normalize(d), bits * kUnit + kLowest});
+  }
+  return sources;
+}
+
+}  // namespace povtrace::render

@@ -1,0 +1,106 @@
+// normal { } as the parser records it (POV-Ray's Parse_Tnormal): the kind, the amount after the pattern,
+// bump_size, accuracy, no_bump_scale, slope_map, transforms, declared normals, #default and what stays refused.
+#include <gtest/gtest.h>
+
+#include "parse_helpers.hpp"
+
+namespace povtrace::test {
+namespace {
+
+const Normal& normal_of(const SceneDescription& s, std::size_t object = 0, std::size_t layer = 0) {
+  const auto& n = s.objects.at(object).texture->layers.at(layer).normal;
+  if (!n) throw std::runtime_error("the layer has no normal");
+  return *n;
+}
+SceneDescription scene(const std::string& body) { return parse("#version 3.7;\n" + body); }
+
+TEST(NormalParse, NormalOnlyPatternWithAmountAndTransform) {
+  const SceneDescription s = scene("sphere { 0, 1 normal { bumps 0.3 scale 2 } }\n");
+  const Normal& n = normal_of(s);
+  EXPECT_EQ(n.kind, NormalKind::bumps);
+  EXPECT_EQ(n.amount, 0.3);
+  EXPECT_EQ(n.pattern.world_from_pattern, Matrix::scaling({2, 2, 2}));
+  EXPECT_EQ(n.accuracy, 0.02);   // POV-Ray's default Delta
+  EXPECT_FALSE(n.no_bump_scale);
+}
+
+TEST(NormalParse, PatternNormalWithCommaAmountAccuracyAndNoBumpScale) {
+  const SceneDescription s = scene("plane { y, 0 normal { gradient x, 0.7 accuracy 0.1 no_bump_scale } }\n");
+  const Normal& n = normal_of(s);
+  EXPECT_EQ(n.kind, NormalKind::pattern);
+  EXPECT_EQ(n.pattern.pattern, PatternKind::gradient);
+  EXPECT_EQ(n.amount, 0.7);
+  EXPECT_EQ(n.accuracy, 0.1);
+  EXPECT_TRUE(n.no_bump_scale);
+}
+
+TEST(NormalParse, DefaultAmountIsOneHalfAndBumpSizeReplacesIt) {
+  const SceneDescription s = scene("sphere { 0, 1 normal { dents } }\nsphere { 0, 1 normal { dents 2 bump_size 3 } }\n");
+  EXPECT_EQ(normal_of(s, 0).amount, 0.5);
+  EXPECT_EQ(normal_of(s, 1).amount, 3.0);
+}
+
+TEST(NormalParse, DeclaredNormalIsEditedAsACopy) {
+  const SceneDescription s = scene(
+      "#declare N = normal { ripples 0.4 frequency 3 }\n"
+      "sphere { 0, 1 texture { pigment { rgb 1 } normal { N bump_size 0.9 } } }\n"
+      "sphere { 0, 1 normal { N } }\n");
+  EXPECT_EQ(normal_of(s, 0).kind, NormalKind::ripples);
+  EXPECT_EQ(normal_of(s, 0).amount, 0.9);
+  EXPECT_EQ(normal_of(s, 0).pattern.frequency, 3.0);
+  EXPECT_EQ(normal_of(s, 1).amount, 0.4);
+}
+
+TEST(NormalParse, DefaultNormalReachesUntexturedObjectsAndTextureTransformsMoveIt) {
+  const SceneDescription s = scene(
+      "#default { normal { wrinkles 0.2 } }\n"
+      "sphere { 0, 1 }\n"
+      "sphere { 0, 1 texture { pigment { rgb 1 } translate x } }\n");
+  EXPECT_EQ(normal_of(s, 0).kind, NormalKind::wrinkles);
+  EXPECT_EQ(normal_of(s, 1).kind, NormalKind::wrinkles);   // a texture starts from the #default texture
+  EXPECT_EQ(normal_of(s, 1).pattern.world_from_pattern, Matrix::translation({1, 0, 0}));
+}
+
+TEST(NormalParse, ObjectTransformsMoveTheNormalAndLayersKeepTheirOwn) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 texture { pigment { rgb 1 } normal { onion } } texture { pigment { rgbt 1 } } scale 2 }\n");
+  ASSERT_EQ(s.objects[0].texture->layers.size(), 2u);
+  EXPECT_EQ(normal_of(s, 0, 0).pattern.world_from_pattern, Matrix::scaling({2, 2, 2}));
+  EXPECT_FALSE(s.objects[0].texture->layers[1].normal);
+}
+
+TEST(NormalParse, SlopeMapEntries) {
+  const SceneDescription s = scene("plane { y, 0 normal { gradient x slope_map { [0 <0, 1>] [0.5, <1, 0>] } } }\n");
+  const Normal& n = normal_of(s);
+  ASSERT_EQ(n.slope_map.size(), 2u);
+  EXPECT_EQ(n.slope_map[1].value, 0.5);
+  EXPECT_EQ(n.slope_map[1].height, 1.0);
+  EXPECT_EQ(n.slope_map[0].slope, 1.0);
+}
+
+TEST(NormalParse, ListPatternNormalHasNoFrequency) {
+  const SceneDescription s = scene("plane { y, 0 normal { brick 0.8 } }\n");
+  const Normal& n = normal_of(s);
+  EXPECT_EQ(n.pattern.pattern, PatternKind::brick);
+  EXPECT_EQ(n.pattern.frequency, 0.0);
+  EXPECT_EQ(n.amount, 0.8);
+}
+
+TEST(NormalParse, ErrorsAndRefusals) {
+  EXPECT_NE(std::string(parse_error("#version 3.7;\nsphere { 0, 1 normal { scale 2 } }\n").what())
+                .find("no normal type given"),
+            std::string::npos);
+  EXPECT_NE(std::string(parse_error("#version 3.7;\nsphere { 0, 1 normal { bumps color_map { [0 rgb 1] } } }\n")
+                            .what())
+                .find("can only be used in a pigment"),
+            std::string::npos);
+  const ParseError entries =
+      parse_error("#version 3.7;\nplane { y, 0 normal { checker normal { bumps }, normal { dents } } }\n");
+  EXPECT_NE(std::string(entries.what()).find("normal entries of a list pattern"), std::string::npos)
+      << entries.what();
+  const ParseError map = parse_error("#version 3.7;\nplane { y, 0 normal { bozo normal_map { [0 bumps] } } }\n");
+  EXPECT_NE(std::string(map.what()).find("'normal_map'"), std::string::npos) << map.what();
+}
+
+}  // namespace
+}  // namespace povtrace::test
