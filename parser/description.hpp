@@ -158,7 +158,10 @@ struct Cone { Vec3 end1; double radius1 = 1; Vec3 end2{0, 1, 0}; double radius2 
 struct Disc { Vec3 centre; Vec3 normal{0, 0, 1}; double radius = 1, hole_radius = 0; };   // normal unit length
 struct Torus { double major = 0, minor = 0; bool sturm = false; };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus>;
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
+struct Superellipsoid { double e = 1, n = 1; };
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Superellipsoid>;
 
 struct Object {
   Shape shape;

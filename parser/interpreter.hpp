@@ -12,6 +12,7 @@
 //   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
+//   implicit_shapes.cpp superellipsoid, blob
 #pragma once
 
 #include <functional>
@@ -254,6 +255,10 @@ class Interpreter {
   // `sturm [bool]` as an object modifier: legal only on a torus among the rendered shapes (POV-Ray's
   // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
+
+  // ---- superellipsoid, blob (implicit_shapes.cpp) ----
+  std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
+  Object parse_superellipsoid(const Token& keyword);
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

@@ -108,6 +108,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
   if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
   if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
+  if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
   return std::nullopt;
 }
 
@@ -152,6 +153,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Cone&) const { throw std::logic_error("inside() of a cone"); }
     bool operator()(const Disc&) const { throw std::logic_error("inside() of a disc"); }
     bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
+    bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -193,6 +195,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Cone&) const { throw std::logic_error("extent of a cone"); }
     BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
     BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
+    BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

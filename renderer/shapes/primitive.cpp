@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/many_roots.hpp"
 
 namespace povtrace::render {
 
@@ -46,6 +47,10 @@ Intersections intersect_torus(const Primitive& p, const Ray& ray);
 Vec3 torus_normal(const Primitive& p, Vec3 world_point);
 bool inside_torus(const Primitive& p, Vec3 world_point);
 Bounds torus_object_bounds(const Primitive& p);
+
+Vec3 superellipsoid_normal(const Primitive& p, Vec3 world_point);
+bool inside_superellipsoid(const Primitive& p, Vec3 world_point);
+Bounds superellipsoid_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -69,16 +74,19 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::cone: return shapes::intersect_cone(p, ray);
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
+    case ShapeType::superellipsoid: return shapes::first_roots(p, ray);
   }
   return {};
 }
 
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+  if (shapes::has_many_roots(p.type)) return shapes::collect_many_roots(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
 
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+  if (shapes::has_many_roots(p.type)) return shapes::nearest_of_many_roots(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -100,6 +108,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::cone: return shapes::cone_normal(p, world_point);
     case ShapeType::disc: return shapes::disc_normal(p, world_point);
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
+    case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
   }
   return {};
 }
@@ -113,6 +122,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::cone: return shapes::inside_cone(p, world_point);
     case ShapeType::disc: return shapes::inside_disc(p, world_point);
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
+    case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
   }
   return false;
 }
@@ -140,6 +150,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::cone: return to_world(p, shapes::cone_object_bounds(p));
     case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
+    case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
   }
   return {};
 }
