@@ -161,7 +161,16 @@ struct Torus { double major = 0, minor = 0; bool sturm = false; };
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
 struct Superellipsoid { double e = 1, n = 1; };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Superellipsoid>;
+// height_field { png "file" [smooth] [water_level W] }: the image file's path (located by the parser, read by the
+// renderer); water_level as a fraction of the full height.
+struct HeightField {
+  std::string file;
+  SourceLoc file_loc;
+  bool smooth = false;
+  double water_level = 0;
+};
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Superellipsoid, HeightField>;
 
 struct Object {
   Shape shape;

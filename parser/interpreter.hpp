@@ -13,6 +13,7 @@
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   implicit_shapes.cpp superellipsoid, blob
+//   height_field.cpp  height_field
 #pragma once
 
 #include <functional>
@@ -259,6 +260,11 @@ class Interpreter {
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----
   std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
   Object parse_superellipsoid(const Token& keyword);
+
+  // ---- height_field (height_field.cpp) ----
+  Object parse_height_field(const Token& keyword);
+  void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
+  std::string locate_image_file(const std::string& name) const;
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

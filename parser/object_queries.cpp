@@ -109,6 +109,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
   if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
+  if (std::holds_alternative<HeightField>(o.shape)) return std::string("the shape 'height_field'");
   return std::nullopt;
 }
 
@@ -154,6 +155,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Disc&) const { throw std::logic_error("inside() of a disc"); }
     bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
     bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
+    bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -196,6 +198,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
     BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
     BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
+    BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

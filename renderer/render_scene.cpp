@@ -87,6 +87,9 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.b = shape.b;
     p.radius = shape.radius;
     p.data = shape.data;
+    p.transformed = shape.transformed;
+    p.world_from_object = shape.world_from_object;
+    p.object_from_world = shape.object_from_world;
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }

@@ -28,5 +28,6 @@ void collect_many_roots(const Primitive& p, const Ray& ray, HitBuffer& out);
 bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
 
 void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out);
+void height_field_roots(const Primitive& p, const Ray& ray, RootList& out);
 
 }  // namespace povtrace::render::shapes

@@ -51,6 +51,11 @@ Bounds torus_object_bounds(const Primitive& p);
 Vec3 superellipsoid_normal(const Primitive& p, Vec3 world_point);
 bool inside_superellipsoid(const Primitive& p, Vec3 world_point);
 Bounds superellipsoid_object_bounds(const Primitive& p);
+
+Vec3 height_field_normal(const Primitive& p, Vec3 world_point);
+Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
+bool inside_height_field(const Primitive& p, Vec3 world_point);
+Bounds height_field_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -74,7 +79,8 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::cone: return shapes::intersect_cone(p, ray);
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
-    case ShapeType::superellipsoid: return shapes::first_roots(p, ray);
+    case ShapeType::superellipsoid:
+    case ShapeType::height_field: return shapes::first_roots(p, ray);
   }
   return {};
 }
@@ -97,7 +103,11 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
   return false;
 }
 
-Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) { return surface_normal(*hit.leaf, world_point); }
+Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
+  // A height field's flat triangles: the one hit decides (POV-Ray keeps its normal with the intersection).
+  if (hit.leaf->type == ShapeType::height_field) return shapes::height_field_hit_normal(*hit.leaf, hit.element, world_point);
+  return surface_normal(*hit.leaf, world_point);
+}
 
 Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
   switch (p.type) {
@@ -109,6 +119,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::disc_normal(p, world_point);
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
     case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
+    case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
   }
   return {};
 }
@@ -123,6 +134,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::disc: return shapes::inside_disc(p, world_point);
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
     case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
+    case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
   }
   return false;
 }
@@ -151,6 +163,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::disc: return to_world(p, shapes::disc_object_bounds(p));
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
     case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
+    case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
   }
   return {};
 }

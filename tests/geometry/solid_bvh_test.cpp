@@ -1,10 +1,11 @@
-// The accelerator with superellipsoids mixed in among spheres and boxes: closest hits equal brute force for
+// The accelerator with superellipsoids and height fields mixed in among spheres and boxes: closest hits equal brute force for
 // seeded random rays.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "quadric_kit.hpp"
+#include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 
 namespace {
@@ -21,8 +22,14 @@ TEST(SolidBvh, ClosestHitEqualsBruteForce) {
     const Vec3 c{pos(rng), pos(rng), pos(rng)};
     const Matrix m = u(rng) < 0.5 ? Matrix::translation(c) : random_transform(rng) * Matrix::translation(c);
     Primitive p;
-    switch (k % 3) {
+    switch (k % 4) {
       case 0: p = make_superellipsoid(Superellipsoid{expo(rng), expo(rng)}, m); break;
+      case 3: {
+        std::vector<std::uint16_t> h(20);
+        for (auto& v : h) v = static_cast<std::uint16_t>(65535 * u(rng));
+        p = place_height_field(height_field_data(h, 5, 4, 0, k % 8 == 3), Matrix::scaling({3, 2, 3}) * m);
+        break;
+      }
       case 1: p = sphere(c, small(rng)); break;
       default: p = box(c, c + Vec3{small(rng), small(rng), small(rng)}); break;
     }
@@ -39,7 +46,7 @@ TEST(SolidBvh, ClosestHitEqualsBruteForce) {
     if (!fast.found()) continue;
     EXPECT_EQ(fast.t, slow.t) << "ray " << k;
     EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
-    solid_hits += fast.primitive % 3 == 0;
+    solid_hits += fast.primitive % 4 == 0 || fast.primitive % 4 == 3;
   }
   EXPECT_GT(solid_hits, 100);
 }

@@ -28,5 +28,31 @@ TEST(SolidShapes, SuperellipsoidExponents) {
   EXPECT_NE(e.bare_message().find("expected a 2-D vector"), std::string::npos) << e.bare_message();
 }
 
+TEST(SolidShapes, HeightFieldImageAndOptions) {
+  auto s = parse("#version 3.7;\nheight_field { png \"hills.png\" gamma 1 smooth water_level 0.25 hierarchy off "
+                 "translate y }\n");
+  auto h = std::get<HeightField>(only_object(s).shape);
+  EXPECT_EQ(h.file, "hills.png");   // not found: kept as written, the renderer reports it
+  EXPECT_EQ(h.file_loc.line, 2);
+  EXPECT_EQ(h.file_loc.column, 20);
+  EXPECT_TRUE(h.smooth);
+  EXPECT_EQ(h.water_level, 0.25);
+  s = parse("#version 3.7;\nheight_field { \"a.PNG\" }\n");   // the type from the extension
+  EXPECT_FALSE(std::get<HeightField>(only_object(s).shape).smooth);
+  s = parse("#version 1.0;\nheight_field { png \"a.png\" water_level 64 }\n");   // before 2.0: W / 256
+  EXPECT_EQ(std::get<HeightField>(only_object(s).shape).water_level, 0.25);
+}
+
+TEST(SolidShapes, HeightFieldsPovtraceDoesNotReadAreRefusedByName) {
+  ParseError e = parse_error("#version 3.7;\nheight_field { tga \"a.tga\" smooth }\n");
+  EXPECT_NE(e.bare_message().find("a height_field read from a tga image"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { \"a.jpg\" }\n");
+  EXPECT_NE(e.bare_message().find("read from a '.jpg' image"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { function 20, 20 { x * y } smooth }\n");
+  EXPECT_NE(e.bare_message().find("a height_field made from a function"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { png \"a.png\" gamma 2.2 }\n");
+  EXPECT_NE(e.bare_message().find("decoded with a gamma"), std::string::npos) << e.bare_message();
+}
+
 }  // namespace
 }  // namespace povtrace::test
