@@ -170,7 +170,25 @@ struct HeightField {
   double water_level = 0;
 };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Superellipsoid, HeightField>;
+// One blob component as POV-Ray's parser leaves it: a sphere keeps its centre and squared radius through
+// translations, rotations and uniform scalings; any other transform makes it an ellipsoid (centre and radius in its
+// own space, placed by `transform`). A cylinder runs from `centre` (its base) to `apex`, then `transform`.
+enum class BlobComponentKind { sphere, ellipsoid, cylinder };
+struct BlobComponent {
+  BlobComponentKind kind = BlobComponentKind::sphere;
+  Vec3 centre, apex;
+  double radius2 = 0;
+  double strength = 0;
+  Matrix transform;   // the component's own transforms (ellipsoid, cylinder)
+};
+// blob { threshold T components… [sturm] }: the components in written order, shared by copies of the object.
+struct Blob {
+  double threshold = 1;
+  bool sturm = false;
+  std::shared_ptr<const std::vector<BlobComponent>> components;
+};
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Superellipsoid, HeightField, Blob>;
 
 struct Object {
   Shape shape;

@@ -253,13 +253,17 @@ class Interpreter {
   Object parse_torus(const Token& keyword);
   bool accept_open();
   void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
-  // `sturm [bool]` as an object modifier: legal only on a torus among the rendered shapes (POV-Ray's
+  // `sturm [bool]` as an object modifier: legal only on a torus or a blob among the rendered shapes (POV-Ray's
   // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
 
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----
   std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
   Object parse_superellipsoid(const Token& keyword);
+  Object parse_blob(const Token& keyword);
+  BlobComponent parse_blob_sphere(bool old_syntax);
+  BlobComponent parse_blob_cylinder(const Token& keyword);
+  void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
 
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);

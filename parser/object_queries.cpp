@@ -110,6 +110,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
   if (std::holds_alternative<HeightField>(o.shape)) return std::string("the shape 'height_field'");
+  if (std::holds_alternative<Blob>(o.shape)) return std::string("the shape 'blob'");
   return std::nullopt;
 }
 
@@ -156,6 +157,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
     bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
     bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
+    bool operator()(const Blob&) const { throw std::logic_error("inside() of a blob"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -199,6 +201,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
     BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
     BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
+    BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -268,9 +268,10 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "torus") return parse_torus(t);
   if (k == "superellipsoid") return parse_superellipsoid(t);
   if (k == "height_field") return parse_height_field(t);
+  if (k == "blob") return parse_blob(t);
   static const std::string_view shapes[] = {
       "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
-      "lathe", "prism", "sor", "blob", "isosurface", "julia_fractal", "text",
+      "lathe", "prism", "sor", "isosurface", "julia_fractal", "text",
       "sphere_sweep", "bicubic_patch", "quadric", "cubic", "quartic", "poly", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)

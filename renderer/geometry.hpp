@@ -44,7 +44,7 @@ struct Bounds {
 };
 
 enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, superellipsoid,
-                                     height_field };
+                                     height_field, blob };
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is

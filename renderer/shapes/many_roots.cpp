@@ -7,13 +7,14 @@
 namespace povtrace::render::shapes {
 
 bool has_many_roots(ShapeType type) {
-  return type == ShapeType::superellipsoid || type == ShapeType::height_field;
+  return type == ShapeType::superellipsoid || type == ShapeType::height_field || type == ShapeType::blob;
 }
 
 void append_roots(const Primitive& p, const Ray& ray, RootList& out) {
   switch (p.type) {
     case ShapeType::superellipsoid: superellipsoid_roots(p, ray, out); return;
     case ShapeType::height_field: height_field_roots(p, ray, out); return;
+    case ShapeType::blob: blob_roots(p, ray, out); return;
     default: return;
   }
 }

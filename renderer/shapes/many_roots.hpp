@@ -29,5 +29,6 @@ bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, dou
 
 void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out);
 void height_field_roots(const Primitive& p, const Ray& ray, RootList& out);
+void blob_roots(const Primitive& p, const Ray& ray, RootList& out);
 
 }  // namespace povtrace::render::shapes

@@ -56,6 +56,10 @@ Vec3 height_field_normal(const Primitive& p, Vec3 world_point);
 Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
 bool inside_height_field(const Primitive& p, Vec3 world_point);
 Bounds height_field_object_bounds(const Primitive& p);
+
+Vec3 blob_normal(const Primitive& p, Vec3 world_point);
+bool inside_blob(const Primitive& p, Vec3 world_point);
+Bounds blob_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -80,7 +84,8 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::disc: return shapes::intersect_disc(p, ray);
     case ShapeType::torus: return shapes::intersect_torus(p, ray);
     case ShapeType::superellipsoid:
-    case ShapeType::height_field: return shapes::first_roots(p, ray);
+    case ShapeType::height_field:
+    case ShapeType::blob: return shapes::first_roots(p, ray);
   }
   return {};
 }
@@ -120,6 +125,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::torus: return shapes::torus_normal(p, world_point);
     case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
     case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
+    case ShapeType::blob: return shapes::blob_normal(p, world_point);
   }
   return {};
 }
@@ -135,6 +141,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::torus: return shapes::inside_torus(p, world_point);
     case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
     case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
+    case ShapeType::blob: return shapes::inside_blob(p, world_point);
   }
   return false;
 }
@@ -164,6 +171,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::torus: return to_world(p, shapes::torus_object_bounds(p));
     case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
     case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
+    case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
   }
   return {};
 }

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "renderer/shapes/blob.hpp"
+
 namespace povtrace::render {
 
 namespace {
@@ -23,13 +25,21 @@ Primitive make_superellipsoid(const Superellipsoid& s, const Matrix& world_from_
   return p;
 }
 
+Primitive make_blob(const Blob& b, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::blob, world_from_object);
+  p.data = blob_data(b);
+  return p;
+}
+
 bool is_solid_shape(const Shape& shape) {
-  return std::holds_alternative<Superellipsoid>(shape) || std::holds_alternative<HeightField>(shape);
+  return std::holds_alternative<Superellipsoid>(shape) || std::holds_alternative<HeightField>(shape) ||
+         std::holds_alternative<Blob>(shape);
 }
 
 Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object) {
   if (const auto* s = std::get_if<Superellipsoid>(&shape)) return make_superellipsoid(*s, world_from_object);
   if (const auto* h = std::get_if<HeightField>(&shape)) return make_height_field(*h, world_from_object);
+  if (const auto* b = std::get_if<Blob>(&shape)) return make_blob(*b, world_from_object);
   throw std::logic_error("solid_primitive of a shape that is not one of solid_shapes.hpp");
 }
 

@@ -1,4 +1,4 @@
-// The accelerator with superellipsoids and height fields mixed in among spheres and boxes: closest hits equal brute force for
+// The accelerator with superellipsoids, height fields and blobs mixed in among spheres and boxes: closest hits equal brute force for
 // seeded random rays.
 #include <gtest/gtest.h>
 
@@ -22,7 +22,17 @@ TEST(SolidBvh, ClosestHitEqualsBruteForce) {
     const Vec3 c{pos(rng), pos(rng), pos(rng)};
     const Matrix m = u(rng) < 0.5 ? Matrix::translation(c) : random_transform(rng) * Matrix::translation(c);
     Primitive p;
-    switch (k % 4) {
+    switch (k % 5) {
+      case 4: {
+        std::vector<BlobComponent> parts(2);
+        for (auto& part : parts) part.radius2 = small(rng) * small(rng), part.strength = 1;
+        parts[1].centre = random_unit(rng);
+        Blob b;
+        b.threshold = 0.3;
+        b.components = std::make_shared<std::vector<BlobComponent>>(parts);
+        p = make_blob(b, m);
+        break;
+      }
       case 0: p = make_superellipsoid(Superellipsoid{expo(rng), expo(rng)}, m); break;
       case 3: {
         std::vector<std::uint16_t> h(20);
@@ -46,7 +56,7 @@ TEST(SolidBvh, ClosestHitEqualsBruteForce) {
     if (!fast.found()) continue;
     EXPECT_EQ(fast.t, slow.t) << "ray " << k;
     EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
-    solid_hits += fast.primitive % 4 == 0 || fast.primitive % 4 == 3;
+    solid_hits += fast.primitive % 5 == 0 || fast.primitive % 5 >= 3;
   }
   EXPECT_GT(solid_hits, 100);
 }

@@ -54,5 +54,37 @@ TEST(SolidShapes, HeightFieldsPovtraceDoesNotReadAreRefusedByName) {
   EXPECT_NE(e.bare_message().find("decoded with a gamma"), std::string::npos) << e.bare_message();
 }
 
+TEST(SolidShapes, BlobComponents) {
+  auto s = parse("#version 3.7;\nblob { threshold 0.6 sphere { <1,0,0>, 2, strength 1.5 translate y scale 2 }\n"
+                 "cylinder { 0, x, 0.5, -1 } component 2, 3, <0,0,1> sphere { 0, 1 1 scale <1,2,1> } sturm }\n");
+  const auto& b = std::get<Blob>(only_object(s).shape);
+  EXPECT_EQ(b.threshold, 0.6);
+  EXPECT_TRUE(b.sturm);
+  ASSERT_EQ(b.components->size(), 4u);
+  const auto& c = *b.components;
+  EXPECT_EQ(c[0].kind, BlobComponentKind::sphere);   // translate and a uniform scale keep a sphere
+  EXPECT_EQ(c[0].centre, (Vec3{2, 2, 0}));
+  EXPECT_EQ(c[0].radius2, 16);
+  EXPECT_EQ(c[0].strength, 1.5);
+  EXPECT_EQ(c[1].kind, BlobComponentKind::cylinder);
+  EXPECT_EQ(c[1].apex, (Vec3{1, 0, 0}));
+  EXPECT_EQ(c[1].strength, -1);
+  EXPECT_EQ(c[2].strength, 2);   // component strength, radius, centre
+  EXPECT_EQ(c[2].radius2, 9);
+  EXPECT_EQ(c[2].centre, (Vec3{0, 0, 1}));
+  EXPECT_EQ(c[3].kind, BlobComponentKind::ellipsoid);   // a non-uniform scale makes an ellipsoid
+  EXPECT_EQ(c[3].transform, Matrix::scaling({1, 2, 1}));
+}
+
+TEST(SolidShapes, BlobRefusals) {
+  ParseError e = parse_error("#version 3.7;\nblob { cylinder { x, x, 1, 1 } }\n");
+  EXPECT_EQ(e.location().column, 8);
+  EXPECT_NE(e.bare_message().find("degenerate cylindrical component"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nblob { threshold 1 }\n");
+  EXPECT_NE(e.bare_message().find("at least one component"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nblob { sphere { 0, 1, 1 pigment { rgb 1 } } }\n");
+  EXPECT_NE(e.bare_message().find("a blob component's own texture"), std::string::npos) << e.bare_message();
+}
+
 }  // namespace
 }  // namespace povtrace::test
