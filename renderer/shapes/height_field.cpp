@@ -79,7 +79,7 @@ void triangle_hits(const HeightFieldData& f, int x, int z, Vec3 o, Vec3 d, doubl
 
 int clamp_cell(double v, int last) {
   const double f = std::floor(v);
-  return f < 0.0 ? 0 : f > last ? last : static_cast<int>(f);
+  return !(f >= 0.0) ? 0 : f > last ? last : static_cast<int>(f);   // NaN: 0, never an int cast of it
 }
 
 // Where the ray next crosses a cell boundary along one axis, and the depth between crossings.
@@ -124,7 +124,8 @@ Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 wor
 Vec3 height_field_normal(const Primitive& p, Vec3 world_point) {
   const HeightFieldData& f = data_of(p);
   const Vec3 q = p.object_from_world.point(world_point);
-  const int px = std::min(static_cast<int>(q.x), f.width - 2), pz = std::min(static_cast<int>(q.z), f.depth - 2);
+  // POV-Ray truncates and caps at the last cell; for the points of hits (x, z >= −1e-4) flooring and clamping agree.
+  const int px = clamp_cell(q.x, f.width - 2), pz = clamp_cell(q.z, f.depth - 2);
   const double x = q.x - px, z = q.z - pz;
   if (!f.smooth) {
     const bool upper = x + z > 1.0;

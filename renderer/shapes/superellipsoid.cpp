@@ -38,8 +38,9 @@ constexpr int max_iterations = 20;
 
 // x^e with the integer powers 0…6 multiplied out (as POV-Ray does: the results differ from pow in the last bit).
 double power(double x, double e) {
+  if (!(e >= 0.0 && e <= 6.0)) return std::pow(x, e);   // also NaN and ±inf (e = 0 written): no int cast of them
   const int i = static_cast<int>(e);
-  if (e != static_cast<double>(i) || i < 0 || i > 6) return std::pow(x, e);
+  if (e != static_cast<double>(i)) return std::pow(x, e);
   const double x2 = x * x;
   switch (i) {
     case 0: return 1.0;
