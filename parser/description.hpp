@@ -219,7 +219,38 @@ struct Poly {
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
 struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
 
-using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric>;
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
+struct Superellipsoid { double e = 1, n = 1; };
+
+// height_field { png "file" [smooth] [water_level W] }: the image file's path (located by the parser, read by the
+// renderer); water_level as a fraction of the full height.
+struct HeightField {
+  std::string file;
+  SourceLoc file_loc;
+  bool smooth = false;
+  double water_level = 0;
+};
+
+// One blob component as POV-Ray's parser leaves it: a sphere keeps its centre and squared radius through
+// translations, rotations and uniform scalings; any other transform makes it an ellipsoid (centre and radius in its
+// own space, placed by `transform`). A cylinder runs from `centre` (its base) to `apex`, then `transform`.
+enum class BlobComponentKind { sphere, ellipsoid, cylinder };
+struct BlobComponent {
+  BlobComponentKind kind = BlobComponentKind::sphere;
+  Vec3 centre, apex;
+  double radius2 = 0;
+  double strength = 0;
+  Matrix transform;   // the component's own transforms (ellipsoid, cylinder)
+};
+// blob { threshold T components… [sturm] }: the components in written order, shared by copies of the object.
+struct Blob {
+  double threshold = 1;
+  bool sturm = false;
+  std::shared_ptr<const std::vector<BlobComponent>> components;
+};
+
+using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
+                           Superellipsoid, HeightField, Blob>;
 
 struct Object {
   Shape shape;

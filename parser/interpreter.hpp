@@ -13,6 +13,8 @@
 //   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
+//   implicit_shapes.cpp superellipsoid, blob
+//   height_field.cpp  height_field
 #pragma once
 
 #include <array>
@@ -288,7 +290,7 @@ class Interpreter {
   Object parse_torus(const Token& keyword);
   bool accept_open();
   void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
-  // `sturm [bool]` as an object modifier: legal only on a torus among the rendered shapes (POV-Ray's
+  // `sturm [bool]` as an object modifier: legal only on a torus or a blob among the rendered shapes (POV-Ray's
   // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
   // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
@@ -314,6 +316,19 @@ class Interpreter {
   std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
                                                  const std::string& what);
   void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
+
+  // ---- superellipsoid, blob (implicit_shapes.cpp) ----
+  std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
+  Object parse_superellipsoid(const Token& keyword);
+  Object parse_blob(const Token& keyword);
+  BlobComponent parse_blob_sphere(bool old_syntax);
+  BlobComponent parse_blob_cylinder(const Token& keyword);
+  void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
+
+  // ---- height_field (height_field.cpp) ----
+  Object parse_height_field(const Token& keyword);
+  void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
+  std::string locate_image_file(const std::string& name) const;
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

@@ -110,6 +110,9 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Poly>(o.shape)) return std::string("the shape 'poly'");
   if (std::holds_alternative<Quadric>(o.shape)) return std::string("the shape 'quadric'");
+  if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
+  if (std::holds_alternative<HeightField>(o.shape)) return std::string("the shape 'height_field'");
+  if (std::holds_alternative<Blob>(o.shape)) return std::string("the shape 'blob'");
   return std::nullopt;
 }
 
@@ -163,6 +166,9 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Torus&) const { throw std::logic_error("inside() of a torus"); }
     bool operator()(const Poly&) const { throw std::logic_error("inside() of a poly"); }
     bool operator()(const Quadric&) const { throw std::logic_error("inside() of a quadric"); }
+    bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
+    bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
+    bool operator()(const Blob&) const { throw std::logic_error("inside() of a blob"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -235,6 +241,9 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
     BBox operator()(const Poly&) const { throw std::logic_error("extent of a poly"); }
     BBox operator()(const Quadric&) const { throw std::logic_error("extent of a quadric"); }
+    BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
+    BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
+    BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

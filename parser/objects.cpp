@@ -282,9 +282,11 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "polygon") return parse_polygon(t);
   if (k == "mesh") return parse_mesh(t);
   if (k == "mesh2") return parse_mesh2(t);
+  if (k == "superellipsoid") return parse_superellipsoid(t);
+  if (k == "height_field") return parse_height_field(t);
+  if (k == "blob") return parse_blob(t);
   static const std::string_view shapes[] = {
-      "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
-      "superellipsoid", "lathe", "prism", "sor", "blob", "height_field", "isosurface", "julia_fractal", "text",
+      "lathe", "prism", "sor", "isosurface", "julia_fractal", "text",
       "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)

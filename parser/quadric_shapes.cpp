@@ -126,16 +126,18 @@ Object Interpreter::parse_torus(const Token& keyword) {
 // skips unrendered (lathe, sor, prism, blob… which may take sturm) is left to the caller, which refuses it by name.
 bool Interpreter::try_sturm_modifier(const Token& t, Object& object) {
   if (!std::holds_alternative<Csg>(object.shape) && object.unsupported) return false;
-  auto* torus = std::get_if<Torus>(&object.shape);
-  auto* poly = std::get_if<Poly>(&object.shape);
-  if (!torus && !poly) fail_at(t, "keyword 'sturm' cannot be used with this object (POV-Ray takes it only on shapes "
-                         "solved as polynomials: torus, blob, lathe, sor, prism, ovus, poly)");
+  bool* flag = nullptr;
+  if (auto* torus = std::get_if<Torus>(&object.shape)) flag = &torus->sturm;
+  if (auto* blob = std::get_if<Blob>(&object.shape)) flag = &blob->sturm;
+  if (auto* poly = std::get_if<Poly>(&object.shape)) flag = &poly->sturm;
+  if (!flag) fail_at(t, "keyword 'sturm' cannot be used with this object (POV-Ray takes it only on shapes "
+                        "solved as polynomials: torus, blob, lathe, sor, prism, ovus, poly)");
   bool on = true;
   const Token n = peek();
   if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false") || n.is("yes") ||
       n.is("no") || n.is("(") || n.is("-") || n.is("+") || n.is("!"))
     on = parse_float() > 0.0;
-  (torus ? torus->sturm : poly->sturm) = on;
+  *flag = on;
   return true;
 }
 

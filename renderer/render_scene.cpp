@@ -3,6 +3,7 @@
 
 #include "renderer/shapes/quadric_shapes.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
+#include "renderer/shapes/solid_shapes.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -104,6 +105,16 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
   } else if (const auto* mesh = std::get_if<Mesh>(&o.shape)) {
     p.type = ShapeType::mesh;
     shapes::set_up_mesh(p, *mesh);
+  } else if (is_solid_shape(o.shape)) {
+    const Primitive shape = solid_primitive(o.shape, o.world_from_object);
+    p.type = shape.type;
+    p.a = shape.a;
+    p.b = shape.b;
+    p.radius = shape.radius;
+    p.data = shape.data;
+    p.transformed = shape.transformed;
+    p.world_from_object = shape.world_from_object;
+    p.object_from_world = shape.object_from_world;
   } else {
     throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
   }

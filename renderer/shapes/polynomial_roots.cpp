@@ -141,6 +141,16 @@ double refine_single_root(const SturmSequence& s, double lo, double hi, int chan
       }
       if (hi - lo <= 1e-15 * std::max(1.0, std::abs(t))) break;
     }
+    // False position can stall on a wide bracket whose far end is huge (a quartic's value at MAX_DISTANCE): each
+    // Illinois halving moves it only a little. POV-Ray then bisects (polysolv.cpp sbisect); so do we, on the sign.
+    for (int k = 0; k < 4 * kMaxIterations && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;
+      const double v = evaluate(f.degree, f.c.data(), mid);
+      if (v == 0.0) return mid;
+      if ((v < 0.0) == (f_lo < 0.0)) lo = mid, f_lo = v;
+      else hi = mid, f_hi = v;
+    }
     return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
   }
   for (int k = 0; k < kMaxIterations && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++k) {

@@ -7,6 +7,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
+#include "renderer/shapes/many_roots.hpp"
 
 namespace povtrace::render {
 
@@ -57,6 +58,18 @@ Intersections intersect_quadric(const Primitive& p, const Ray& ray);
 Vec3 quadric_normal(const Primitive& p, Vec3 world_point);
 bool inside_quadric(const Primitive& p, Vec3 world_point);
 Bounds quadric_world_bounds(const Primitive& p);
+Vec3 superellipsoid_normal(const Primitive& p, Vec3 world_point);
+bool inside_superellipsoid(const Primitive& p, Vec3 world_point);
+Bounds superellipsoid_object_bounds(const Primitive& p);
+
+Vec3 height_field_normal(const Primitive& p, Vec3 world_point);
+Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
+bool inside_height_field(const Primitive& p, Vec3 world_point);
+Bounds height_field_object_bounds(const Primitive& p);
+
+Vec3 blob_normal(const Primitive& p, Vec3 world_point);
+bool inside_blob(const Primitive& p, Vec3 world_point);
+Bounds blob_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -85,18 +98,23 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::triangle: return shapes::intersect_triangle(p, ray);
     case ShapeType::polygon: return shapes::intersect_polygon(p, ray);
     case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
+    case ShapeType::superellipsoid:
+    case ShapeType::height_field:
+    case ShapeType::blob: return shapes::first_roots(p, ray);
   }
   return {};
 }
 
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (p.type == ShapeType::mesh) return shapes::collect_mesh_hits(p, ray, out);
+  if (shapes::has_many_roots(p.type)) return shapes::collect_many_roots(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
 
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
   if (p.type == ShapeType::mesh) return shapes::nearest_mesh_hit(p, ray, t_min, t_max, hit);
+  if (shapes::has_many_roots(p.type)) return shapes::nearest_of_many_roots(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -109,6 +127,8 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
 
 Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::mesh) return shapes::mesh_hit_normal(hit);
+  // A height field's flat triangles: the one hit decides (POV-Ray keeps its normal with the intersection).
+  if (hit.leaf->type == ShapeType::height_field) return shapes::height_field_hit_normal(*hit.leaf, hit.element, world_point);
   return surface_normal(*hit.leaf, world_point);
 }
 
@@ -126,6 +146,9 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::triangle: return shapes::triangle_normal(p, world_point);
     case ShapeType::polygon: return shapes::polygon_normal(p, world_point);
     case ShapeType::mesh: return shapes::mesh_normal(p, world_point);
+    case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
+    case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
+    case ShapeType::blob: return shapes::blob_normal(p, world_point);
   }
   return {};
 }
@@ -144,6 +167,9 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::triangle: return false;   // POV-Ray: never inside, inverse or not
     case ShapeType::polygon: return false;
     case ShapeType::mesh: return shapes::inside_mesh(p, world_point);
+    case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
+    case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
+    case ShapeType::blob: return shapes::inside_blob(p, world_point);
   }
   return false;
 }
@@ -176,6 +202,9 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::triangle: return shapes::triangle_world_bounds(p);
     case ShapeType::polygon: return to_world(p, shapes::polygon_object_bounds(p));
     case ShapeType::mesh: return to_world(p, shapes::mesh_object_bounds(p));
+    case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
+    case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
+    case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
   }
   return {};
 }

@@ -160,4 +160,16 @@ TEST(PolynomialRoots, DifficultCoefficientsUseSturmAndStillFindTheRoots) {
   EXPECT_NEAR(v[3], 2e3, 1e-7);
 }
 
+// A blob's density quartic that stays just below its threshold on [0, 1]: its one root in [0, MAX_DISTANCE] is
+// beyond 1. The bracket [0, 1e7] has a far end of 1e29, where false position alone stalls; the root must still be
+// found to rounding, not left half way.
+TEST(PolynomialRoots, SturmRefinesARootOfAWideBracket) {
+  const double c[5] = {10.390287296376723, -20.78057459275345, 10.390287296376675, 5.1304091351867559e-14, -0.65};
+  double r[4];
+  ASSERT_EQ(solve_sturm(4, c, 0.0, 1e7, r), 1);
+  EXPECT_NEAR(r[0], 1.2071893813, 1e-9);
+  const double v = (((c[0] * r[0] + c[1]) * r[0] + c[2]) * r[0] + c[3]) * r[0] + c[4];
+  EXPECT_NEAR(v, 0.0, 1e-12);
+}
+
 }  // namespace

@@ -1,0 +1,134 @@
+// superellipsoid and blob (povray-sdl-and-geometry.md §8). Facts from POV-Ray 3.7's parser
+// (source/backend/parser/parse.cpp Parse_Superellipsoid, express.cpp Parse_UV_Vect, 3.7-stable):
+// - superellipsoid { <e, n> modifiers }: the exponents are a UV vector (a float stands for both; three or more
+//   components are an error). The shape is |x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1; the renderer derives the
+//   powers.
+// - blob { [threshold T] components… [sturm] modifiers } (Parse_Blob, Parse_Blob_Element_Mods): threshold defaults
+//   to 1 and may come between components; components are `sphere { C, R, [strength] S mods }`,
+//   `cylinder { B, A, R, [strength] S mods }` and the old `component S, R, C`. Commas are optional. A cylinder whose
+//   ends are closer than 1e-10 is an error. A sphere component keeps its centre and radius through translate,
+//   rotate and a uniform scale (centre scaled, radius² by the square); a non-uniform scale, matrix or transform turns
+//   it into an ellipsoid placed by its own transform. A component's own texture is refused by name.
+#include "parser/interpreter.hpp"
+
+namespace povtrace::sdl {
+
+// Parse_UV_Vect: a float or a 2-D vector at the parameter level.
+std::pair<double, double> Interpreter::parse_uv_vector(std::string_view context) {
+  const Token start = peek();
+  const Numeric n = parse_additive();
+  if (n.terms > 2)
+    fail_at(start, "expected a 2-D vector " + std::string(context) + ", found a " + value_type_name(Value(n)));
+  return {n.v[0], n.terms == 1 ? n.v[0] : n.v[1]};
+}
+
+Object Interpreter::parse_superellipsoid(const Token& keyword) {
+  expect("{", " after 'superellipsoid'");
+  Object o;
+  o.loc = keyword.loc;
+  Superellipsoid s;
+  std::tie(s.e, s.n) = parse_uv_vector("<e, n> of the superellipsoid");
+  o.shape = s;
+  parse_object_modifiers(o);
+  return o;
+}
+
+namespace {
+bool is_uniform_scaling(const Matrix& m) {
+  return m == Matrix::scaling({m.m[0][0], m.m[0][0], m.m[0][0]});
+}
+}  // namespace
+
+void Interpreter::parse_blob_component_modifiers(BlobComponent& c, Object& blob) {
+  while (true) {
+    const Token t = next();
+    if (t.is("}")) return;
+    Matrix m;
+    if (try_transform(t, m)) {
+      if (c.kind == BlobComponentKind::sphere && (t.is("translate") || t.is("rotate") ||
+                                                  (t.is("scale") && is_uniform_scaling(m)))) {
+        c.centre = m.point(c.centre);
+        if (t.is("scale")) c.radius2 *= m.m[0][0] * m.m[0][0];
+      } else {
+        if (c.kind == BlobComponentKind::sphere) c.kind = BlobComponentKind::ellipsoid;
+        c.transform = c.transform * m;
+      }
+    } else if (t.is("texture") || t.is("pigment") || t.is("finish") || t.is("normal")) {
+      taint(blob.unsupported, skip_unsupported(t, "a blob component's own texture"));
+    } else {
+      fail_expected(t, "a transform, texture, pigment, normal, finish or '}' in a blob component");
+    }
+  }
+}
+
+// sphere { C, R, [strength] S … } or the old `component S, R, C`.
+BlobComponent Interpreter::parse_blob_sphere(bool old_syntax) {
+  BlobComponent c;
+  if (old_syntax) {
+    c.strength = parse_float();
+    accept(",");
+    const double r = parse_float();
+    accept(",");
+    c.radius2 = r * r;
+    c.centre = parse_vector();
+    return c;
+  }
+  expect("{", " after 'sphere' in a blob");
+  c.centre = parse_vector();
+  accept(",");
+  const double r = parse_float();
+  c.radius2 = r * r;
+  accept(",");
+  accept("strength");
+  c.strength = parse_float();
+  return c;
+}
+
+BlobComponent Interpreter::parse_blob_cylinder(const Token& keyword) {
+  expect("{", " after 'cylinder' in a blob");
+  BlobComponent c;
+  c.kind = BlobComponentKind::cylinder;
+  c.centre = parse_vector();
+  accept(",");
+  c.apex = parse_vector();
+  accept(",");
+  const double r = parse_float();
+  c.radius2 = r * r;
+  accept(",");
+  accept("strength");
+  c.strength = parse_float();
+  if (length(c.apex - c.centre) < 1e-10) fail_at(keyword, "degenerate cylindrical component in blob");
+  return c;
+}
+
+Object Interpreter::parse_blob(const Token& keyword) {
+  expect("{", " after 'blob'");
+  Object o;
+  o.loc = keyword.loc;
+  Blob b;
+  auto components = std::make_shared<std::vector<BlobComponent>>();
+  while (true) {
+    const Token t = next();
+    if (t.is("threshold")) {
+      b.threshold = parse_float();
+    } else if (t.is("component")) {
+      components->push_back(parse_blob_sphere(true));
+    } else if (t.is("sphere")) {
+      components->push_back(parse_blob_sphere(false));
+      parse_blob_component_modifiers(components->back(), o);
+    } else if (t.is("cylinder")) {
+      components->push_back(parse_blob_cylinder(t));
+      parse_blob_component_modifiers(components->back(), o);
+    } else {
+      unget(t);
+      break;
+    }
+  }
+  if (components->empty()) fail_at(keyword, "a blob needs at least one component (POV-Ray refuses it too)");
+  b.components = std::move(components);
+  o.shape = b;
+  parse_object_modifiers(o);
+  return o;
+}
+
+}  // namespace povtrace::sdl

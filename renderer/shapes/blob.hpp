@@ -1,0 +1,30 @@
+// A blob's components as POV-Ray's Make_Blob leaves them (blob_build.cpp builds them, blob.cpp intersects them).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render {
+
+struct BlobElement {
+  enum class Kind { sphere, ellipsoid, base_hemisphere, apex_hemisphere, cylinder } kind = Kind::sphere;
+  Vec3 centre;              // sphere, ellipsoid
+  double radius2 = 0;
+  double length = 0;        // cylinder and its hemispheres: the axis runs along z from 0 to length
+  double c[3] = {0, 0, 0};  // density c0·r⁴ + c1·r² + c2 inside radius² (r² the squared distance)
+  bool transformed = false; // ellipsoid, cylinder, hemispheres
+  Matrix element_from_blob; // their inverse transform
+};
+
+struct BlobData : ShapeData {
+  double threshold = 1;
+  bool sturm = false;
+  std::vector<BlobElement> elements;
+};
+
+std::shared_ptr<BlobData> blob_data(const Blob& b);
+
+}  // namespace povtrace::render

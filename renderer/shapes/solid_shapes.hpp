@@ -1,0 +1,23 @@
+// Render-ready primitives for superellipsoid, blob, lathe, prism, sor and height_field built from their scene
+// descriptions (POV-Ray builds its own shape objects at parse time; see each shape's file for the fields it uses).
+// Used by render_scene.cpp and by the geometry tests.
+#pragma once
+
+#include <optional>
+
+#include "parser/description.hpp"
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render {
+
+Primitive make_superellipsoid(const Superellipsoid& s, const Matrix& world_from_object);
+// Reads the image now; a missing or unreadable file is a ParseError at the file name in the scene.
+Primitive make_height_field(const HeightField& h, const Matrix& world_from_object);
+Primitive make_blob(const Blob& b, const Matrix& world_from_object);
+
+// Whether the shape is one of the above; then its primitive placed by `world_from_object` (material, object index,
+// shadow and inverse flags are left to the caller).
+bool is_solid_shape(const Shape& shape);
+Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object);
+
+}  // namespace povtrace::render

@@ -1,0 +1,90 @@
+// superellipsoid, blob, lathe, prism, sor and height_field in the SDL: parameters as written, POV-Ray's defaults
+// and refusals with their positions.
+#include <gtest/gtest.h>
+
+#include "parse_helpers.hpp"
+
+namespace povtrace::test {
+namespace {
+
+const Object& only_object(const SceneDescription& s) {
+  EXPECT_EQ(s.objects.size(), 1u);
+  return s.objects.at(0);
+}
+
+TEST(SolidShapes, SuperellipsoidExponents) {
+  auto s = parse("#version 3.7;\nsuperellipsoid { <0.25, 1.5> translate x }\n");
+  auto se = std::get<Superellipsoid>(only_object(s).shape);
+  EXPECT_EQ(se.e, 0.25);
+  EXPECT_EQ(se.n, 1.5);
+  EXPECT_EQ(only_object(s).world_from_object, Matrix::translation({1, 0, 0}));
+  s = parse("#version 3.7;\n#declare S = superellipsoid { 0.5 }\nobject { S }\n");   // a float stands for both
+  se = std::get<Superellipsoid>(only_object(s).shape);
+  EXPECT_EQ(se.e, 0.5);
+  EXPECT_EQ(se.n, 0.5);
+  const ParseError e = parse_error("#version 3.7;\nsuperellipsoid { <1, 2, 3> }\n");
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_EQ(e.location().column, 18);
+  EXPECT_NE(e.bare_message().find("expected a 2-D vector"), std::string::npos) << e.bare_message();
+}
+
+TEST(SolidShapes, HeightFieldImageAndOptions) {
+  auto s = parse("#version 3.7;\nheight_field { png \"hills.png\" gamma 1 smooth water_level 0.25 hierarchy off "
+                 "translate y }\n");
+  auto h = std::get<HeightField>(only_object(s).shape);
+  EXPECT_EQ(h.file, "hills.png");   // not found: kept as written, the renderer reports it
+  EXPECT_EQ(h.file_loc.line, 2);
+  EXPECT_EQ(h.file_loc.column, 20);
+  EXPECT_TRUE(h.smooth);
+  EXPECT_EQ(h.water_level, 0.25);
+  s = parse("#version 3.7;\nheight_field { \"a.PNG\" }\n");   // the type from the extension
+  EXPECT_FALSE(std::get<HeightField>(only_object(s).shape).smooth);
+  s = parse("#version 1.0;\nheight_field { png \"a.png\" water_level 64 }\n");   // before 2.0: W / 256
+  EXPECT_EQ(std::get<HeightField>(only_object(s).shape).water_level, 0.25);
+}
+
+TEST(SolidShapes, HeightFieldsPovtraceDoesNotReadAreRefusedByName) {
+  ParseError e = parse_error("#version 3.7;\nheight_field { tga \"a.tga\" smooth }\n");
+  EXPECT_NE(e.bare_message().find("a height_field read from a tga image"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { \"a.jpg\" }\n");
+  EXPECT_NE(e.bare_message().find("read from a '.jpg' image"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { function 20, 20 { x * y } smooth }\n");
+  EXPECT_NE(e.bare_message().find("a height_field made from a function"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { png \"a.png\" gamma 2.2 }\n");
+  EXPECT_NE(e.bare_message().find("decoded with a gamma"), std::string::npos) << e.bare_message();
+}
+
+TEST(SolidShapes, BlobComponents) {
+  auto s = parse("#version 3.7;\nblob { threshold 0.6 sphere { <1,0,0>, 2, strength 1.5 translate y scale 2 }\n"
+                 "cylinder { 0, x, 0.5, -1 } component 2, 3, <0,0,1> sphere { 0, 1 1 scale <1,2,1> } sturm }\n");
+  const auto& b = std::get<Blob>(only_object(s).shape);
+  EXPECT_EQ(b.threshold, 0.6);
+  EXPECT_TRUE(b.sturm);
+  ASSERT_EQ(b.components->size(), 4u);
+  const auto& c = *b.components;
+  EXPECT_EQ(c[0].kind, BlobComponentKind::sphere);   // translate and a uniform scale keep a sphere
+  EXPECT_EQ(c[0].centre, (Vec3{2, 2, 0}));
+  EXPECT_EQ(c[0].radius2, 16);
+  EXPECT_EQ(c[0].strength, 1.5);
+  EXPECT_EQ(c[1].kind, BlobComponentKind::cylinder);
+  EXPECT_EQ(c[1].apex, (Vec3{1, 0, 0}));
+  EXPECT_EQ(c[1].strength, -1);
+  EXPECT_EQ(c[2].strength, 2);   // component strength, radius, centre
+  EXPECT_EQ(c[2].radius2, 9);
+  EXPECT_EQ(c[2].centre, (Vec3{0, 0, 1}));
+  EXPECT_EQ(c[3].kind, BlobComponentKind::ellipsoid);   // a non-uniform scale makes an ellipsoid
+  EXPECT_EQ(c[3].transform, Matrix::scaling({1, 2, 1}));
+}
+
+TEST(SolidShapes, BlobRefusals) {
+  ParseError e = parse_error("#version 3.7;\nblob { cylinder { x, x, 1, 1 } }\n");
+  EXPECT_EQ(e.location().column, 8);
+  EXPECT_NE(e.bare_message().find("degenerate cylindrical component"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nblob { threshold 1 }\n");
+  EXPECT_NE(e.bare_message().find("at least one component"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nblob { sphere { 0, 1, 1 pigment { rgb 1 } } }\n");
+  EXPECT_NE(e.bare_message().find("a blob component's own texture"), std::string::npos) << e.bare_message();
+}
+
+}  // namespace
+}  // namespace povtrace::test
