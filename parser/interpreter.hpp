@@ -12,6 +12,7 @@
 //   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
 //   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
+//   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 #pragma once
 
 #include <array>
@@ -279,6 +280,11 @@ class Interpreter {
   std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
                                                  const std::string& what);
   void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
+  // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
+  static void invert_object(Object& object);                  // De Morgan for CSG (§10)
+  void parse_clip_or_bound(const Token& keyword, Object& object);
+  std::vector<Object> parse_bound_clip_objects(const Token& keyword);
+  void remove_unnecessary_bounds(Object& object);             // Link_To_Frame's Remove_Bounds, when placed
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);

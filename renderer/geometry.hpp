@@ -43,7 +43,7 @@ struct Bounds {
   double surface_area() const;
 };
 
-enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly, triangle, polygon, mesh, quadric };
+enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly, triangle, polygon, mesh, quadric, csg };
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is

@@ -57,6 +57,12 @@ Intersections intersect_quadric(const Primitive& p, const Ray& ray);
 Vec3 quadric_normal(const Primitive& p, Vec3 world_point);
 bool inside_quadric(const Primitive& p, Vec3 world_point);
 Bounds quadric_world_bounds(const Primitive& p);
+// CSG nodes (csg.cpp): hits come from the children through collect_hits, so there is no intersect_all.
+void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
+bool nearest_csg_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+Vec3 csg_normal(const Primitive& p, Vec3 world_point);
+bool inside_csg(const Primitive& p, Vec3 world_point);
+Bounds csg_world_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -85,18 +91,21 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::triangle: return shapes::intersect_triangle(p, ray);
     case ShapeType::polygon: return shapes::intersect_polygon(p, ray);
     case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
+    case ShapeType::csg: return {};
   }
   return {};
 }
 
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (p.type == ShapeType::mesh) return shapes::collect_mesh_hits(p, ray, out);
+  if (p.type == ShapeType::csg) return shapes::collect_csg_hits(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
 
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
   if (p.type == ShapeType::mesh) return shapes::nearest_mesh_hit(p, ray, t_min, t_max, hit);
+  if (p.type == ShapeType::csg) return shapes::nearest_csg_hit(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -126,6 +135,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::triangle: return shapes::triangle_normal(p, world_point);
     case ShapeType::polygon: return shapes::polygon_normal(p, world_point);
     case ShapeType::mesh: return shapes::mesh_normal(p, world_point);
+    case ShapeType::csg: return shapes::csg_normal(p, world_point);
   }
   return {};
 }
@@ -144,6 +154,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::triangle: return false;   // POV-Ray: never inside, inverse or not
     case ShapeType::polygon: return false;
     case ShapeType::mesh: return shapes::inside_mesh(p, world_point);
+    case ShapeType::csg: return shapes::inside_csg(p, world_point);
   }
   return false;
 }
@@ -176,6 +187,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::triangle: return shapes::triangle_world_bounds(p);
     case ShapeType::polygon: return to_world(p, shapes::polygon_object_bounds(p));
     case ShapeType::mesh: return to_world(p, shapes::mesh_object_bounds(p));
+    case ShapeType::csg: return shapes::csg_world_bounds(p);
   }
   return {};
 }
