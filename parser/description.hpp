@@ -192,6 +192,8 @@ struct Sphere { Vec3 centre; double radius = 1; };
 struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; };   // normal as written (unit-normalised by parser)
 struct Box { Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1}; };     // sorted per axis by the parser
 
+// The parser turns a difference into an intersection with its later children inverted, as POV-Ray does;
+// `difference` remains for descriptions built in code.
 enum class CsgKind { union_, merge, intersection, difference };
 struct Object;
 struct Light;
@@ -257,11 +259,18 @@ struct Object {
   Matrix world_from_object;                 // composed object transforms in written order
   std::shared_ptr<const Texture> texture;   // never null once the parser has placed the object
   std::optional<Interior> interior;
-  bool inverse = false;
+  bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
   std::optional<bool> hollow;               // unset: inherited from a CSG parent, else false
   SourceLoc loc;
   Unsupported unsupported;
+  std::vector<Object> clipped_by;           // the surface and inside are limited to inside all of these
+  std::vector<Object> bounded_by;           // rays missing one of these (and starting outside) skip the object
+  bool clips_are_bounds = false;            // one list for both (clipped_by { bounded_by } or the reverse)
+  // Bounds POV-Ray removed when the object was placed ("Unnecessary bounding object removed"): no longer tested,
+  // but the bounding box they gave the object stays, and rays that miss that box miss the object (see
+  // renderer/csg_build.cpp).
+  std::vector<Object> removed_bounds;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   implicit_shapes.cpp superellipsoid, blob
 //   height_field.cpp  height_field
+//   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 #pragma once
 
 #include <array>
@@ -316,6 +317,11 @@ class Interpreter {
   std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
                                                  const std::string& what);
   void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
+  // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
+  static void invert_object(Object& object);                  // De Morgan for CSG (§10)
+  void parse_clip_or_bound(const Token& keyword, Object& object);
+  std::vector<Object> parse_bound_clip_objects(const Token& keyword);
+  void remove_unnecessary_bounds(Object& object);             // Link_To_Frame's Remove_Bounds, when placed
 
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----
   std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect

@@ -32,6 +32,8 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 // transforms a CSG by transforming its children; the CSG node itself keeps no matrix).
 void Interpreter::apply_transform(Object& object, const Matrix& m) {
   transform_texture(object.texture, m);
+  for (auto& clip : object.clipped_by) apply_transform(clip, m);
+  for (auto& bound : object.bounded_by) apply_transform(bound, m);
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
     for (auto& child : csg->children) apply_transform(child, m);
     for (auto& light : csg->lights) apply_transform(light, m);
@@ -84,12 +86,9 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "no_shadow") { object.no_shadow = true; return true; }
-  if (k == "inverse") {
-    object.inverse = !object.inverse;
-    if (const auto* csg = std::get_if<Csg>(&object.shape))
-      taint(object.unsupported, UnsupportedFeature{"'inverse' of a CSG " + csg_name(csg->kind), t.loc});
-    return true;
-  }
+  if (k == "inverse") { invert_object(object); return true; }
+  if (k == "clipped_by") { parse_clip_or_bound(t, object); return true; }
+  if (k == "bounded_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "hollow") {
     // hollow [bool]: fog (and media) reach rays inside hollow objects only.
     object.hollow = optional_float(1.0) > 0.0;
@@ -100,7 +99,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     fail_at(t, "'open' must directly follow the parameters of a cylinder or cone; it is no object modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
+      "no_image", "no_reflection", "no_radiosity", "double_illuminate",
       "sturm", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
@@ -203,8 +202,8 @@ std::string Interpreter::csg_name(CsgKind kind) {
   return "CSG";
 }
 
-// union/merge/intersection/difference { objects… modifiers } (§10). A union of the shapes povtrace renders is
-// rendered as its children; the other operations are parsed whole and refused when placed (issue 4).
+// union/merge/intersection/difference { objects… modifiers } (§10). A difference becomes an intersection whose
+// items after the first are inverted as they are added (a light source counts as an item, as in POV-Ray).
 Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   const NestingGuard guard(*this, keyword);
   if (const Token open = next(); !open.is("{"))   // not expect(): its message would be built every time
@@ -214,18 +213,22 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   Csg csg;
   csg.kind = kind;
   Token t = next();
-  while (true) {
+  for (std::size_t items = 1;; ++items) {
     auto item = try_parse_item(t);
     if (!item) break;
-    if (auto* light = std::get_if<Light>(&*item)) csg.lights.push_back(std::move(*light));
-    else csg.children.push_back(std::move(std::get<Object>(*item)));
+    if (auto* light = std::get_if<Light>(&*item)) {
+      csg.lights.push_back(std::move(*light));
+    } else {
+      Object& child = std::get<Object>(*item);
+      if (kind == CsgKind::difference && items > 1) invert_object(child);
+      csg.children.push_back(std::move(child));
+    }
     t = next();
   }
+  if (kind == CsgKind::difference) csg.kind = CsgKind::intersection;
   unget(t);
   if (csg.children.size() + csg.lights.size() < 2)
     warn(keyword.loc, "a CSG " + csg_name(kind) + " should have at least two objects");
-  if (kind != CsgKind::union_)
-    o.unsupported = UnsupportedFeature{"CSG " + csg_name(kind), keyword.loc};
   o.shape = std::move(csg);
   parse_object_modifiers(o);
   return o;

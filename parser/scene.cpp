@@ -252,6 +252,9 @@ Unsupported first_unsupported(const Object& o) {
         if (auto u = first_unsupported(shown)) return u;
     }
   }
+  for (const auto* list : {&o.clipped_by, &o.bounded_by})
+    for (const auto& c : *list)
+      if (auto u = first_unsupported(c)) return u;
   return std::nullopt;
 }
 }  // namespace
@@ -314,6 +317,7 @@ void Interpreter::post_process(Object& object) {
 
 void Interpreter::place_object(Object object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
+  remove_unnecessary_bounds(object);
   post_process(object);
   scene_.objects.push_back(std::move(object));
 }

@@ -5,6 +5,8 @@
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 
+#include "renderer/csg_build.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
@@ -116,7 +118,7 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.world_from_object = shape.world_from_object;
     p.object_from_world = shape.object_from_world;
   } else {
-    throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
+    throw std::logic_error("CSG objects become CSG nodes in add_object and never reach add_primitives");
   }
   out.push_back(p);
 }
@@ -147,12 +149,21 @@ class MaterialTable {
 };
 
 // A union is its children: every intersection of every child is kept (§10), which is what placing the
-// children side by side gives. The parser has already moved the union's transforms and inherited textures
-// into the children. Other CSG operations are refused by the parser until issue 4.
+// children side by side gives (POV-Ray splits such unions too). The parser has already moved the union's
+// transforms and inherited textures into the children. Other CSG, and clipped or bounded objects, become one
+// CSG node (csg_build.hpp) whose leaves are built by add_primitives like any other shape.
 void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, std::vector<Primitive>& out) {
-  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
-    if (csg->kind != CsgKind::union_) throw std::logic_error("only CSG unions reach the renderer");
-    for (const auto& child : csg->children) add_object(child, object_index, materials, out);
+  if (splits_into_children(o)) {
+    for (const auto& child : std::get<Csg>(o.shape).children) add_object(child, object_index, materials, out);
+    return;
+  }
+  if (needs_csg_node(o)) {
+    Primitive node = build_csg_node(o, [&](const Object& leaf, bool shaded, std::vector<Primitive>& dst) {
+      add_primitives(leaf, shaded ? materials.material_for(leaf) : 0, object_index, dst);
+    });
+    node.material = materials.material_for(o);   // only for whole-object checks; hits shade their leaf's material
+    node.object = object_index;
+    out.push_back(std::move(node));
     return;
   }
   add_primitives(o, materials.material_for(o), object_index, out);

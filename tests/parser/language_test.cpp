@@ -632,11 +632,6 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"UnsupportedShape", "#declare C = cylinder { 0, y, 1 }\n#declare X = max_extent(C);\n", 3, 25,
                   "unsupported: max_extent() of the shape 'cylinder' is a POV-Ray feature that povtrace does not "
                   "render yet"},
-        ErrorCase{"ClippedObject", "#declare C = sphere { 0, 1 clipped_by { plane { y, 0 } } }\n"
-                                   "#declare X = inside(C, 0);\n",
-                  3, 21,
-                  "unsupported: inside() of the object modifier 'clipped_by' is a POV-Ray feature that povtrace "
-                  "does not render yet"},
         ErrorCase{"ExtentOfAnIntersection",
                   "#declare I = intersection { sphere { 0, 1 } sphere { x, 1 } }\n#declare X = min_extent(I);\n", 3,
                   25,
