@@ -127,13 +127,16 @@ Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start
     if (try_normal_modifier(t, n)) { t = next(); continue; }
     if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(n.unsupported, skip_unsupported(t, "the normal item '" + std::string(t.text) + "'"));
+      // An unrendered pattern with a block (pigment_pattern { … }, image_pattern { … }) may carry the amount.
+      if (accept(",") || peek().kind == TokenKind::number) n.amount = parse_float();
       t = next();
       continue;
     }
     fail_expected(t, "a normal pattern, bump_size, accuracy, a transform or '}' in normal { }");
   }
   taint(n.unsupported, n.pattern.unsupported);
-  if (!n.has_type && !n.unsupported) fail_at(keyword, "no normal type given (as in POV-Ray)");
+  // A normal without a type is legal until an object uses it (POV-Ray's Post_Tnormal: `#default { normal {
+  // bump_size 2 } }` is fine when every object names its pattern): see Interpreter::check_normal_types.
   return n;
 }
 

@@ -315,10 +315,32 @@ void Interpreter::post_process(Object& object) {
   }
 }
 
+namespace {
+// POV-Ray's Post_Tnormal: a normal that reaches an object without a pattern is the error "No normal type given".
+const Normal* untyped_normal(const Texture* texture) {
+  if (texture)
+    for (const TextureLayer& layer : texture->layers)
+      if (layer.normal && !layer.normal->has_type && !layer.normal->unsupported) return &*layer.normal;
+  return nullptr;
+}
+
+const Normal* first_untyped_normal(const Object& o) {
+  if (const Normal* n = untyped_normal(o.texture.get())) return n;
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
+    for (const auto& t : mesh->textures)
+      if (const Normal* n = untyped_normal(t.get())) return n;
+  if (const auto* csg = std::get_if<Csg>(&o.shape))
+    for (const Object& child : csg->children)
+      if (const Normal* n = first_untyped_normal(child)) return n;
+  return nullptr;
+}
+}  // namespace
+
 void Interpreter::place_object(Object object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
   remove_unnecessary_bounds(object);
   post_process(object);
+  if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   scene_.objects.push_back(std::move(object));
 }
 
