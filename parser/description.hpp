@@ -274,7 +274,11 @@ struct Object {
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------
-enum class Projection { perspective, orthographic };
+// POV-Ray 3.7's camera types (mesh_camera is refused by name).
+enum class Projection {
+  perspective, orthographic, fisheye, ultra_wide_angle, omnimax, panoramic, spherical,
+  cylinder1, cylinder2, cylinder3, cylinder4   // `cylinder N`: 1, 2 vertical/horizontal axis, 3, 4 the same, orthographic
+};
 
 // Final camera vectors, resolved by the parser in POV-Ray's fixed order (pipeline §1).
 struct Camera {
@@ -283,6 +287,8 @@ struct Camera {
   Vec3 direction{0, 0, 1};
   Vec3 up{0, 1, 0};
   Vec3 right{1.33, 0, 0};
+  double angle = 90;                         // degrees: the field of view of the non-planar projections
+  double h_angle = 360, v_angle = 180;       // spherical: horizontal and vertical field of view
   SourceLoc loc;
   Unsupported unsupported;
 };

@@ -338,6 +338,7 @@ class Interpreter {
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
+  std::optional<Projection> try_camera_type(const Token& t);
   Light parse_light(const Token& keyword);
   void parse_area_light(const Token& keyword, Light& light);
   void parse_looks_like(const Token& keyword, Light& light);

@@ -1,4 +1,5 @@
 #include "renderer/render_scene.hpp"
+#include "renderer/render.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 
 #include "renderer/shapes/quadric_shapes.hpp"
@@ -206,8 +207,7 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   r.fogs = scene.fogs;
   r.noise_generator = generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected;
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
-  r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
-                          scene.camera.right};
+  r.camera = make_render_camera(scene.camera);
   r.settings = scene.settings;
   r.language_version = scene.language_version;
   // Background (pipeline §5) as POV-Ray's parser leaves it.

@@ -93,9 +93,13 @@ struct RenderLight {
   bool fades = false;
 };
 
+// The camera as its rays are made (renderer/camera.cpp): the non-planar projections keep unit vectors, the
+// lengths they had and the aspect ratio POV-Ray derives from them.
 struct RenderCamera {
   Projection projection = Projection::perspective;
   Vec3 location, direction, up, right;
+  double angle = 90, h_angle = 360, v_angle = 180;   // degrees
+  double up_length = 1, right_length = 1, aspect = 1;
 };
 
 // How working-space values become linear light for output (pipeline §6).

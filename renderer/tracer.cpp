@@ -1,6 +1,7 @@
 // Whitted tracing with POV-Ray 3.7's shading (povray-pixel-pipeline.md §2–§5). Comments cite the section of
 // that document whose behaviour each step reproduces.
 #include "renderer/tracer.hpp"
+#include "renderer/render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,7 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
   state.alpha_background = scene_.output_alpha;
   // A perspective camera's rays all start at its location; an orthographic camera's start across its image
   // plane, so POV-Ray finds the containing objects for each of them.
-  if (scene_.camera.projection == Projection::orthographic) {
+  if (origins_vary(scene_.camera)) {
     for (const InteriorRef& r : scene_.containing_interiors(ray.origin)) state.interiors.append(r);
   } else {
     for (const InteriorRef& r : scene_.camera_interiors) state.interiors.append(r);

@@ -119,7 +119,8 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"NoImage", "#version 3.7;\nsphere { 0, 1 no_image }\n", 2, 1,
                   "unsupported: the object modifier 'no_image'"},
         ErrorCase{"Rainbow", "#version 3.7;\nrainbow { angle 42 }\n", 2, 1, "unsupported: 'rainbow'"},
-        ErrorCase{"Fisheye", "#version 3.7;\ncamera { fisheye }\n", 2, 1, "unsupported: the camera item 'fisheye'"}),
+        ErrorCase{"FocalBlur", "#version 3.7;\ncamera { aperture 0.4 }\n", 2, 1,
+                  "unsupported: the camera item 'aperture'"}),
     [](const auto& p) { return p.param.name; });
 
 // ---- Warnings are not errors -------------------------------------------------------------------------------
