@@ -159,7 +159,6 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
                   "fade_distance in 'interior { }'");
     } else if (k == "crand") {
       f.crand = parse_float();
-      taint(f.unsupported, UnsupportedFeature{"the finish item 'crand' (random speckle)", t.loc});
     } else if (!k.empty() && is_reserved_word(k)) {
       taint(f.unsupported, skip_unsupported(t, "the finish item '" + std::string(k) + "'"));
     } else {

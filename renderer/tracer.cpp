@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "renderer/pattern/normal_perturbation.hpp"
 
@@ -140,6 +141,18 @@ Rgb reflectivity(const Finish& f, double c, double ior, double& weight) {
 }
 
 bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
+
+// A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).
+double speckle_random(Vec3 p, std::size_t light) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull * (light + 1);
+  for (const double v : {p.x, p.y, p.z}) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 27; h *= 0x94D049BB133111EBull; h ^= h >> 31;
+  }
+  return static_cast<double>(h >> 11) * (1.0 / 9007199254740991.0);
+}
 }  // namespace
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
@@ -431,12 +444,17 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   Rgb out = mul(pigment * att, mul(rgb_of(fin.ambient), rgb_of(scene_.settings.ambient_light)) + rgb_of(fin.emission));
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
 
-  for (const RenderLight& l : scene_.lights) {
+  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+    const RenderLight& l = scene_.lights[li];
     Rgb lc;
     Vec3 to_light;
     double distance;
     if (!light_at(l, point, lc, to_light, distance)) continue;
     const double c = dot(normal, to_light);
+    // crand: POV-Ray lowers each diffuse term by a uniform random amount in [0, crand] drawn from a per-thread
+    // sequence (its order depends on threads and blocks); ours is a hash of the point and the light, so the speckle
+    // has the same distribution and the same image comes out whatever the threads.
+    const double speckle = fin.crand > 0 ? fin.crand * speckle_random(point, li) : 0.0;
     const bool behind = c < tolerance::epsilon;
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
@@ -444,11 +462,13 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     if (behind) {
-      out += mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance));
+      if (fin.diffuse_back > 0)
+        out += mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle);
       continue;
     }
-    if (fin.diffuse != 0)
-      out += mul(pigment, lc) * (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)));
+    if (fin.diffuse > 0)
+      out += mul(pigment, lc) *
+             (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
     if (l.light.shadowless || !layer.has_highlights) continue;   // fill lights give no highlights
 
     Rgb highlight = lc;
