@@ -38,6 +38,7 @@ enum class PatternKind {
   gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
   bozo, spotted, granite, marble, wood, agate,                      // noise-based
   crackle, cells,                                                   // a random point or value per unit cube
+  bumps, dents, wrinkles, ripples, waves,                           // the normal patterns used as pigments
   average                                                           // mean of its pigment_map's pigments
 };
 
