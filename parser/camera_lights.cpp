@@ -1,6 +1,7 @@
 // camera { } and light_source { } (povray-pixel-pipeline.md §1 and §3).
 #include <cmath>
 
+#include "parser/description_transforms.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -145,13 +146,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
 }
 
-void Interpreter::apply_transform(Light& light, const Matrix& m) {
-  light.location = m.point(light.location);
-  light.point_at = m.point(light.point_at);
-  light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
-  light.axis2 = m.vector(light.axis2);
-  for (Object& o : light.looks_like) apply_transform(o, m);
-}
+void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_light(light, m); }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   Matrix m;

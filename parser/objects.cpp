@@ -3,22 +3,13 @@
 // affected by it (§9, [V sdl_tex_order]).
 #include <cmath>
 
+#include "parser/description_transforms.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
 namespace povtrace::sdl {
 
 namespace {
-void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
-  if (!texture) return;
-  auto moved = std::make_shared<Texture>(*texture);
-  for (auto& layer : moved->layers) {
-    layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
-    if (layer.normal) layer.normal->pattern.world_from_pattern = layer.normal->pattern.world_from_pattern * m;
-  }
-  texture = std::move(moved);
-}
-
 // The object's own top texture layer, created from the #default texture when the object has none yet
 // (object-level pigment/finish on an untextured object, §4 #default).
 TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
@@ -28,21 +19,8 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
-// A transform moves the object, what is attached to it, and for CSG every child and light inside (POV-Ray
-// transforms a CSG by transforming its children; the CSG node itself keeps no matrix).
-void Interpreter::apply_transform(Object& object, const Matrix& m) {
-  transform_texture(object.texture, m);
-  for (auto& clip : object.clipped_by) apply_transform(clip, m);
-  for (auto& bound : object.bounded_by) apply_transform(bound, m);
-  if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) apply_transform(child, m);
-    for (auto& light : csg->lights) apply_transform(light, m);
-    return;
-  }
-  if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
-    for (auto& texture : mesh->textures) transform_texture(texture, m);
-  object.world_from_object = object.world_from_object * m;
-}
+// A transform moves the object and what is attached to it (parser/description_transforms.cpp).
+void Interpreter::apply_transform(Object& object, const Matrix& m) { transform_object(object, m); }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   Matrix m;

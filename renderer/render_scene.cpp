@@ -1,4 +1,5 @@
 #include "renderer/render_scene.hpp"
+#include "renderer/scene_scale.hpp"
 #include "renderer/render.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 
@@ -191,6 +192,16 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   MaterialTable materials(r.materials);
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
+  if (!options.povray_tolerances) {
+    // A scene far from the ordinary scale is rendered as its rescaled twin (scene_scale.hpp).
+    if (const double k = normalizing_scale(scene_size(primitives, scene.camera.location)); k != 1.0) {
+      BuildOptions twin = options;
+      twin.povray_tolerances = true;
+      RenderScene r2 = build_render_scene(scaled_scene(scene, k), twin);
+      r2.scale = k;
+      return r2;
+    }
+  }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   for (const auto& p : primitives) {
     const Material& m = r.materials[p.material];

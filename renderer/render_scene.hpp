@@ -106,6 +106,7 @@ struct RenderCamera {
 enum class GammaMode { power, legacy_srgb };
 
 struct RenderScene {
+  double scale = 1.0;   // the factor the scene was rescaled by for scale invariance (scene_scale.hpp), 1 if not
   Accelerator accelerator;
   std::vector<Material> materials;
   std::vector<RenderLight> lights;
@@ -135,6 +136,9 @@ struct RenderScene {
 
 struct BuildOptions {
   bool output_alpha = false;
+  // POV-Ray's absolute tolerances at any scale, artefacts included: no rescaling of very small or very large
+  // scenes (renderer/scene_scale.hpp).
+  bool povray_tolerances = false;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);
