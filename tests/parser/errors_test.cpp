@@ -132,6 +132,22 @@ TEST(Warnings, DivisionByZeroWarnsAndParsingGoesOn) {
   EXPECT_EQ(m.items[0], "test.pov:2:15: warning: division by zero\n#declare A = 1/0;\n              ^");
 }
 
+TEST(Warnings, DomainErrorsAndInfiniteResultsAreNamedWhereTheyAreMade) {
+  // POV-Ray: "Domain error in acos" (a warning; the argument is clamped). pow(0, -1) and exp(1000) are infinite
+  // in POV-Ray too, silently; povtrace names them.
+  struct Case { const char* expression; const char* warning; int column; };
+  for (const Case& c : {Case{"acos(2)", "domain error in acos", 14}, Case{"asin(-3)", "domain error in asin", 14},
+                        Case{"pow(0, -1)", "pow gives an infinite value", 14},
+                        Case{"exp(1000)", "exp gives an infinite value", 14}}) {
+    Messages m;
+    const SceneDescription s = parse(std::string("#version 3.7;\n#declare A = ") + c.expression + ";\nsphere { 0, 1 }\n", &m);
+    EXPECT_EQ(s.objects.size(), 1u) << c.expression;
+    ASSERT_EQ(m.items.size(), 1u) << c.expression;
+    EXPECT_EQ(m.items[0].rfind("test.pov:2:" + std::to_string(c.column) + ": warning: " + c.warning, 0), 0u)
+        << m.items[0];
+  }
+}
+
 TEST(Warnings, MissingCommaIsAcceptedLikePovRay) {
   // POV-Ray's Parse_Comma makes the comma between object parameters optional (povray parses this scene).
   const SceneDescription s = parse("#version 3.7;\nsphere { <0,0,0> 1 }\nbox { <0,0,0> <1,1,1> }\n");
