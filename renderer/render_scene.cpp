@@ -46,9 +46,11 @@ RenderLight make_light(const Light& l) {
   r.colour = rgb_of(l.colour);
   const Vec3 axis = l.point_at - l.location;
   if (l.parallel) r.parallel_direction = length(axis) > 0 ? -normalize(axis) : Vec3{0, 0, -1};
-  if (l.cylinder) r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 1};
+  // A spotlight or cylinder light whose point_at is its location has no direction: POV-Ray keeps the zero vector,
+  // so every angle test fails and the light lights nothing.
+  if (l.cylinder) r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 0};
   if (l.spotlight && !l.cylinder) {
-    r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 1};
+    r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 0};
     r.cos_radius = std::cos(l.radius * M_PI / 180.0);
     r.cos_falloff = std::cos(l.falloff * M_PI / 180.0);
   }
