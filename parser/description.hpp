@@ -167,7 +167,9 @@ struct Normal {
 struct TextureLayer {
   Pigment pigment;
   Finish finish;
-  std::optional<Normal> normal;   // none: the layer uses the surface's own normal
+  // none: the layer uses the surface's own normal. Shared and immutable (copied when a transform changes it), so
+  // that copying a texture for every transformed object does not copy its normals.
+  std::shared_ptr<const Normal> normal;
 };
 
 // Layers in written order: the *last* one is the top layer (pipeline §2 "Layers").

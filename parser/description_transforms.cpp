@@ -7,7 +7,11 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
   auto moved = std::make_shared<Texture>(*texture);
   for (auto& layer : moved->layers) {
     layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
-    if (layer.normal) layer.normal->pattern.world_from_pattern = layer.normal->pattern.world_from_pattern * m;
+    if (layer.normal) {
+      auto normal = std::make_shared<Normal>(*layer.normal);
+      normal->pattern.world_from_pattern = normal->pattern.world_from_pattern * m;
+      layer.normal = std::move(normal);
+    }
   }
   texture = std::move(moved);
 }

@@ -269,7 +269,7 @@ class Interpreter {
   bool try_normal_modifier(const Token& t, Normal& n);
   std::vector<SlopeEntry> parse_slope_map(const Token& keyword);
   // The normal a `normal { }` block edits: the layer's own, else the #default texture's, else a new one.
-  Normal starting_normal(const std::optional<Normal>& current) const;
+  Normal starting_normal(const Normal* current) const;
 
   // ---- objects (objects.cpp) ----
   std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source

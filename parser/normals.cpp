@@ -140,7 +140,7 @@ Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start
   return n;
 }
 
-Normal Interpreter::starting_normal(const std::optional<Normal>& current) const {
+Normal Interpreter::starting_normal(const Normal* current) const {
   if (current) return *current;
   const auto& defaults = default_texture().layers.back().normal;
   return defaults ? *defaults : Normal{};

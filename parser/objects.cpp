@@ -46,7 +46,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   }
   if (k == "normal") {
     TextureLayer& layer = own_top_layer(object, default_texture());
-    layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+    layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
     taint(object.unsupported, layer.normal->unsupported);
     return true;
   }

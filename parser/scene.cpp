@@ -134,7 +134,7 @@ void Interpreter::parse_default(const Token& keyword) {
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
     else if (t.is("texture")) default_texture_ = *parse_texture_block(t);
     else if (t.is("normal")) {
-      layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
       refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
     } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
@@ -183,7 +183,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
-  if (k == "normal") return Value(parse_normal_block(first, starting_normal(std::nullopt)));
+  if (k == "normal") return Value(parse_normal_block(first, starting_normal(nullptr)));
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
@@ -320,7 +320,7 @@ namespace {
 const Normal* untyped_normal(const Texture* texture) {
   if (texture)
     for (const TextureLayer& layer : texture->layers)
-      if (layer.normal && !layer.normal->has_type && !layer.normal->unsupported) return &*layer.normal;
+      if (layer.normal && !layer.normal->has_type && !layer.normal->unsupported) return layer.normal.get();
   return nullptr;
 }
 

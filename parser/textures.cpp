@@ -18,7 +18,11 @@ void transform_pigment(Pigment& p, const Matrix& m) { p.world_from_pattern = p.w
 // A texture's transforms move every layer's pigment and normal (POV-Ray's Transform_Textures).
 void transform_layer(TextureLayer& l, const Matrix& m) {
   transform_pigment(l.pigment, m);
-  if (l.normal) transform_pigment(l.normal->pattern, m);
+  if (l.normal) {
+    auto moved = std::make_shared<Normal>(*l.normal);
+    transform_pigment(moved->pattern, m);
+    l.normal = std::move(moved);
+  }
 }
 }  // namespace
 
@@ -385,7 +389,7 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
     else if (try_transform(t, m)) {
       for (auto& l : tex.layers) transform_layer(l, m);
     } else if (t.is("normal")) {
-      layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(tex.unsupported, skip_unsupported(t, "the texture item '" + std::string(t.text) + "'"));
     } else {
