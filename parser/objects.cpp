@@ -41,6 +41,7 @@ void Interpreter::apply_transform(Object& object, const Matrix& m) {
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
     for (auto& texture : mesh->textures) transform_texture(texture, m);
+  if (auto* text = std::get_if<Text>(&object.shape)) text->box_transforms.push_back(m);
   object.world_from_object = object.world_from_object * m;
 }
 
@@ -288,8 +289,9 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "superellipsoid") return parse_superellipsoid(t);
   if (k == "height_field") return parse_height_field(t);
   if (k == "blob") return parse_blob(t);
+  if (k == "text") return parse_text(t);
   static const std::string_view shapes[] = {
-      "lathe", "prism", "sor", "isosurface", "julia_fractal", "text",
+      "lathe", "prism", "sor", "isosurface", "julia_fractal",
       "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)
