@@ -15,7 +15,7 @@
 //   outside it (a POV-Ray quirk that moves a composite's box edges to 0; reproduced because the layout and the
 //   bounding box use that box).
 // - Each contour is closed by repeating its first point and flag.
-// Beyond POV-Ray, which trusts the file: nesting of composites is limited, decreasing end points and out-of-range
+// Beyond POV-Ray, which trusts the file: nesting and size of composites are limited, decreasing end points and out-of-range
 // glyph indices are errors, and the total number of points is capped, so no font can crash or exhaust the parser.
 #include <algorithm>
 #include <cmath>
@@ -27,6 +27,7 @@ namespace povtrace::ttf {
 namespace {
 constexpr int kMaxCompositeDepth = 16;
 constexpr std::size_t kMaxPoints = 1 << 20;
+constexpr std::size_t kMaxGlyphReads = 1 << 16;   // composites sharing parts could otherwise multiply without end
 
 // Flag bits of simple glyph points.
 constexpr std::uint8_t kOnCurve = 0x01, kXShort = 0x02, kYShort = 0x04, kRepeat = 0x08, kXSame = 0x10,
@@ -52,6 +53,7 @@ struct GlyfReader {
   const std::vector<std::uint32_t>& loca;
   double units_per_em;
   std::size_t points_read = 0;
+  std::size_t glyphs_read = 0;
 
   RawOutline read(std::uint16_t index, int depth);
   void read_simple(RawOutline& g, std::size_t pos);
@@ -174,6 +176,7 @@ void GlyfReader::read_composite(RawOutline& g, std::size_t pos, int depth) {
 
 RawOutline GlyfReader::read(std::uint16_t index, int depth) {
   if (depth > kMaxCompositeDepth) throw FontError("composite glyphs nest too deeply (a glyph made of itself?)");
+  if (++glyphs_read > kMaxGlyphReads) throw FontError("a composite glyph is made of too many parts");
   if (index >= loca.size()) throw FontError("a composite glyph uses glyph " + std::to_string(index) + ", past the last");
   RawOutline g;
   g.metrics = index;
