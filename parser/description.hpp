@@ -12,6 +12,7 @@
 
 #include "mesh_description.hpp"
 #include "source_location.hpp"
+#include "text_description.hpp"
 #include "vecmath.hpp"
 
 namespace povtrace {
@@ -255,7 +256,7 @@ struct Blob {
 };
 
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
-                           Superellipsoid, HeightField, Blob>;
+                           Superellipsoid, HeightField, Blob, Text>;
 
 struct Object {
   Shape shape;

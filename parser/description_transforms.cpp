@@ -28,6 +28,7 @@ void transform_object(Object& object, const Matrix& m) {
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
     for (auto& texture : mesh->textures) transform_texture(texture, m);
+  if (auto* text = std::get_if<Text>(&object.shape)) text->box_transforms.push_back(m);   // extents, as CSG::Transform
   object.world_from_object = object.world_from_object * m;
 }
 

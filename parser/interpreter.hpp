@@ -15,6 +15,7 @@
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   implicit_shapes.cpp superellipsoid, blob
 //   height_field.cpp  height_field
+//   text.cpp          text (fonts read by truetype*.cpp, laid out by text_layout.cpp)
 //   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 #pragma once
 
@@ -29,6 +30,7 @@
 #include "parser/parse_scene.hpp"
 #include "parser/reserved_words.hpp"
 #include "parser/symbols.hpp"
+#include "parser/truetype.hpp"
 #include "parser/values.hpp"
 
 namespace povtrace::sdl {
@@ -336,6 +338,11 @@ class Interpreter {
   void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
   std::string locate_image_file(const std::string& name) const;
 
+  // ---- text (text.cpp) ----
+  Object parse_text(const Token& keyword);
+  ttf::Font& font_for_text(const Token& at, const std::string& name);
+  ttf::Font& internal_font(const Token& at, int id);
+
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
   std::optional<Projection> try_camera_type(const Token& t);
@@ -382,6 +389,10 @@ class Interpreter {
   bool camera_seen_ = false;
   bool statement_seen_ = false;
   std::vector<std::uint32_t> rand_streams_;
+  // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
+  // global_settings { charset }.
+  std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;
+  ttf::StringEncoding string_encoding_ = ttf::StringEncoding::ascii;
 
   // Input nested deeper than this (parentheses, vectors, unary operators, object { object { … } }, transform
   // blocks) is refused with an error instead of overflowing the C++ stack. POV-Ray itself crashes there.

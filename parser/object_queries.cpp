@@ -183,8 +183,41 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
     bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
     bool operator()(const Blob&) const { throw std::logic_error("inside() of a blob"); }
+    // A text is a union of its glyphs (an inverted one, by De Morgan, the intersection of the inverted glyphs).
+    bool operator()(const Text& text) const {
+      const Vec3 q = o.world_from_object.inverse().point(p);
+      bool in = false;
+      for (const TextGlyph& g : text.glyphs)
+        in = in || (q.z >= 0.0 && q.z <= text.thickness && inside_glyph(*g.outline, q.x - g.x, q.y - g.y));
+      return in != invert;
+    }
   };
   return std::visit(Test{o, p, invert}, o.shape);
+}
+
+// The union of the glyphs' boxes as POV-Ray builds it (TrueType::Compute_BBox: the header box in em units,
+// z from −1e-6 to thickness + 1e-6, carried by the glyph's translation; CSG::Compute_BBox), then carried through
+// each transform applied since, one after the other (CSG::Transform).
+BBox text_box(const Text& text) {
+  constexpr double kTextTolerance = 1e-6;   // truetype.cpp TTF_Tolerance
+  Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
+  for (const TextGlyph& g : text.glyphs) {
+    const GlyphOutline& outline = *g.outline;
+    const double funit = 1.0 / outline.units_per_em;
+    const Vec3 min{outline.x_min * funit, outline.y_min * funit, -kTextTolerance};
+    const Vec3 max{outline.x_max * funit, outline.y_max * funit, text.thickness + kTextTolerance};
+    const BBox b = BBox::make(min, max - min).transformed(Matrix::translation({g.x, g.y, 0.0}));
+    lo = povtrace::min(lo, b.lo());
+    hi = povtrace::max(hi, b.hi());
+  }
+  BBox box = BBox::huge();
+  if (lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) {
+    box = BBox::from_min_max(lo, hi);
+    for (int i = 0; i < 3; ++i)
+      if (box.lengths[i] > kCriticalLength) box = BBox::huge();
+  }
+  for (const Matrix& m : text.box_transforms) box = box.transformed(m);
+  return box;
 }
 
 BBox bounding_box(const Object& o) {
@@ -258,6 +291,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
     BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
     BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
+    BBox operator()(const Text& text) const { return text_box(text); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -266,8 +266,9 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "superellipsoid") return parse_superellipsoid(t);
   if (k == "height_field") return parse_height_field(t);
   if (k == "blob") return parse_blob(t);
+  if (k == "text") return parse_text(t);
   static const std::string_view shapes[] = {
-      "lathe", "prism", "sor", "isosurface", "julia_fractal", "text",
+      "lathe", "prism", "sor", "isosurface", "julia_fractal",
       "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)

@@ -104,7 +104,13 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       const double g = parse_float();
       if (g != 1 && g != 2) fail_unsupported(t, "the global setting 'noise_generator " + std::to_string(int(g)) + "'");
       scene_.settings.noise_generator = static_cast<int>(g);
-    } else if (k == "charset" || k == "number_of_waves") {
+    } else if (k == "charset") {
+      // ascii or utf8 (sys is refused): how text { } turns strings into characters and picks a character map.
+      const Token c = next();
+      if (c.is("sys")) fail_unsupported(c, "the global setting 'charset sys'");
+      if (!c.is("ascii") && !c.is("utf8")) fail_expected(c, "ascii, utf8 or sys after 'charset'");
+      string_encoding_ = c.is("utf8") ? ttf::StringEncoding::utf8 : ttf::StringEncoding::ascii;
+    } else if (k == "number_of_waves") {
       next();   // accepted: no effect on what povtrace renders so far
     } else if (!k.empty() && is_reserved_word(k)) {
       fail_unsupported(t, "the global setting '" + std::string(k) + "'");

@@ -384,23 +384,15 @@ Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque) {
   return through;
 }
 
+// POV-Ray walks a shadow ray from crossing to crossing (trace.cpp TracePointLightShadowRay): after a transparent
+// surface it starts again at that point and looks only beyond SMALL_TOLERANCE, so crossings closer than 1e-3 to
+// the previous one counted are passed over. The crossings are therefore sorted and filtered in order.
 Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state) {
   if (!scene_.any_casts_shadow) return {1, 1, 1};
   ++counts_.shadow;
   Rgb f{1, 1, 1};
   // Hits count only with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE).
   const Ray ray{point, to_light};
-  if (!scene_.any_shadow_fade) {
-    scene_.accelerator.for_each_shadow_hit(
-        ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-          bool opaque = false;
-          f = mul(f, filter_through(hit, point + to_light * hit.t, opaque));
-          return !opaque && !all_below(f, tolerance::epsilon);
-        });
-    return f;
-  }
-  // With fading interiors the crossings are walked in order, tracking the interiors the shadow ray is in (it
-  // starts in those of the ray that reached the point), and light fades over each stretch inside one (§3).
   thread_local std::vector<SurfaceHit> hits;
   hits.clear();
   bool blocked = false;
@@ -413,14 +405,20 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayS
       });
   if (blocked) return {0, 0, 0};
   std::sort(hits.begin(), hits.end(), [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
-  InteriorList in = state.interiors;
+  // With fading interiors the shadow ray also tracks the interiors it is in (it starts in those of the ray that
+  // reached the point), and light fades over each stretch inside one (§3).
+  InteriorList in;
+  if (scene_.any_shadow_fade) in = state.interiors;
   double previous = 0;
   for (const SurfaceHit& hit : hits) {
-    const InteriorRef self = interior_of(hit);
+    if (previous > 0 && hit.t - previous <= tolerance::shadow) continue;
     bool opaque = false;
     f = mul(f, filter_through(hit, point + to_light * hit.t, opaque));
-    if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, hit.t - previous));
-    if (in.empty() || !in.remove(self)) in.append(self);
+    if (scene_.any_shadow_fade) {
+      const InteriorRef self = interior_of(hit);
+      if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, hit.t - previous));
+      if (in.empty() || !in.remove(self)) in.append(self);
+    }
     previous = hit.t;
     if (all_below(f, tolerance::epsilon)) break;
   }

@@ -76,6 +76,13 @@ bool nearest_csg_hit(const Primitive& p, const Ray& ray, double t_min, double t_
 Vec3 csg_normal(const Primitive& p, Vec3 world_point);
 bool inside_csg(const Primitive& p, Vec3 world_point);
 Bounds csg_world_bounds(const Primitive& p);
+// Text (text.cpp): any number of roots, and a normal that comes with the hit.
+void collect_text_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
+bool nearest_text_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+Vec3 text_hit_normal(const SurfaceHit& hit);
+Vec3 text_normal(const Primitive& p, Vec3 world_point);
+bool inside_text(const Primitive& p, Vec3 world_point);
+Bounds text_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -108,6 +115,7 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::height_field:
     case ShapeType::blob: return shapes::first_roots(p, ray);
     case ShapeType::csg: return {};
+    case ShapeType::text: return {};   // any number of roots: collect_hits and nearest_hit only
   }
   return {};
 }
@@ -116,6 +124,7 @@ void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (p.type == ShapeType::mesh) return shapes::collect_mesh_hits(p, ray, out);
   if (shapes::has_many_roots(p.type)) return shapes::collect_many_roots(p, ray, out);
   if (p.type == ShapeType::csg) return shapes::collect_csg_hits(p, ray, out);
+  if (p.type == ShapeType::text) return shapes::collect_text_hits(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
@@ -124,6 +133,7 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
   if (p.type == ShapeType::mesh) return shapes::nearest_mesh_hit(p, ray, t_min, t_max, hit);
   if (shapes::has_many_roots(p.type)) return shapes::nearest_of_many_roots(p, ray, t_min, t_max, hit);
   if (p.type == ShapeType::csg) return shapes::nearest_csg_hit(p, ray, t_min, t_max, hit);
+  if (p.type == ShapeType::text) return shapes::nearest_text_hit(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -136,6 +146,7 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
 
 Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::mesh) return shapes::mesh_hit_normal(hit);
+  if (hit.leaf->type == ShapeType::text) return shapes::text_hit_normal(hit);
   // A height field's flat triangles: the one hit decides (POV-Ray keeps its normal with the intersection).
   if (hit.leaf->type == ShapeType::height_field) return shapes::height_field_hit_normal(*hit.leaf, hit.element, world_point);
   return surface_normal(*hit.leaf, world_point);
@@ -159,6 +170,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
     case ShapeType::blob: return shapes::blob_normal(p, world_point);
     case ShapeType::csg: return shapes::csg_normal(p, world_point);
+    case ShapeType::text: return shapes::text_normal(p, world_point);
   }
   return {};
 }
@@ -181,6 +193,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
     case ShapeType::blob: return shapes::inside_blob(p, world_point);
     case ShapeType::csg: return shapes::inside_csg(p, world_point);
+    case ShapeType::text: return shapes::inside_text(p, world_point);
   }
   return false;
 }
@@ -217,6 +230,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
     case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
     case ShapeType::csg: return shapes::csg_world_bounds(p);
+    case ShapeType::text: return to_world(p, shapes::text_object_bounds(p));
   }
   return {};
 }

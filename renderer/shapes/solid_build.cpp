@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/shapes/blob.hpp"
+#include "renderer/shapes/text.hpp"
 
 namespace povtrace::render {
 
@@ -31,15 +32,22 @@ Primitive make_blob(const Blob& b, const Matrix& world_from_object) {
   return p;
 }
 
+Primitive make_text(const Text& t, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::text, world_from_object);
+  p.data = text_data(t);
+  return p;
+}
+
 bool is_solid_shape(const Shape& shape) {
   return std::holds_alternative<Superellipsoid>(shape) || std::holds_alternative<HeightField>(shape) ||
-         std::holds_alternative<Blob>(shape);
+         std::holds_alternative<Blob>(shape) || std::holds_alternative<Text>(shape);
 }
 
 Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object) {
   if (const auto* s = std::get_if<Superellipsoid>(&shape)) return make_superellipsoid(*s, world_from_object);
   if (const auto* h = std::get_if<HeightField>(&shape)) return make_height_field(*h, world_from_object);
   if (const auto* b = std::get_if<Blob>(&shape)) return make_blob(*b, world_from_object);
+  if (const auto* t = std::get_if<Text>(&shape)) return make_text(*t, world_from_object);
   throw std::logic_error("solid_primitive of a shape that is not one of solid_shapes.hpp");
 }
 

@@ -14,6 +14,7 @@ Primitive make_superellipsoid(const Superellipsoid& s, const Matrix& world_from_
 // Reads the image now; a missing or unreadable file is a ParseError at the file name in the scene.
 Primitive make_height_field(const HeightField& h, const Matrix& world_from_object);
 Primitive make_blob(const Blob& b, const Matrix& world_from_object);
+Primitive make_text(const Text& t, const Matrix& world_from_object);
 
 // Whether the shape is one of the above; then its primitive placed by `world_from_object` (material, object index,
 // shadow and inverse flags are left to the caller).
