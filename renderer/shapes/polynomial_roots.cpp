@@ -1,4 +1,4 @@
-// Real roots of polynomials up to degree 4 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
+// Real roots of polynomials up to degree 6 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
 #include "renderer/shapes/polynomial_roots.hpp"
 
 #include <algorithm>
@@ -306,7 +306,7 @@ int solve_polynomial(int degree, const double* c, double* roots, bool sturm, dou
       if (sturm || difficult_coefficients(4, k)) return solve_sturm(4, k, 0.0, sturm_limit, roots);
       return solve_quartic(k, roots);
     default:
-      return 0;
+      return n > 4 ? solve_sturm(n, k, 0.0, sturm_limit, roots) : 0;
   }
 }
 
