@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mesh_description.hpp"
+#include "sweep_description.hpp"
 #include "source_location.hpp"
 #include "vecmath.hpp"
 
@@ -250,7 +251,7 @@ struct Blob {
 };
 
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
-                           Superellipsoid, HeightField, Blob>;
+                           Superellipsoid, HeightField, Blob, Lathe, Prism, Sor>;
 
 struct Object {
   Shape shape;

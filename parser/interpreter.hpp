@@ -15,6 +15,7 @@
 //   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   implicit_shapes.cpp superellipsoid, blob
 //   height_field.cpp  height_field
+//   sweep_shapes.cpp  lathe, prism, sor
 #pragma once
 
 #include <array>
@@ -290,8 +291,8 @@ class Interpreter {
   Object parse_torus(const Token& keyword);
   bool accept_open();
   void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
-  // `sturm [bool]` as an object modifier: legal only on a torus or a blob among the rendered shapes (POV-Ray's
-  // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
+  // `sturm [bool]` as an object modifier: legal only on a torus, poly, blob, lathe, prism or sor among the rendered
+  // shapes (POV-Ray's STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
   // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
   Object parse_poly(const Token& keyword, int order);
@@ -324,6 +325,16 @@ class Interpreter {
   BlobComponent parse_blob_sphere(bool old_syntax);
   BlobComponent parse_blob_cylinder(const Token& keyword);
   void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
+
+  // ---- lathe, prism, sor (sweep_shapes.cpp) ----
+  Object parse_lathe(const Token& keyword);
+  Object parse_prism(const Token& keyword);
+  Object parse_sor(const Token& keyword);
+  SplineKind parse_spline_keywords(bool* conic);   // conic: also the prism's sweep keywords
+  long parse_profile_count(const std::string& shape, SplineKind spline, const long minimum[3]);
+  std::vector<ProfilePoint> parse_profile_points(
+      long count, const std::function<void(long, const std::vector<ProfilePoint>&, const Token&)>& check);
+  void close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points);
 
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);

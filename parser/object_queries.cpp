@@ -113,6 +113,9 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
   if (std::holds_alternative<HeightField>(o.shape)) return std::string("the shape 'height_field'");
   if (std::holds_alternative<Blob>(o.shape)) return std::string("the shape 'blob'");
+  if (std::holds_alternative<Lathe>(o.shape)) return std::string("the shape 'lathe'");
+  if (std::holds_alternative<Prism>(o.shape)) return std::string("the shape 'prism'");
+  if (std::holds_alternative<Sor>(o.shape)) return std::string("the shape 'sor'");
   return std::nullopt;
 }
 
@@ -169,6 +172,9 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
     bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
     bool operator()(const Blob&) const { throw std::logic_error("inside() of a blob"); }
+    bool operator()(const Lathe&) const { throw std::logic_error("inside() of a lathe"); }
+    bool operator()(const Prism&) const { throw std::logic_error("inside() of a prism"); }
+    bool operator()(const Sor&) const { throw std::logic_error("inside() of a sor"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -244,6 +250,9 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
     BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
     BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
+    BBox operator()(const Lathe&) const { throw std::logic_error("extent of a lathe"); }
+    BBox operator()(const Prism&) const { throw std::logic_error("extent of a prism"); }
+    BBox operator()(const Sor&) const { throw std::logic_error("extent of a sor"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -1,5 +1,5 @@
 // Primitive dispatch: intersect_all / surface_normal / inside / world_bounds switch on ShapeType and forward to the
-// per-shape functions in sphere.cpp, plane.cpp, box.cpp, cylinder.cpp, cone.cpp, disc.cpp and torus.cpp. Each shape applies its own transform because POV-Ray
+// per-shape functions in each shape's own file (sphere.cpp … blob.cpp, lathe.cpp, prism.cpp, sor.cpp). Each shape applies its own transform because POV-Ray
 // applies the depth tolerances in different spaces per shape (see the header comment of each shape file).
 // Also the two non-inline Bounds members.
 #include <array>
@@ -70,6 +70,22 @@ Bounds height_field_object_bounds(const Primitive& p);
 Vec3 blob_normal(const Primitive& p, Vec3 world_point);
 bool inside_blob(const Primitive& p, Vec3 world_point);
 Bounds blob_object_bounds(const Primitive& p);
+
+// lathe, prism, sor: the normal depends on the segment hit (element) and, for lathe and prism, where on it (w).
+Vec3 lathe_normal(const Primitive& p, Vec3 world_point);
+Vec3 lathe_hit_normal(const Primitive& p, std::uint32_t segment, double w, Vec3 world_point);
+bool inside_lathe(const Primitive& p, Vec3 world_point);
+Bounds lathe_object_bounds(const Primitive& p);
+
+Vec3 prism_normal(const Primitive& p, Vec3 world_point);
+Vec3 prism_hit_normal(const Primitive& p, std::uint32_t element, double w, Vec3 world_point);
+bool inside_prism(const Primitive& p, Vec3 world_point);
+Bounds prism_object_bounds(const Primitive& p);
+
+Vec3 sor_normal(const Primitive& p, Vec3 world_point);
+Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
+bool inside_sor(const Primitive& p, Vec3 world_point);
+Bounds sor_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -100,7 +116,10 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
     case ShapeType::superellipsoid:
     case ShapeType::height_field:
-    case ShapeType::blob: return shapes::first_roots(p, ray);
+    case ShapeType::blob:
+    case ShapeType::lathe:
+    case ShapeType::prism:
+    case ShapeType::sor: return shapes::first_roots(p, ray);
   }
   return {};
 }
@@ -129,6 +148,10 @@ Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::mesh) return shapes::mesh_hit_normal(hit);
   // A height field's flat triangles: the one hit decides (POV-Ray keeps its normal with the intersection).
   if (hit.leaf->type == ShapeType::height_field) return shapes::height_field_hit_normal(*hit.leaf, hit.element, world_point);
+  // Lathes, prisms and sors: the segment (or end disc) hit and the segment parameter there (kept in u).
+  if (hit.leaf->type == ShapeType::lathe) return shapes::lathe_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
+  if (hit.leaf->type == ShapeType::prism) return shapes::prism_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
+  if (hit.leaf->type == ShapeType::sor) return shapes::sor_hit_normal(*hit.leaf, hit.element, world_point);
   return surface_normal(*hit.leaf, world_point);
 }
 
@@ -149,6 +172,9 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
     case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
     case ShapeType::blob: return shapes::blob_normal(p, world_point);
+    case ShapeType::lathe: return shapes::lathe_normal(p, world_point);
+    case ShapeType::prism: return shapes::prism_normal(p, world_point);
+    case ShapeType::sor: return shapes::sor_normal(p, world_point);
   }
   return {};
 }
@@ -170,6 +196,9 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
     case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
     case ShapeType::blob: return shapes::inside_blob(p, world_point);
+    case ShapeType::lathe: return shapes::inside_lathe(p, world_point);
+    case ShapeType::prism: return shapes::inside_prism(p, world_point);
+    case ShapeType::sor: return shapes::inside_sor(p, world_point);
   }
   return false;
 }
@@ -205,6 +234,9 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
     case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
     case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
+    case ShapeType::lathe: return to_world(p, shapes::lathe_object_bounds(p));
+    case ShapeType::prism: return to_world(p, shapes::prism_object_bounds(p));
+    case ShapeType::sor: return to_world(p, shapes::sor_object_bounds(p));
   }
   return {};
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/shapes/blob.hpp"
+#include "renderer/shapes/sweep.hpp"
 
 namespace povtrace::render {
 
@@ -31,15 +32,37 @@ Primitive make_blob(const Blob& b, const Matrix& world_from_object) {
   return p;
 }
 
+Primitive make_lathe(const Lathe& l, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::lathe, world_from_object);
+  p.data = lathe_data(l);
+  return p;
+}
+
+Primitive make_prism(const Prism& pr, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::prism, world_from_object);
+  p.data = prism_data(pr);
+  return p;
+}
+
+Primitive make_sor(const Sor& s, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::sor, world_from_object);
+  p.data = sor_data(s);
+  return p;
+}
+
 bool is_solid_shape(const Shape& shape) {
   return std::holds_alternative<Superellipsoid>(shape) || std::holds_alternative<HeightField>(shape) ||
-         std::holds_alternative<Blob>(shape);
+         std::holds_alternative<Blob>(shape) || std::holds_alternative<Lathe>(shape) ||
+         std::holds_alternative<Prism>(shape) || std::holds_alternative<Sor>(shape);
 }
 
 Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object) {
   if (const auto* s = std::get_if<Superellipsoid>(&shape)) return make_superellipsoid(*s, world_from_object);
   if (const auto* h = std::get_if<HeightField>(&shape)) return make_height_field(*h, world_from_object);
   if (const auto* b = std::get_if<Blob>(&shape)) return make_blob(*b, world_from_object);
+  if (const auto* l = std::get_if<Lathe>(&shape)) return make_lathe(*l, world_from_object);
+  if (const auto* p = std::get_if<Prism>(&shape)) return make_prism(*p, world_from_object);
+  if (const auto* s = std::get_if<Sor>(&shape)) return make_sor(*s, world_from_object);
   throw std::logic_error("solid_primitive of a shape that is not one of solid_shapes.hpp");
 }
 
