@@ -30,22 +30,6 @@ constexpr double depth_tolerance = 1e-4;   // lathe.cpp DEPTH_TOLERANCE
 
 const LatheData& data_of(const Primitive& p) { return static_cast<const LatheData&>(*p.data); }
 
-// The ray in lathe space with a unit direction, and the length of the transformed world direction.
-struct LocalRay {
-  Vec3 p, d;
-  double len = 1;
-};
-LocalRay to_local(const Primitive& p, const Ray& ray) {
-  LocalRay r{ray.origin, ray.direction, 1.0};
-  if (p.transformed) {
-    r.p = p.object_from_world.point(ray.origin);
-    r.d = p.object_from_world.vector(ray.direction);
-    r.len = length(r.d);
-    r.d = r.d / r.len;
-  }
-  return r;
-}
-
 // a·b for cubics as the sextic product (highest power first).
 std::array<double, 7> product(const Cubic& a, const Cubic& b) {
   std::array<double, 7> out{};
@@ -103,7 +87,7 @@ int degree_of(SplineKind s) { return s == SplineKind::linear ? 2 : s == SplineKi
 
 void lathe_roots(const Primitive& p, const Ray& ray, RootList& out) {
   const LatheData& d = data_of(p);
-  const LocalRay r = to_local(p, ray);
+  const LocalRay r = local_ray(p, ray);
   if (d.segments.empty() || misses_bounds(d, r)) return;
   const int degree = degree_of(d.spline);
   const bool sturm = d.sturm && d.spline != SplineKind::linear;

@@ -21,6 +21,11 @@ int solve_quadratic(const double c[3], double roots[2]);
 // Real roots of a cubic (a quadratic when c[0] = 0); three roots when the discriminant says so, repeated roots
 // repeated. Returns the number of roots.
 int solve_cubic(const double c[4], double roots[3]);
+// The same closed forms evaluated exactly as POV-Ray's solve_cubic does, without polishing: its roots carry the
+// rounding error of the formulas, which decides whether a ray leaving a surface finds it again just beyond the
+// depth tolerance (visible in POV-Ray's images of sor and prism surfaces). A discriminant Q³ − R² ≥ 0 gives three
+// roots (NaN when rounding takes R/√Q³ past 1); otherwise one. solve_polynomial uses this one for cubics.
+int solve_cubic_unpolished(const double c[4], double roots[3]);
 // Real roots of a quartic with c[0] != 0 by Ferrari's method, polished. Returns the number of roots (unsorted).
 int solve_quartic(const double c[5], double roots[4]);
 // Every distinct real root of the degree-`degree` polynomial in [lo, hi], ascending, by Sturm sequences.

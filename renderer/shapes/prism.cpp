@@ -40,11 +40,6 @@ constexpr double eps = tolerance::epsilon;
 
 const PrismData& data_of(const Primitive& p) { return static_cast<const PrismData&>(*p.data); }
 
-struct LocalRay {
-  Vec3 p, d;
-  double len = 1;
-};
-
 // Whether the ray heads away from the rectangle [x1, x2] × [z1, z2] (POV-Ray's modified Cohen-Sutherland test).
 bool heads_away(const LocalRay& r, double x1, double x2, double z1, double z2) {
   return (r.d.x >= 0.0 && r.p.x > x2) || (r.d.x <= 0.0 && r.p.x < x1) || (r.d.z >= 0.0 && r.p.z > z2) ||
@@ -168,13 +163,7 @@ void segment_hits(const PrismData& d, std::uint32_t index, const LocalRay& r, Ro
 void prism_roots(const Primitive& p, const Ray& ray, RootList& out) {
   const PrismData& d = data_of(p);
   if (d.degenerate) return;
-  LocalRay r{ray.origin, ray.direction, 1.0};
-  if (p.transformed) {
-    r.p = p.object_from_world.point(ray.origin);
-    r.d = p.object_from_world.vector(ray.direction);
-    r.len = length(r.d);
-    r.d = r.d / r.len;
-  }
+  const LocalRay r = local_ray(p, ray);
   if (heads_away(r, d.x1, d.x2, d.z1, d.z2)) return;
   if (std::fabs(r.d.y) < eps) {
     if (r.p.y < d.height1 || r.p.y > d.height2) return;

@@ -11,8 +11,10 @@
 // - Closed, and |Dy| > 1e-10: each end disc whose squared radius exceeds 1e-4 is hit where the ray meets its plane
 //   within that squared radius.
 // - Each segment whose bounding ring the ray reaches (bounding_rings.cpp) is met where (Px + t·Dx)² + (Pz + t·Dz)²
-//   = r²(Py + t·Dy), a cubic in t (Solve_Polynomial, Sturm sequences with `sturm`), at heights within the
-//   segment's. Hits count at world depths t/L in (1e-4, MAX_DISTANCE).
+//   = r²(Py + t·Dy), a cubic in t (Solve_Polynomial: Sturm sequences with `sturm`, else the closed form without
+//   polishing, whose roots for nearly level rays — leading coefficient a·Dy³ just above 1e-10 — are far off: the
+//   noisy band POV-Ray draws along a sor's horizon without `sturm`), at heights within the segment's. Hits count
+//   at world depths t/L in (1e-4, MAX_DISTANCE).
 // - Inside: within the heights and the largest radius, the first segment whose heights hold the point decides:
 //   inside when x² + z² ≤ r²(y).
 // - Normal: (Px, −r²'(Py)/2, Pz) on a segment, (0, −1, 0) on the lower disc, (0, 1, 0) on the upper one.
@@ -61,14 +63,9 @@ std::array<double, 4> segment_cubic(const SorSegment& s, Vec3 p, Vec3 v) {
 
 void sor_roots(const Primitive& p, const Ray& ray, RootList& out) {
   const SorData& d = data_of(p);
-  Vec3 q = ray.origin, v = ray.direction;
-  double len = 1.0;
-  if (p.transformed) {
-    q = p.object_from_world.point(ray.origin);
-    v = p.object_from_world.vector(ray.direction);
-    len = length(v);
-    v = v / len;
-  }
+  const LocalRay r = local_ray(p, ray);
+  const Vec3 q = r.p, v = r.d;
+  const double len = r.len;
   if ((v.y >= 0.0 && q.y > d.height2) || (v.y <= 0.0 && q.y < d.height1) || (v.x >= 0.0 && q.x > d.radius2) ||
       (v.x <= 0.0 && q.x < -d.radius2))
     return;

@@ -6,8 +6,10 @@
 // - A segment's extent: its end points' coordinates (a Bézier segment: all four control points), plus for quadratic
 //   and cubic segments the values where the derivative vanishes inside [0, 1].
 // - A conic prism's rectangles are scaled by both heights. The sor's segment k is r² = a·y³ + b·y² + c·y + d through
-//   points k+1 and k+2 with the slopes of r² there taken from the neighbouring points (2·r·Δr/Δy); coefficients
-//   below 1e-10 become 0; its end discs' squared radii come from the first and last segment, at least 0.
+//   points k+1 and k+2 with the slopes of r² there taken from the neighbouring points (2·r·Δr/Δy), solved through
+//   the inverse of its 4×4 matrix by cofactors as POV-Ray does (so the coefficients round alike: the sor's
+//   unpolished cubic makes the last bits visible); coefficients below 1e-10 become 0; its end discs' squared radii
+//   come from the first and last segment, at least 0.
 #include <algorithm>
 #include <cmath>
 
@@ -135,26 +137,38 @@ std::shared_ptr<PrismData> prism_data(const Prism& pr) {
 }
 
 namespace {
-// Solves m·c = rhs for the 4×4 system of one sor segment (Gaussian elimination with partial pivoting).
-std::array<double, 4> solve_4x4(std::array<std::array<double, 4>, 4> m, std::array<double, 4> rhs) {
-  for (int col = 0; col < 4; ++col) {
-    int pivot = col;
-    for (int row = col + 1; row < 4; ++row)
-      if (std::fabs(m[row][col]) > std::fabs(m[pivot][col])) pivot = row;
-    std::swap(m[col], m[pivot]);
-    std::swap(rhs[col], rhs[pivot]);
-    for (int row = col + 1; row < 4; ++row) {
-      const double f = m[row][col] / m[col][col];
-      for (int k = col; k < 4; ++k) m[row][k] -= f * m[col][k];
-      rhs[row] -= f * rhs[col];
-    }
+using Matrix4 = std::array<std::array<double, 4>, 4>;
+
+// The determinant of the 3×3 minor of m without row `skip_row` and column `skip_col`, by the rule of Sarrus.
+double minor3(const Matrix4& m, int skip_row, int skip_col) {
+  double a[3][3];
+  for (int i = 0, r = 0; i < 4; ++i) {
+    if (i == skip_row) continue;
+    for (int j = 0, c = 0; j < 4; ++j)
+      if (j != skip_col) a[r][c++] = m[i][j];
+    ++r;
   }
+  return a[0][0] * a[1][1] * a[2][2] + a[0][1] * a[1][2] * a[2][0] + a[0][2] * a[1][0] * a[2][1] -
+         a[2][0] * a[1][1] * a[0][2] - a[2][1] * a[1][2] * a[0][0] - a[2][2] * a[1][0] * a[0][1];
+}
+
+// m⁻¹ by cofactors over the determinant (POV-Ray inverts the sor's matrix so, matrices.cpp MInvers).
+Matrix4 inverse4(const Matrix4& m) {
+  Matrix4 cof{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) cof[i][j] = minor3(m, i, j);
+  const double det = m[0][0] * cof[0][0] - m[0][1] * cof[0][1] + m[0][2] * cof[0][2] - m[0][3] * cof[0][3];
+  Matrix4 r{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) r[i][j] = ((i + j) % 2 ? -cof[j][i] : cof[j][i]) / det;
+  return r;
+}
+
+// Solves m·c = rhs: c = m⁻¹·rhs, each coefficient summed over rhs in order.
+std::array<double, 4> solve_4x4(const Matrix4& m, const std::array<double, 4>& rhs) {
+  const Matrix4 inv = inverse4(m);
   std::array<double, 4> c{};
-  for (int row = 3; row >= 0; --row) {
-    double v = rhs[row];
-    for (int k = row + 1; k < 4; ++k) v -= m[row][k] * c[k];
-    c[row] = v / m[row][row];
-  }
+  for (int i = 0; i < 4; ++i) c[i] = rhs[0] * inv[i][0] + rhs[1] * inv[i][1] + rhs[2] * inv[i][2] + rhs[3] * inv[i][3];
   return c;
 }
 

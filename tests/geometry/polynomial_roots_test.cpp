@@ -199,4 +199,15 @@ TEST(PolynomialRoots, SexticsAreSolvedBySturmInZeroToTheLimit) {
   EXPECT_EQ(sorted(r, solve_polynomial(5, quintic.data(), r, false, 0.0, 1e7)), (std::vector<double>{0.25, 0.5, 3}));
 }
 
+TEST(PolynomialRoots, SturmCountsARootAtTheLowerEndAndTheRootsAboveIt) {
+  // A ray starting exactly on a surface: p(0) = 0. POV-Ray's numchanges counts the zero as a sign change, so the
+  // bracket [0, MAX_DISTANCE] holds both the root at 0 and the next one, which must still be found.
+  const auto c = from_roots({-91.7, 0.0, 0.876}, -0.0099);
+  double r[3];
+  const auto found = sorted(r, solve_sturm(3, c.data(), 0.0, 1e7, r));
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0], 0.0);
+  EXPECT_NEAR(found[1], 0.876, 1e-12);
+}
+
 }  // namespace
