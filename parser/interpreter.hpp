@@ -16,6 +16,7 @@
 //   implicit_shapes.cpp superellipsoid, blob
 //   height_field.cpp  height_field
 //   sweep_shapes.cpp  lathe, prism, sor
+//   isosurface.cpp    isosurface
 #pragma once
 
 #include <array>
@@ -229,6 +230,8 @@ class Interpreter {
   // `function …` (a definition) or `F(…)` (a call of a declared function) as a right-hand value.
   std::optional<Value> try_parse_function_rvalue(const Token& first);
   Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
+  // `function [(params)] { … }` after its keyword: the compiled function.
+  std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
   // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
   void check_function_redeclaration(const Token& name, bool local, const Value& value);
   std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
@@ -335,6 +338,13 @@ class Interpreter {
   std::vector<ProfilePoint> parse_profile_points(
       long count, const std::function<void(long, const std::vector<ProfilePoint>&, const Token&)>& check);
   void close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points);
+
+  // ---- isosurface (isosurface.cpp) ----
+  Object parse_isosurface(const Token& keyword);
+  void parse_isosurface_function(Isosurface& iso, Object& o);
+  void parse_isosurface_container(Isosurface& iso);
+  bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
+  void correct_isosurface_values(const Token& keyword, Isosurface& iso);
 
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);

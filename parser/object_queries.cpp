@@ -116,6 +116,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Lathe>(o.shape)) return std::string("the shape 'lathe'");
   if (std::holds_alternative<Prism>(o.shape)) return std::string("the shape 'prism'");
   if (std::holds_alternative<Sor>(o.shape)) return std::string("the shape 'sor'");
+  if (std::holds_alternative<Isosurface>(o.shape)) return std::string("the shape 'isosurface'");
   return std::nullopt;
 }
 
@@ -175,6 +176,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Lathe&) const { throw std::logic_error("inside() of a lathe"); }
     bool operator()(const Prism&) const { throw std::logic_error("inside() of a prism"); }
     bool operator()(const Sor&) const { throw std::logic_error("inside() of a sor"); }
+    bool operator()(const Isosurface&) const { throw std::logic_error("inside() of an isosurface"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -253,6 +255,7 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Lathe&) const { throw std::logic_error("extent of a lathe"); }
     BBox operator()(const Prism&) const { throw std::logic_error("extent of a prism"); }
     BBox operator()(const Sor&) const { throw std::logic_error("extent of a sor"); }
+    BBox operator()(const Isosurface&) const { throw std::logic_error("extent of an isosurface"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

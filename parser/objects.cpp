@@ -289,8 +289,9 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "lathe") return parse_lathe(t);
   if (k == "prism") return parse_prism(t);
   if (k == "sor") return parse_sor(t);
+  if (k == "isosurface") return parse_isosurface(t);
   static const std::string_view shapes[] = {
-      "isosurface", "julia_fractal", "text",
+      "julia_fractal", "text",
       "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)

@@ -8,7 +8,8 @@ namespace povtrace::render::shapes {
 
 bool has_many_roots(ShapeType type) {
   return type == ShapeType::superellipsoid || type == ShapeType::height_field || type == ShapeType::blob ||
-         type == ShapeType::lathe || type == ShapeType::prism || type == ShapeType::sor;
+         type == ShapeType::lathe || type == ShapeType::prism || type == ShapeType::sor ||
+         type == ShapeType::isosurface;
 }
 
 void append_roots(const Primitive& p, const Ray& ray, RootList& out) {
@@ -19,6 +20,7 @@ void append_roots(const Primitive& p, const Ray& ray, RootList& out) {
     case ShapeType::lathe: lathe_roots(p, ray, out); return;
     case ShapeType::prism: prism_roots(p, ray, out); return;
     case ShapeType::sor: sor_roots(p, ray, out); return;
+    case ShapeType::isosurface: isosurface_roots(p, ray, out); return;
     default: return;
   }
 }

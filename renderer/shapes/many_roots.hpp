@@ -11,7 +11,8 @@
 namespace povtrace::render::shapes {
 
 // One root: the world depth along the unit world ray, which part of the shape it is on (a height field's
-// triangle, the profile segment or end disc of a lathe, prism or sor; 0 for the others) and where on that part
+// triangle, the profile segment or end disc of a lathe, prism or sor, the container face of an isosurface; 0 for
+// the others) and where on that part
 // (the segment parameter w of a lathe or prism; it becomes the SurfaceHit's u).
 struct Root {
   double t = 0;
@@ -35,5 +36,6 @@ void blob_roots(const Primitive& p, const Ray& ray, RootList& out);
 void lathe_roots(const Primitive& p, const Ray& ray, RootList& out);
 void prism_roots(const Primitive& p, const Ray& ray, RootList& out);
 void sor_roots(const Primitive& p, const Ray& ray, RootList& out);
+void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out);
 
 }  // namespace povtrace::render::shapes

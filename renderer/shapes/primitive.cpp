@@ -86,6 +86,11 @@ Vec3 sor_normal(const Primitive& p, Vec3 world_point);
 Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
 bool inside_sor(const Primitive& p, Vec3 world_point);
 Bounds sor_object_bounds(const Primitive& p);
+
+Vec3 isosurface_normal(const Primitive& p, Vec3 world_point);
+Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_point);
+bool inside_isosurface(const Primitive& p, Vec3 world_point);
+Bounds isosurface_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -119,7 +124,8 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::blob:
     case ShapeType::lathe:
     case ShapeType::prism:
-    case ShapeType::sor: return shapes::first_roots(p, ray);
+    case ShapeType::sor:
+    case ShapeType::isosurface: return shapes::first_roots(p, ray);
   }
   return {};
 }
@@ -152,6 +158,7 @@ Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::lathe) return shapes::lathe_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
   if (hit.leaf->type == ShapeType::prism) return shapes::prism_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
   if (hit.leaf->type == ShapeType::sor) return shapes::sor_hit_normal(*hit.leaf, hit.element, world_point);
+  if (hit.leaf->type == ShapeType::isosurface) return shapes::isosurface_hit_normal(*hit.leaf, hit.element, world_point);
   return surface_normal(*hit.leaf, world_point);
 }
 
@@ -175,6 +182,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::lathe: return shapes::lathe_normal(p, world_point);
     case ShapeType::prism: return shapes::prism_normal(p, world_point);
     case ShapeType::sor: return shapes::sor_normal(p, world_point);
+    case ShapeType::isosurface: return shapes::isosurface_normal(p, world_point);
   }
   return {};
 }
@@ -199,6 +207,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::lathe: return shapes::inside_lathe(p, world_point);
     case ShapeType::prism: return shapes::inside_prism(p, world_point);
     case ShapeType::sor: return shapes::inside_sor(p, world_point);
+    case ShapeType::isosurface: return shapes::inside_isosurface(p, world_point);
   }
   return false;
 }
@@ -237,6 +246,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::lathe: return to_world(p, shapes::lathe_object_bounds(p));
     case ShapeType::prism: return to_world(p, shapes::prism_object_bounds(p));
     case ShapeType::sor: return to_world(p, shapes::sor_object_bounds(p));
+    case ShapeType::isosurface: return to_world(p, shapes::isosurface_object_bounds(p));
   }
   return {};
 }

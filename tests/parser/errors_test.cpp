@@ -102,8 +102,8 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Unsupported, Errors,
     ::testing::Values(
-        ErrorCase{"Isosurface", "#version 3.7;\nisosurface { function { x } }\n", 2, 1,
-                  "unsupported: the shape 'isosurface'"},
+        ErrorCase{"SphereSweep", "#version 3.7;\nsphere_sweep { linear_spline 2, 0, 1, x, 1 }\n", 2, 1,
+                  "unsupported: the shape 'sphere_sweep'"},
         ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { facets } }\n", 2, 1,
                   "unsupported: the normal item 'facets'"},
         ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { quilted 1 } } }\n", 2, 1,
