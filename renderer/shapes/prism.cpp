@@ -66,8 +66,8 @@ void push_hit(double k, double len, std::uint32_t element, double w, RootList& o
   const double depth = k / len;
   if (depth > depth_tolerance && depth < tolerance::max_distance) out.push_back(Root{depth, element, w});
 }
-}  // namespace
 
+// POV-Ray's in_curve (see the top of this file).
 bool prism_outline_holds(const PrismData& d, double u, double v) {
   if (!(u >= d.u1 && u <= d.u2 && v >= d.v1 && v <= d.v2)) return false;
   int crossings = 0;
@@ -83,7 +83,6 @@ bool prism_outline_holds(const PrismData& d, double u, double v) {
   return crossings % 2 == 1;
 }
 
-namespace {
 // The end planes of a closed prism, upper first.
 void end_plane_hits(const PrismData& d, const LocalRay& r, RootList& out) {
   const struct { double h; std::uint32_t element; } planes[2] = {{d.height2, cap_element}, {d.height1, base_element}};

@@ -59,6 +59,12 @@ std::array<double, 4> segment_cubic(const SorSegment& s, Vec3 p, Vec3 v) {
           v.y * (p.y * (3.0 * s.a * p.y + 2.0 * s.b) + s.c) - 2.0 * (p.x * v.x + p.z * v.z),
           radius2_at(s, p.y) - p.x * p.x - p.z * p.z};
 }
+// The first segment whose heights hold y (POV-Ray's inside rule), or the segment count.
+std::uint32_t sor_segment_at(const SorData& d, double y) {
+  std::uint32_t k = 0;
+  while (k < d.segments.size() && !(y >= d.rings[k].h1 && y <= d.rings[k].h2)) ++k;
+  return k;
+}
 }  // namespace
 
 void sor_roots(const Primitive& p, const Ray& ray, RootList& out) {
@@ -95,13 +101,6 @@ Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point)
   }
   if (p.transformed) n = p.object_from_world.normal_from_inverse(n);
   return n * (1.0 / length(n));
-}
-
-// The first segment whose heights hold y (POV-Ray's inside rule), or the segment count.
-std::uint32_t sor_segment_at(const SorData& d, double y) {
-  std::uint32_t k = 0;
-  while (k < d.segments.size() && !(y >= d.rings[k].h1 && y <= d.rings[k].h2)) ++k;
-  return k;
 }
 
 // The normal at a point without its hit: an end disc when the point is nearer its plane than the curve.
