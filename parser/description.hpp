@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mesh_description.hpp"
+#include "sweep_description.hpp"
 #include "source_location.hpp"
 #include "text_description.hpp"
 #include "vecmath.hpp"
@@ -255,8 +256,28 @@ struct Blob {
   std::shared_ptr<const std::vector<BlobComponent>> components;
 };
 
+namespace sdl {
+struct FunctionValue;   // a compiled `function { … }` (function_value.hpp; evaluated by sdl::evaluate_function)
+}
+
+// isosurface { function { F } [contained_by { box { C1, C2 } | sphere { C, R } }] [threshold T] [accuracy A]
+// [max_gradient G] [max_trace N | all_intersections] [open] }: the surface F(x, y, z) = T inside its container, with
+// POV-Ray's defaults and its corrections of out-of-range values already applied by the parser.
+struct Isosurface {
+  std::shared_ptr<const sdl::FunctionValue> function;   // a float function of x, y, z that povtrace can evaluate
+  bool sphere_container = false;
+  Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};   // box container, sorted per axis
+  Vec3 centre;                                  // sphere container
+  double radius = 1;
+  double threshold = 0;
+  double accuracy = 0.001;
+  double max_gradient = 1.1;
+  int max_trace = 1;
+  bool open = false;
+};
+
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
-                           Superellipsoid, HeightField, Blob, Text>;
+                           Superellipsoid, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface>;
 
 struct Object {
   Shape shape;

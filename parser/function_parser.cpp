@@ -821,6 +821,10 @@ std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) 
   return std::nullopt;
 }
 
+std::shared_ptr<const FunctionValue> Interpreter::parse_function_definition(const Token& keyword) {
+  return FunctionParser(*this).parse_definition(keyword);
+}
+
 Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn) {
   // `fn` is held here: parsing the arguments may end the macro or include file whose local it is.
   const FunctionValue& f = *fn;

@@ -103,6 +103,11 @@ class FunctionError : public std::runtime_error {
 double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
                          std::uint64_t* steps_left = nullptr);
 
+// The first part of `f` that evaluate_function would refuse (a noise-based internal function, a pattern, a
+// spline…), as its description(); nothing when f can be evaluated everywhere. Lets a shape that evaluates f while
+// rendering (isosurface) be refused by name when it is parsed.
+std::optional<std::string> unevaluable_part(const FunctionValue& f);
+
 // POV-Ray's internal functions (functions.inc: `function { internal(N) }`, N = 0…78).
 constexpr int kInternalFunctionCount = 79;
 struct InternalFunctionInfo {

@@ -298,6 +298,26 @@ std::string FunctionValue::description() const {
   return what;
 }
 
+std::optional<std::string> unevaluable_part(const FunctionValue& f) {
+  switch (f.kind) {
+    case FunctionValue::Kind::internal:
+      if (internal_function_info(f.internal_id).evaluable) return std::nullopt;
+      return f.description();
+    case FunctionValue::Kind::transform: return std::nullopt;
+    case FunctionValue::Kind::pigment:
+      if (f.colour) return std::nullopt;
+      return f.description();
+    case FunctionValue::Kind::expression:
+      for (const FnInstr& in : f.code) {
+        if (in.op == FnOp::unsupported) return f.callees[static_cast<std::size_t>(in.a)]->description();
+        if (in.op == FnOp::call)
+          if (auto part = unevaluable_part(*f.callees[static_cast<std::size_t>(in.a)])) return part;
+      }
+      return std::nullopt;
+    default: return f.description();
+  }
+}
+
 double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
                          std::uint64_t* steps_left) {
   if (f.kind != FunctionValue::Kind::expression) {

@@ -17,6 +17,8 @@
 //   height_field.cpp  height_field
 //   text.cpp          text (fonts read by truetype*.cpp, laid out by text_layout.cpp)
 //   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
+//   sweep_shapes.cpp  lathe, prism, sor
+//   isosurface.cpp    isosurface
 #pragma once
 
 #include <array>
@@ -231,6 +233,8 @@ class Interpreter {
   // `function …` (a definition) or `F(…)` (a call of a declared function) as a right-hand value.
   std::optional<Value> try_parse_function_rvalue(const Token& first);
   Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
+  // `function [(params)] { … }` after its keyword: the compiled function.
+  std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
   // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
   void check_function_redeclaration(const Token& name, bool local, const Value& value);
   std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
@@ -293,8 +297,8 @@ class Interpreter {
   Object parse_torus(const Token& keyword);
   bool accept_open();
   void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
-  // `sturm [bool]` as an object modifier: legal only on a torus or a blob among the rendered shapes (POV-Ray's
-  // STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
+  // `sturm [bool]` as an object modifier: legal only on a torus, poly, blob, lathe, prism or sor among the rendered
+  // shapes (POV-Ray's STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
   bool try_sturm_modifier(const Token& t, Object& object);
   // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
   Object parse_poly(const Token& keyword, int order);
@@ -332,6 +336,23 @@ class Interpreter {
   BlobComponent parse_blob_sphere(bool old_syntax);
   BlobComponent parse_blob_cylinder(const Token& keyword);
   void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
+
+  // ---- lathe, prism, sor (sweep_shapes.cpp) ----
+  Object parse_lathe(const Token& keyword);
+  Object parse_prism(const Token& keyword);
+  Object parse_sor(const Token& keyword);
+  SplineKind parse_spline_keywords(bool* conic);   // conic: also the prism's sweep keywords
+  long parse_profile_count(const std::string& shape, SplineKind spline, const long minimum[3]);
+  std::vector<ProfilePoint> parse_profile_points(
+      long count, const std::function<void(long, const std::vector<ProfilePoint>&, const Token&)>& check);
+  void close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points);
+
+  // ---- isosurface (isosurface.cpp) ----
+  Object parse_isosurface(const Token& keyword);
+  void parse_isosurface_function(Isosurface& iso, Object& o);
+  void parse_isosurface_container(Isosurface& iso);
+  bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
+  void correct_isosurface_values(const Token& keyword, Isosurface& iso);
 
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);

@@ -114,6 +114,10 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   for (const auto* list : {&o.clipped_by, &o.bounded_by})
     for (const auto& c : *list)
       if (auto u = unmodelled_geometry(c)) return u;
+  if (std::holds_alternative<Lathe>(o.shape)) return std::string("the shape 'lathe'");
+  if (std::holds_alternative<Prism>(o.shape)) return std::string("the shape 'prism'");
+  if (std::holds_alternative<Sor>(o.shape)) return std::string("the shape 'sor'");
+  if (std::holds_alternative<Isosurface>(o.shape)) return std::string("the shape 'isosurface'");
   return std::nullopt;
 }
 
@@ -191,6 +195,10 @@ bool inside(const Object& o, Vec3 p, bool invert) {
         in = in || (q.z >= 0.0 && q.z <= text.thickness && inside_glyph(*g.outline, q.x - g.x, q.y - g.y));
       return in != invert;
     }
+    bool operator()(const Lathe&) const { throw std::logic_error("inside() of a lathe"); }
+    bool operator()(const Prism&) const { throw std::logic_error("inside() of a prism"); }
+    bool operator()(const Sor&) const { throw std::logic_error("inside() of a sor"); }
+    bool operator()(const Isosurface&) const { throw std::logic_error("inside() of an isosurface"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }
@@ -292,6 +300,10 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
     BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
     BBox operator()(const Text& text) const { return text_box(text); }
+    BBox operator()(const Lathe&) const { throw std::logic_error("extent of a lathe"); }
+    BBox operator()(const Prism&) const { throw std::logic_error("extent of a prism"); }
+    BBox operator()(const Sor&) const { throw std::logic_error("extent of a sor"); }
+    BBox operator()(const Isosurface&) const { throw std::logic_error("extent of an isosurface"); }
   };
   return std::visit(Box_{o}, o.shape);
 }

@@ -73,8 +73,9 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "sturm" && try_sturm_modifier(t, object)) return true;
-  if (k == "open")   // POV-Ray reads `open` only right after a cylinder's or cone's parameters (quadric_shapes.cpp)
-    fail_at(t, "'open' must directly follow the parameters of a cylinder or cone; it is no object modifier");
+  if (k == "open")   // POV-Ray reads `open` only right after the parameters of a cylinder, cone, prism or sor
+    fail_at(t, "'open' must directly follow the parameters of a cylinder, cone, prism or sor; it is no object "
+               "modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
       "no_image", "no_reflection", "no_radiosity", "double_illuminate",
@@ -267,8 +268,12 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "height_field") return parse_height_field(t);
   if (k == "blob") return parse_blob(t);
   if (k == "text") return parse_text(t);
+  if (k == "lathe") return parse_lathe(t);
+  if (k == "prism") return parse_prism(t);
+  if (k == "sor") return parse_sor(t);
+  if (k == "isosurface") return parse_isosurface(t);
   static const std::string_view shapes[] = {
-      "lathe", "prism", "sor", "isosurface", "julia_fractal",
+      "julia_fractal",
       "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)

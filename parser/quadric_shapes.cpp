@@ -130,6 +130,9 @@ bool Interpreter::try_sturm_modifier(const Token& t, Object& object) {
   if (auto* torus = std::get_if<Torus>(&object.shape)) flag = &torus->sturm;
   if (auto* blob = std::get_if<Blob>(&object.shape)) flag = &blob->sturm;
   if (auto* poly = std::get_if<Poly>(&object.shape)) flag = &poly->sturm;
+  if (auto* lathe = std::get_if<Lathe>(&object.shape)) flag = &lathe->sturm;
+  if (auto* prism = std::get_if<Prism>(&object.shape)) flag = &prism->sturm;
+  if (auto* sor = std::get_if<Sor>(&object.shape)) flag = &sor->sturm;
   if (!flag) fail_at(t, "keyword 'sturm' cannot be used with this object (POV-Ray takes it only on shapes "
                         "solved as polynomials: torus, blob, lathe, sor, prism, ovus, poly)");
   bool on = true;

@@ -7,7 +7,9 @@
 namespace povtrace::render::shapes {
 
 bool has_many_roots(ShapeType type) {
-  return type == ShapeType::superellipsoid || type == ShapeType::height_field || type == ShapeType::blob;
+  return type == ShapeType::superellipsoid || type == ShapeType::height_field || type == ShapeType::blob ||
+         type == ShapeType::lathe || type == ShapeType::prism || type == ShapeType::sor ||
+         type == ShapeType::isosurface;
 }
 
 void append_roots(const Primitive& p, const Ray& ray, RootList& out) {
@@ -15,6 +17,10 @@ void append_roots(const Primitive& p, const Ray& ray, RootList& out) {
     case ShapeType::superellipsoid: superellipsoid_roots(p, ray, out); return;
     case ShapeType::height_field: height_field_roots(p, ray, out); return;
     case ShapeType::blob: blob_roots(p, ray, out); return;
+    case ShapeType::lathe: lathe_roots(p, ray, out); return;
+    case ShapeType::prism: prism_roots(p, ray, out); return;
+    case ShapeType::sor: sor_roots(p, ray, out); return;
+    case ShapeType::isosurface: isosurface_roots(p, ray, out); return;
     default: return;
   }
 }
@@ -42,7 +48,7 @@ Intersections first_roots(const Primitive& p, const Ray& ray) {
 void collect_many_roots(const Primitive& p, const Ray& ray, HitBuffer& out) {
   RootList& roots = scratch();
   append_roots(p, ray, roots);
-  for (const Root& r : roots) out.push_back(SurfaceHit{r.t, &p, r.element, 0, 0});
+  for (const Root& r : roots) out.push_back(SurfaceHit{r.t, &p, r.element, r.u, 0});
 }
 
 bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
@@ -52,7 +58,7 @@ bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, dou
   for (const Root& r : roots) {
     if (!(r.t > t_min) || !(r.t < t_max)) continue;
     if (found && !(r.t < hit.t)) continue;
-    hit = SurfaceHit{r.t, &p, r.element, 0, 0};
+    hit = SurfaceHit{r.t, &p, r.element, r.u, 0};
     found = true;
   }
   return found;

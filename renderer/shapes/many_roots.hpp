@@ -10,11 +10,14 @@
 
 namespace povtrace::render::shapes {
 
-// One root: the world depth along the unit world ray, and which part of the shape it is on (a height field's
-// triangle; 0 for the others).
+// One root: the world depth along the unit world ray, which part of the shape it is on (a height field's
+// triangle, the profile segment or end disc of a lathe, prism or sor, the container face of an isosurface; 0 for
+// the others) and where on that part
+// (the segment parameter w of a lathe or prism; it becomes the SurfaceHit's u).
 struct Root {
   double t = 0;
   std::uint32_t element = 0;
+  double u = 0;
 };
 using RootList = std::vector<Root>;
 
@@ -30,5 +33,9 @@ bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, dou
 void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out);
 void height_field_roots(const Primitive& p, const Ray& ray, RootList& out);
 void blob_roots(const Primitive& p, const Ray& ray, RootList& out);
+void lathe_roots(const Primitive& p, const Ray& ray, RootList& out);
+void prism_roots(const Primitive& p, const Ray& ray, RootList& out);
+void sor_roots(const Primitive& p, const Ray& ray, RootList& out);
+void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out);
 
 }  // namespace povtrace::render::shapes

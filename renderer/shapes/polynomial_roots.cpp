@@ -1,4 +1,4 @@
-// Real roots of polynomials up to degree 4 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
+// Real roots of polynomials up to degree 6 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
 #include "renderer/shapes/polynomial_roots.hpp"
 
 #include <algorithm>
@@ -100,14 +100,14 @@ struct SturmSequence {
     }
   }
 
-  // Sign changes of the sequence at t (zeros skipped).
+  // Sign changes of the sequence at t, counted as POV-Ray's numchanges does: an exact zero counts as a change with
+  // the member after it (so a root exactly at the lower end of a bracket is counted in it, and found there).
   int sign_changes(double t) const {
     int changes = 0;
-    double last = 0.0;
-    for (int k = 0; k < count; ++k) {
+    double last = evaluate(p[0].degree, p[0].c.data(), t);
+    for (int k = 1; k < count; ++k) {
       const double v = evaluate(p[k].degree, p[k].c.data(), t);
-      if (v == 0.0) continue;
-      if (last != 0.0 && (v < 0.0) != (last < 0.0)) ++changes;
+      if (last == 0.0 || (v != 0.0 && (v < 0.0) != (last < 0.0))) ++changes;
       last = v;
     }
     return changes;
@@ -232,6 +232,28 @@ int solve_cubic(const double c[4], double roots[3]) {
   return n;
 }
 
+int solve_cubic_unpolished(const double c[4], double roots[3]) {
+  if (c[0] == 0.0) return solve_quadratic(c + 1, roots);
+  const double a = c[1] / c[0], b = c[2] / c[0], d = c[3] / c[0];
+  const double a2 = a * a;
+  const double q = (a2 - 3.0 * b) / 9.0;
+  const double r = (a * (a2 - 4.5 * b) + 13.5 * d) / 27.0;   // (2a³ − 9ab + 27d)/54, grouped as POV-Ray has it
+  const double q3 = q * q * q, r2 = r * r;
+  const double shift = a / 3.0;
+  if (q3 - r2 >= 0.0) {   // three real roots (a NaN one, beyond acos's domain by rounding, is dropped by callers)
+    const double theta = std::acos(r / std::sqrt(q3)) / 3.0;
+    const double scale = -2.0 * std::sqrt(q);
+    constexpr double third_turn = 2.0943951023931957, two_thirds_turn = 4.1887902047863910;   // 2π/3, 4π/3
+    roots[0] = scale * std::cos(theta) - shift;
+    roots[1] = scale * std::cos(theta + third_turn) - shift;
+    roots[2] = scale * std::cos(theta + two_thirds_turn) - shift;
+    return 3;
+  }
+  const double s = std::pow(std::sqrt(r2 - q3) + std::fabs(r), 1.0 / 3.0);
+  roots[0] = (r < 0 ? 1.0 : -1.0) * (s + q / s) - shift;
+  return 1;
+}
+
 int solve_quartic(const double c[5], double roots[4]) {
   const double monic[5] = {1.0, c[1] / c[0], c[2] / c[0], c[3] / c[0], c[4] / c[0]};
   const double a = monic[1], b = monic[2], cc = monic[3], d = monic[4];
@@ -300,13 +322,13 @@ int solve_polynomial(int degree, const double* c, double* roots, bool sturm, dou
       return solve_quadratic(k, roots);
     case 3:
       if (eliminate) return solve_quadratic(k, roots);
-      return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic(k, roots);
+      return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
     case 4:
-      if (eliminate) return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic(k, roots);
+      if (eliminate) return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
       if (sturm || difficult_coefficients(4, k)) return solve_sturm(4, k, 0.0, sturm_limit, roots);
       return solve_quartic(k, roots);
     default:
-      return 0;
+      return n > 4 ? solve_sturm(n, k, 0.0, sturm_limit, roots) : 0;
   }
 }
 

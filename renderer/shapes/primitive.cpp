@@ -1,5 +1,5 @@
 // Primitive dispatch: intersect_all / surface_normal / inside / world_bounds switch on ShapeType and forward to the
-// per-shape functions in sphere.cpp, plane.cpp, box.cpp, cylinder.cpp, cone.cpp, disc.cpp and torus.cpp. Each shape applies its own transform because POV-Ray
+// per-shape functions in each shape's own file (sphere.cpp … blob.cpp, lathe.cpp, prism.cpp, sor.cpp). Each shape applies its own transform because POV-Ray
 // applies the depth tolerances in different spaces per shape (see the header comment of each shape file).
 // Also the two non-inline Bounds members.
 #include <array>
@@ -83,6 +83,27 @@ Vec3 text_hit_normal(const SurfaceHit& hit);
 Vec3 text_normal(const Primitive& p, Vec3 world_point);
 bool inside_text(const Primitive& p, Vec3 world_point);
 Bounds text_object_bounds(const Primitive& p);
+
+// lathe, prism, sor: the normal depends on the segment hit (element) and, for lathe and prism, where on it (w).
+Vec3 lathe_normal(const Primitive& p, Vec3 world_point);
+Vec3 lathe_hit_normal(const Primitive& p, std::uint32_t segment, double w, Vec3 world_point);
+bool inside_lathe(const Primitive& p, Vec3 world_point);
+Bounds lathe_object_bounds(const Primitive& p);
+
+Vec3 prism_normal(const Primitive& p, Vec3 world_point);
+Vec3 prism_hit_normal(const Primitive& p, std::uint32_t element, double w, Vec3 world_point);
+bool inside_prism(const Primitive& p, Vec3 world_point);
+Bounds prism_object_bounds(const Primitive& p);
+
+Vec3 sor_normal(const Primitive& p, Vec3 world_point);
+Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
+bool inside_sor(const Primitive& p, Vec3 world_point);
+Bounds sor_object_bounds(const Primitive& p);
+
+Vec3 isosurface_normal(const Primitive& p, Vec3 world_point);
+Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_point);
+bool inside_isosurface(const Primitive& p, Vec3 world_point);
+Bounds isosurface_object_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -111,11 +132,15 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::triangle: return shapes::intersect_triangle(p, ray);
     case ShapeType::polygon: return shapes::intersect_polygon(p, ray);
     case ShapeType::mesh: return {};   // any number of roots: collect_hits and nearest_hit only
-    case ShapeType::superellipsoid:
-    case ShapeType::height_field:
-    case ShapeType::blob: return shapes::first_roots(p, ray);
     case ShapeType::csg: return {};
     case ShapeType::text: return {};   // any number of roots: collect_hits and nearest_hit only
+    case ShapeType::superellipsoid:
+    case ShapeType::height_field:
+    case ShapeType::blob:
+    case ShapeType::lathe:
+    case ShapeType::prism:
+    case ShapeType::sor:
+    case ShapeType::isosurface: return shapes::first_roots(p, ray);
   }
   return {};
 }
@@ -149,6 +174,11 @@ Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::text) return shapes::text_hit_normal(hit);
   // A height field's flat triangles: the one hit decides (POV-Ray keeps its normal with the intersection).
   if (hit.leaf->type == ShapeType::height_field) return shapes::height_field_hit_normal(*hit.leaf, hit.element, world_point);
+  // Lathes, prisms and sors: the segment (or end disc) hit and the segment parameter there (kept in u).
+  if (hit.leaf->type == ShapeType::lathe) return shapes::lathe_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
+  if (hit.leaf->type == ShapeType::prism) return shapes::prism_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
+  if (hit.leaf->type == ShapeType::sor) return shapes::sor_hit_normal(*hit.leaf, hit.element, world_point);
+  if (hit.leaf->type == ShapeType::isosurface) return shapes::isosurface_hit_normal(*hit.leaf, hit.element, world_point);
   return surface_normal(*hit.leaf, world_point);
 }
 
@@ -171,6 +201,10 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::blob: return shapes::blob_normal(p, world_point);
     case ShapeType::csg: return shapes::csg_normal(p, world_point);
     case ShapeType::text: return shapes::text_normal(p, world_point);
+    case ShapeType::lathe: return shapes::lathe_normal(p, world_point);
+    case ShapeType::prism: return shapes::prism_normal(p, world_point);
+    case ShapeType::sor: return shapes::sor_normal(p, world_point);
+    case ShapeType::isosurface: return shapes::isosurface_normal(p, world_point);
   }
   return {};
 }
@@ -194,6 +228,10 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::blob: return shapes::inside_blob(p, world_point);
     case ShapeType::csg: return shapes::inside_csg(p, world_point);
     case ShapeType::text: return shapes::inside_text(p, world_point);
+    case ShapeType::lathe: return shapes::inside_lathe(p, world_point);
+    case ShapeType::prism: return shapes::inside_prism(p, world_point);
+    case ShapeType::sor: return shapes::inside_sor(p, world_point);
+    case ShapeType::isosurface: return shapes::inside_isosurface(p, world_point);
   }
   return false;
 }
@@ -231,6 +269,10 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
     case ShapeType::csg: return shapes::csg_world_bounds(p);
     case ShapeType::text: return to_world(p, shapes::text_object_bounds(p));
+    case ShapeType::lathe: return to_world(p, shapes::lathe_object_bounds(p));
+    case ShapeType::prism: return to_world(p, shapes::prism_object_bounds(p));
+    case ShapeType::sor: return to_world(p, shapes::sor_object_bounds(p));
+    case ShapeType::isosurface: return to_world(p, shapes::isosurface_object_bounds(p));
   }
   return {};
 }

@@ -5,6 +5,8 @@
 
 #include "renderer/shapes/blob.hpp"
 #include "renderer/shapes/text.hpp"
+#include "renderer/shapes/isosurface.hpp"
+#include "renderer/shapes/sweep.hpp"
 
 namespace povtrace::render {
 
@@ -38,9 +40,52 @@ Primitive make_text(const Text& t, const Matrix& world_from_object) {
   return p;
 }
 
+Primitive make_lathe(const Lathe& l, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::lathe, world_from_object);
+  p.data = lathe_data(l);
+  return p;
+}
+
+Primitive make_prism(const Prism& pr, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::prism, world_from_object);
+  p.data = prism_data(pr);
+  return p;
+}
+
+Primitive make_sor(const Sor& s, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::sor, world_from_object);
+  p.data = sor_data(s);
+  return p;
+}
+
+std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso) {
+  auto d = std::make_shared<IsosurfaceData>();
+  d->function = iso.function;
+  d->sphere_container = iso.sphere_container;
+  d->corner1 = iso.corner1;
+  d->corner2 = iso.corner2;
+  d->centre = iso.centre;
+  d->radius = iso.radius;
+  d->threshold = iso.threshold;
+  d->accuracy = iso.accuracy;
+  d->max_gradient = iso.max_gradient;
+  d->max_trace = iso.max_trace;
+  d->closed = !iso.open;
+  return d;
+}
+
+Primitive make_isosurface(const Isosurface& iso, const Matrix& world_from_object) {
+  Primitive p = placed(ShapeType::isosurface, world_from_object);
+  p.data = isosurface_data(iso);
+  return p;
+}
+
 bool is_solid_shape(const Shape& shape) {
   return std::holds_alternative<Superellipsoid>(shape) || std::holds_alternative<HeightField>(shape) ||
-         std::holds_alternative<Blob>(shape) || std::holds_alternative<Text>(shape);
+         std::holds_alternative<Blob>(shape) || std::holds_alternative<Text>(shape) ||
+         std::holds_alternative<Lathe>(shape) ||
+         std::holds_alternative<Prism>(shape) || std::holds_alternative<Sor>(shape) ||
+         std::holds_alternative<Isosurface>(shape);
 }
 
 Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object) {
@@ -48,6 +93,10 @@ Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object) {
   if (const auto* h = std::get_if<HeightField>(&shape)) return make_height_field(*h, world_from_object);
   if (const auto* b = std::get_if<Blob>(&shape)) return make_blob(*b, world_from_object);
   if (const auto* t = std::get_if<Text>(&shape)) return make_text(*t, world_from_object);
+  if (const auto* l = std::get_if<Lathe>(&shape)) return make_lathe(*l, world_from_object);
+  if (const auto* p = std::get_if<Prism>(&shape)) return make_prism(*p, world_from_object);
+  if (const auto* s = std::get_if<Sor>(&shape)) return make_sor(*s, world_from_object);
+  if (const auto* iso = std::get_if<Isosurface>(&shape)) return make_isosurface(*iso, world_from_object);
   throw std::logic_error("solid_primitive of a shape that is not one of solid_shapes.hpp");
 }
 

@@ -15,6 +15,10 @@ Primitive make_superellipsoid(const Superellipsoid& s, const Matrix& world_from_
 Primitive make_height_field(const HeightField& h, const Matrix& world_from_object);
 Primitive make_blob(const Blob& b, const Matrix& world_from_object);
 Primitive make_text(const Text& t, const Matrix& world_from_object);
+Primitive make_lathe(const Lathe& l, const Matrix& world_from_object);
+Primitive make_prism(const Prism& p, const Matrix& world_from_object);
+Primitive make_sor(const Sor& s, const Matrix& world_from_object);
+Primitive make_isosurface(const Isosurface& iso, const Matrix& world_from_object);
 
 // Whether the shape is one of the above; then its primitive placed by `world_from_object` (material, object index,
 // shadow and inverse flags are left to the caller).

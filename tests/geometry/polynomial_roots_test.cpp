@@ -172,4 +172,42 @@ TEST(PolynomialRoots, SturmRefinesARootOfAWideBracket) {
   EXPECT_NEAR(v, 0.0, 1e-12);
 }
 
+TEST(PolynomialRoots, SexticsAreSolvedBySturmInZeroToTheLimit) {
+  // Degrees 5 and 6 (a lathe's cubic profile): Sturm sequences whether or not `sturm` is asked for, so only roots
+  // in [0, sturm_limit] come back (POV-Ray's polysolve brackets [0, MAX_DISTANCE]).
+  std::mt19937 rng(66);
+  std::uniform_real_distribution<double> root(-1.0, 2.0);
+  for (int k = 0; k < 200; ++k) {
+    std::vector<double> roots;
+    for (int i = 0; i < 6; ++i) roots.push_back(root(rng));
+    std::sort(roots.begin(), roots.end());
+    bool separated = true;
+    for (int i = 0; i + 1 < 6; ++i) separated = separated && roots[i + 1] - roots[i] > 1e-3;
+    if (!separated) continue;
+    const auto c = from_roots(roots, 0.5 + k % 3);
+    double r[6];
+    const int n = solve_polynomial(6, c.data(), r, false, 0.0, 1e7);
+    std::vector<double> expected;
+    for (double x : roots)
+      if (x >= 0.0) expected.push_back(x);
+    ASSERT_EQ(n, static_cast<int>(expected.size())) << "sextic " << k;
+    const auto found = sorted(r, n);
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(found[i], expected[i], 1e-9) << "sextic " << k;
+  }
+  const auto quintic = from_roots({0.25, 0.5, 3, -1, -2});
+  double r[5];
+  EXPECT_EQ(sorted(r, solve_polynomial(5, quintic.data(), r, false, 0.0, 1e7)), (std::vector<double>{0.25, 0.5, 3}));
+}
+
+TEST(PolynomialRoots, SturmCountsARootAtTheLowerEndAndTheRootsAboveIt) {
+  // A ray starting exactly on a surface: p(0) = 0. POV-Ray's numchanges counts the zero as a sign change, so the
+  // bracket [0, MAX_DISTANCE] holds both the root at 0 and the next one, which must still be found.
+  const auto c = from_roots({-91.7, 0.0, 0.876}, -0.0099);
+  double r[3];
+  const auto found = sorted(r, solve_sturm(3, c.data(), 0.0, 1e7, r));
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0], 0.0);
+  EXPECT_NEAR(found[1], 0.876, 1e-12);
+}
+
 }  // namespace

@@ -102,7 +102,6 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Unsupported, Errors,
     ::testing::Values(
-        ErrorCase{"Lathe", "#version 3.7;\nlathe { 2, <0, 0>, <1, 1> }\n", 2, 1, "unsupported: the shape 'lathe'"},
         ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { facets } }\n", 2, 1,
                   "unsupported: the normal item 'facets'"},
         ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { quilted 1 } } }\n", 2, 1,

@@ -87,9 +87,9 @@ TEST(QuadricShapes, Refusals) {
 }
 
 TEST(QuadricShapes, SturmOnAnUnrenderedShapeIsRefusedByName) {
-  // lathe takes sturm in POV-Ray; povtrace does not render lathes yet, so the shape itself is what is refused.
-  const ParseError e = parse_error("#version 3.7;\n#declare L = lathe { 2, <0,0>, <1,1> }\nobject { L sturm }\n");
-  EXPECT_NE(e.bare_message().find("the shape 'lathe'"), std::string::npos) << e.bare_message();
+  // ovus takes sturm in POV-Ray; povtrace does not render it, so the shape itself is what is refused.
+  const ParseError e = parse_error("#version 3.7;\n#declare O = ovus { 1, 0.5 }\nobject { O sturm }\n");
+  EXPECT_NE(e.bare_message().find("the shape 'ovus'"), std::string::npos) << e.bare_message();
 }
 
 TEST(QuadricShapes, ExtentsAreNotModelledYet) {

@@ -1,0 +1,188 @@
+// Isosurface.
+//
+// SDL: `isosurface { function { F } [contained_by { box {…} | sphere {…} }] [threshold T] [accuracy A]
+// [max_gradient G] [max_trace N | all_intersections] [open] object_modifiers… }` (POV-Ray 3.7 reference
+// "Isosurface"): where F(x, y, z) = T inside the container; F < T is inside. Primitive: data = IsosurfaceData.
+//
+// POV-Ray behaviour reproduced here (facts read from source/backend/shape/isosurf.cpp, 3.7-stable), with
+// f(t) = F(P + t·D) − T along the object-space ray (D as transformed, so t is the world depth):
+// - The container span [t1, t2] (isosurface_container.cpp; a sphere's depths divided by the direction's length),
+//   t1 raised to 0. Closed: if t1 > A and f(t1) < 0 the container is hit at t1 and the search starts inside (the
+//   sign of f flipped); if t1 ≤ A (the ray starts in the container) and f(t1) < 4·G·A, t1 becomes 5·A and the sign
+//   flips when f(t1) < 0 there; then the container is hit at t2 when f(t2) < 0. A span shorter than A has no hits.
+//   Otherwise, with t1 < A and the sign not flipped, |f(t1)| < 4·G·A moves t1 to 5·A the same way.
+// - Up to max_trace roots: the span is halved recursively while f(a) + f(b) < G·|D|·(b − a) (the gradient bound
+//   allows a root), down to pieces shorter than A; the first piece whose far end has f < 0 gives the root at that
+//   end. Open isosurfaces flip the sign whenever f < 0 where a search starts. After a root the search goes on from
+//   5·A beyond it with the sign flipped.
+// - Not reproduced: POV-Ray's per-thread cache that skips a search when the previous ray of the same thread came
+//   close without a root (it depends on the order POV-Ray's threads render pixels in); `evaluate` is refused.
+// - Normal: the container face hit, or the sphere's radius where the point lies within 1e-10 of it, else the
+//   forward differences of F over steps of A ((1, 0, 0) when all vanish).
+// - Inside: within the container (boundary included) and F ≤ T.
+#include <cmath>
+
+#include "parser/function_value.hpp"   // the renderer evaluates the parser's compiled function
+#include "renderer/shapes/isosurface.hpp"
+#include "renderer/shapes/local_ray.hpp"
+#include "renderer/shapes/many_roots.hpp"
+
+namespace povtrace::render::shapes {
+
+namespace {
+const IsosurfaceData& data_of(const Primitive& p) { return static_cast<const IsosurfaceData&>(*p.data); }
+
+double function_at(const IsosurfaceData& d, Vec3 q) {
+  const double args[3] = {q.x, q.y, q.z};
+  return sdl::evaluate_function(*d.function, args, nullptr);
+}
+
+// One ray's search: the object-space ray, and the sign the function is taken with (POV-Ray's Inv3).
+struct Search {
+  const IsosurfaceData& d;
+  Vec3 p, v;
+  double sign = 1;
+  double found = 0;
+
+  double raw(double t) const { return function_at(d, p + v * t) - d.threshold; }
+  double signed_at(double t) const { return sign * raw(t); }
+
+  struct End {
+    double t, f;
+  };
+  bool halve(End a, End b, double dt, double span) {
+    if (span < d.accuracy) {
+      if (!(b.f < 0)) return false;
+      found = b.t;
+      return true;
+    }
+    if (!(a.f + b.f - dt < 0)) return false;
+    span *= 0.5;
+    dt *= 0.5;
+    const End mid{a.t + span, signed_at(a.t + span)};
+    return halve(a, mid, dt, span) || halve(mid, b, dt, span);
+  }
+
+  bool find_root(double t1, double t2) {
+    End a{t1, signed_at(t1)};
+    if (!d.closed && a.f < 0.0) {
+      sign = -sign;
+      a.f = -a.f;
+    }
+    const End b{t2, signed_at(t2)};
+    const double span = t2 - t1;
+    return halve(a, b, d.max_gradient * length(v) * span, span);
+  }
+};
+
+bool container_span(const Primitive& prim, const IsosurfaceData& d, const Ray& ray, ContainerSpan& s) {
+  if (d.sphere_container) {
+    const LocalRay r = local_ray(prim, ray);
+    if (!sphere_container_span(r.p, r.d, d.centre, d.radius, s)) return false;
+    s.t1 /= r.len;
+    s.t2 /= r.len;
+    return true;
+  }
+  const Vec3 p = prim.transformed ? prim.object_from_world.point(ray.origin) : ray.origin;
+  const Vec3 v = prim.transformed ? prim.object_from_world.vector(ray.direction) : ray.direction;
+  return box_container_span(p, v, d.corner1, d.corner2, s);
+}
+
+// The closed container's own hits (see the top of this file); returns how many roots they use up.
+int container_hits(Search& s, ContainerSpan& span, RootList& out) {
+  const IsosurfaceData& d = s.d;
+  const double near = 4.0 * d.max_gradient * d.accuracy;
+  if (span.t1 > d.accuracy) {
+    if (!(s.raw(span.t1) < 0.0)) return 0;
+    out.push_back(Root{span.t1, static_cast<std::uint32_t>(span.side1), 0.0});
+    s.sign = -s.sign;
+    return 1;
+  }
+  if (s.raw(span.t1) < near) {
+    span.t1 = 5.0 * d.accuracy;
+    if (s.raw(span.t1) < 0) s.sign = -1;
+  }
+  if (s.raw(span.t2) < 0.0) out.push_back(Root{span.t2, static_cast<std::uint32_t>(span.side2), 0.0});
+  return 0;
+}
+}  // namespace
+
+void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out) {
+  const IsosurfaceData& d = data_of(p);
+  ContainerSpan span;
+  if (!container_span(p, d, ray, span)) return;
+  if (span.t1 < 0.0) span.t1 = 0.0;
+  Search s{d, p.transformed ? p.object_from_world.point(ray.origin) : ray.origin,
+           p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction};
+  const std::size_t first = out.size();
+  int traced = d.closed ? container_hits(s, span, out) : 0;
+  double t2 = std::min(span.t2, tolerance::bound_huge);
+  double t1 = std::min(t2, span.t1);
+  if (t2 - t1 < d.accuracy) {
+    out.resize(first);   // POV-Ray reports no intersection at all then
+    return;
+  }
+  if (t1 < d.accuracy && s.sign == 1 && std::fabs(s.raw(t1)) < 4.0 * d.max_gradient * d.accuracy) {
+    t1 = 5.0 * d.accuracy;
+    if (s.raw(t1) < 0) s.sign = -1;
+  }
+  for (; traced < d.max_trace; ++traced) {
+    if (!s.find_root(t1, t2)) break;
+    out.push_back(Root{s.found, 0, 0.0});
+    t1 = s.found + 5.0 * d.accuracy;
+    if (t2 - t1 < d.accuracy) break;
+    s.sign = -s.sign;
+  }
+}
+
+Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_point) {
+  const IsosurfaceData& d = data_of(p);
+  Vec3 n{};
+  if (side >= 1 && side <= 6) {
+    n[static_cast<int>(side - 1) / 2] = side % 2 ? -1.0 : 1.0;
+  } else {
+    const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
+    const Vec3 radial = q - d.centre;
+    if (d.sphere_container && std::fabs(length(radial) - d.radius) < tolerance::epsilon) {
+      n = radial * (1.0 / d.radius);
+    } else {
+      const double f0 = function_at(d, q);
+      for (int axis = 0; axis < 3; ++axis) {
+        Vec3 step = q;
+        step[axis] += d.accuracy;
+        n[axis] = function_at(d, step) - f0;
+      }
+      if (n.x == 0 && n.y == 0 && n.z == 0) n.x = 1.0;
+      n = n * (1.0 / length(n));
+    }
+  }
+  if (!p.transformed) return n;
+  n = p.object_from_world.normal_from_inverse(n);
+  return n * (1.0 / length(n));
+}
+
+Vec3 isosurface_normal(const Primitive& p, Vec3 world_point) { return isosurface_hit_normal(p, 0, world_point); }
+
+bool inside_isosurface(const Primitive& p, Vec3 world_point) {
+  const IsosurfaceData& d = data_of(p);
+  const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
+  bool in = true;
+  if (d.sphere_container) {
+    const Vec3 to_centre = d.centre - q;
+    in = !(dot(to_centre, to_centre) > d.radius * d.radius);
+  } else {
+    for (int axis = 0; axis < 3; ++axis)
+      in = in && !(q[axis] < d.corner1[axis] || q[axis] > d.corner2[axis]);
+  }
+  in = in && !(function_at(d, q) - d.threshold > 0);
+  return in != p.inverse;
+}
+
+Bounds isosurface_object_bounds(const Primitive& p) {
+  const IsosurfaceData& d = data_of(p);
+  if (!d.sphere_container) return Bounds{d.corner1, d.corner2};
+  const Vec3 r{d.radius, d.radius, d.radius};
+  return Bounds{d.centre - r, d.centre + r};
+}
+
+}  // namespace povtrace::render::shapes
