@@ -11,12 +11,14 @@ namespace povtrace::sdl {
 namespace {
 void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
   if (!texture) return;
-  auto moved = std::make_shared<Texture>(*texture);
-  for (auto& layer : moved->layers) {
-    layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
-    if (layer.normal) layer.normal->pattern.world_from_pattern = layer.normal->pattern.world_from_pattern * m;
-  }
-  texture = std::move(moved);
+  texture = transformed_texture(*texture, m);
+}
+
+// Box::Translate and Box::Scale move a box's corners (re-sorted per axis) while it has no transform of its own.
+void fold_into_corners(Box& box, const Matrix& m) {
+  const Vec3 a = m.point(box.corner1), b = m.point(box.corner2);
+  box.corner1 = min(a, b);
+  box.corner2 = max(a, b);
 }
 
 // The object's own top texture layer, created from the #default texture when the object has none yet
@@ -28,28 +30,44 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
-// A transform moves the object, what is attached to it, and for CSG every child and light inside (POV-Ray
-// transforms a CSG by transforming its children; the CSG node itself keeps no matrix).
-void Interpreter::apply_transform(Object& object, const Matrix& m) {
-  transform_texture(object.texture, m);
+// A transform moves the object, what is attached to it (unless it is uv-mapped: POV-Ray's UV_FLAG), and for CSG
+// every child and light inside (POV-Ray transforms a CSG by transforming its children; the CSG node itself keeps
+// no matrix).
+void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
+  if (!object.uv_mapping) transform_texture(object.texture, m);
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) apply_transform(child, m);
+    for (auto& child : csg->children) apply_transform(child, m, kind);
     for (auto& light : csg->lights) apply_transform(light, m);
     return;
   }
-  if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
-    for (auto& texture : mesh->textures) transform_texture(texture, m);
+  if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
+    for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
+  if (auto* box = std::get_if<Box>(&object.shape)) {
+    if (!box->rotated && kind != TransformKind::other) {
+      fold_into_corners(*box, m);
+      return;
+    }
+    box->rotated = true;
+  }
   object.world_from_object = object.world_from_object * m;
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   Matrix m;
-  if (try_transform(t, m)) { apply_transform(object, m); return true; }
+  if (try_transform(t, m)) {
+    const TransformKind kind = t.is("translate") ? TransformKind::translate
+                               : t.is("scale")   ? TransformKind::scale
+                                                 : TransformKind::other;
+    apply_transform(object, m, kind);
+    return true;
+  }
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "texture") {
     auto tex = parse_texture_block(t);
     // Each texture statement links its layers on top of what the object already has, so consecutive blocks
-    // stack as layers; the last written is the top (§11, pipeline §2 "Layers").
+    // stack as layers; the last written is the top (§11, pipeline §2 "Layers"). Patterned textures take no part in
+    // layering (POV-Ray's Link_Textures).
+    refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
@@ -59,6 +77,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     }
     return true;
   }
+  if (k == "uv_mapping") {
+    if (object.texture) fail_at(t, "uv_mapping must be specified before texture (as in POV-Ray)");
+    object.uv_mapping = true;
+    return true;
+  }
+  if (k == "pigment" || k == "normal" || k == "finish") refuse_layering(t, object.texture.get(), false);
   if (k == "pigment") {
     TextureLayer& layer = own_top_layer(object, default_texture());
     layer.pigment = parse_pigment_block(t, layer.pigment);
@@ -101,7 +125,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
       "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
-      "sturm", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
+      "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {
@@ -109,6 +133,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
       return true;
     }
   return false;
+}
+
+// POV-Ray's Link_Textures: nothing is layered over a patterned texture, and a patterned texture over nothing else.
+void Interpreter::refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const {
+  if (existing && existing->patterned()) fail_at(t, "cannot layer over a patterned texture (as in POV-Ray)");
+  if (existing && adding_patterned) fail_at(t, "cannot layer a patterned texture over another (as in POV-Ray)");
 }
 
 // material { [M_id] texture{} interior{} transforms } (§9): a texture and an interior together.

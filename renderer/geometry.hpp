@@ -2,6 +2,7 @@
 // structure over them. Built once from the SceneDescription; immutable while rendering (STYLE.md (a) step 4).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -86,6 +87,10 @@ struct MaterialBlend {
   int count = 1;
 };
 MaterialBlend materials_at(const SurfaceHit& hit);
+
+// The uv coordinates of a hit for uv_mapping (POV-Ray's UVCoord, shapes/uv_coordinates.cpp): spheres, boxes, tori
+// and meshes have their own; every other shape gives the world point's x and y.
+std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point);
 
 // Scratch list of hits. Shapes with many roots (CSG, meshes) append to one, so that a ray allocates only while a
 // thread's buffer is still growing.

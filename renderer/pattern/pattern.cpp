@@ -71,7 +71,9 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::crackle: return patterns::crackle(p, params.crackle, params.noise_generator);
     case PatternKind::cells: return patterns::cells(p);
     case PatternKind::solid:
-    case PatternKind::average: break;   // no pattern value: evaluate_pigment handles them
+    case PatternKind::average:
+    case PatternKind::image_map:
+    case PatternKind::uv_mapping: break;   // no pattern value: evaluate_pigment handles them
   }
   return 0.0;
 }
