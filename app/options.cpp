@@ -401,6 +401,7 @@ constexpr LongOption kLongOptions[] = {
     {"stats", Arg::required, set_stats},
     {"vs-povray", Arg::none, [](RenderOptions& o, string_view, string_view) { o.vs_povray = true; }},
     {"lighting", Arg::required, set_lighting},
+    {"povray-tolerances", Arg::none, [](RenderOptions& o, string_view, string_view) { o.povray_tolerances = true; }},
     {"help", Arg::none, [](RenderOptions& o, string_view, string_view) { o.help = true; }},
     {"verbose", Arg::none, [](RenderOptions& o, string_view, string_view) { o.verbose = true; }},
 };
@@ -695,6 +696,8 @@ std::string usage_text() {
          "  --stats=FILE.json   write render statistics as JSON\n"
          "  --vs-povray         render with povray too and compare; writes povtrace | POV-Ray | heat map\n"
          "  --lighting=povray|textbook   lighting model; default povray\n"
+         "  --povray-tolerances  POV-Ray's absolute tolerances at any scale (no rescaling of very small or very\n"
+         "                      large scenes), artefacts included\n"
          "  --help, -h          print this text\n";
   return out.str();
 }

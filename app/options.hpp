@@ -33,6 +33,7 @@ struct RenderOptions {
   double jitter_amount = 1.0;                   // +J0.5 / Jitter_Amount (clipped to 0…1)
   double antialias_gamma = 2.5;                 // +AG / Antialias_Gamma
   bool output_alpha = false;                    // +UA / Output_Alpha
+  bool povray_tolerances = false;               // --povray-tolerances: no rescaling of tiny or huge scenes
   std::vector<std::filesystem::path> library_paths;  // +L / Library_Path, in order
   std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
   int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)

@@ -99,8 +99,12 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
   r.times.parse_s = seconds_since(start);
 
   const auto build_start = Clock::now();
-  const render::RenderScene scene = render::build_render_scene(description, {options.output_alpha});
+  const render::RenderScene scene =
+      render::build_render_scene(description, {options.output_alpha, options.povray_tolerances});
   r.times.build_s = seconds_since(build_start);
+  if (scene.scale != 1.0 && options.verbose)
+    std::cerr << "povtrace: the scene is rendered rescaled by " << scene.scale
+              << " (its size is far from POV-Ray's tolerances; --povray-tolerances keeps it as written)\n";
   for (const auto& w : scene.warnings) std::cerr << "povtrace: warning: " << w << "\n";
 
   const auto render_start = Clock::now();

@@ -1,6 +1,7 @@
 // camera { } and light_source { } (povray-pixel-pipeline.md §1 and §3).
 #include <cmath>
 
+#include "parser/description_transforms.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -13,7 +14,7 @@ struct CameraInput {
   std::optional<Vec3> look_at;
   std::optional<double> angle;
   bool up_given = false, right_given = false;
-  bool planar = true;   // perspective or orthographic (the other projections are parsed, not rendered)
+  bool planar = true;   // perspective or orthographic: `angle` sets the direction's length
   Matrix transform;
 };
 
@@ -25,6 +26,7 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
     const double a = *in.angle * M_PI / 180.0;
     c.direction = normalize(c.direction) * (length(c.right) / (2.0 * std::tan(a / 2.0)));
   }
+  if (in.angle && !in.planar) c.angle = *in.angle;   // the other projections read it as it is
   if (in.look_at) {
     const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
     const double handedness = dot(cross(c.up, c.direction), c.right);
@@ -56,6 +58,26 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
 }
 }  // namespace
 
+// The projection keywords of camera { }; `cylinder N` takes its type number (1 to 4, else POV-Ray's error).
+std::optional<Projection> Interpreter::try_camera_type(const Token& t) {
+  static const std::pair<std::string_view, Projection> types[] = {
+      {"perspective", Projection::perspective}, {"orthographic", Projection::orthographic},
+      {"fisheye", Projection::fisheye},         {"ultra_wide_angle", Projection::ultra_wide_angle},
+      {"omnimax", Projection::omnimax},         {"panoramic", Projection::panoramic},
+      {"spherical", Projection::spherical}};
+  for (const auto& [name, type] : types)
+    if (t.is(name)) return type;
+  if (!t.is("cylinder")) return std::nullopt;
+  const Token at = peek();
+  switch (static_cast<int>(parse_float())) {
+    case 1: return Projection::cylinder1;
+    case 2: return Projection::cylinder2;
+    case 3: return Projection::cylinder3;
+    case 4: return Projection::cylinder4;
+    default: fail_at(at, "invalid cylinder camera type, valid are types 1 to 4 (as in POV-Ray)");
+  }
+}
+
 Camera Interpreter::parse_camera(const Token& keyword) {
   expect("{", " after 'camera'");
   CameraInput in;
@@ -71,11 +93,10 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   }
   while (!t.is("}")) {
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
-    if (k == "perspective") { in.camera.projection = Projection::perspective; in.planar = true; spherical = false; }
-    else if (k == "orthographic") {
-      in.camera.projection = Projection::orthographic;
-      in.planar = true;
-      spherical = false;
+    if (const std::optional<Projection> type = try_camera_type(t)) {
+      in.camera.projection = *type;
+      in.planar = *type == Projection::perspective || *type == Projection::orthographic;
+      spherical = *type == Projection::spherical;
     }
     else if (k == "location") in.camera.location = parse_vector();
     else if (k == "direction") in.camera.direction = parse_vector();
@@ -89,23 +110,27 @@ Camera Interpreter::parse_camera(const Token& keyword) {
       in.angle = parse_float();
       if (*in.angle < 0) fail_at(t, "the camera angle must not be negative");
       angle_at = t;
-      // A spherical camera takes a horizontal and an optional vertical angle (`angle 360, 180`).
+      // A spherical camera takes a horizontal and an optional vertical angle (`angle 360, 180`); the vertical one
+      // defaults to half the horizontal one (POV-Ray's Parse_Camera).
       if (spherical) {
+        in.camera.h_angle = *in.angle;
+        in.camera.v_angle = *in.angle * 0.5;
+        in.angle.reset();
         accept(",");
         const Token v = peek();
         const Value* id = lookup(v);
         if (v.kind == TokenKind::number || v.is("(") || v.is("-") || v.is("+") ||
-            (id && std::holds_alternative<Numeric>(*id)))
-          if (parse_float() < 0) fail_at(v, "the vertical camera angle must not be negative");
+            (id && std::holds_alternative<Numeric>(*id))) {
+          in.camera.v_angle = parse_float();
+          if (in.camera.v_angle < 0) fail_at(v, "the vertical camera angle must not be negative");
+        }
       }
     } else if (!try_transform(t, in.transform)) {
-      if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
-          k == "spherical" || k == "mesh_camera") {
+      if (k == "mesh_camera") {
         in.planar = false;
-        spherical = k == "spherical";
+        spherical = false;
       }
-      if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" || k == "panoramic" || k == "cylinder" ||
-          k == "spherical" || k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
+      if (k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
           k == "normal" || k == "confidence" || k == "variance") {
         taint(in.camera.unsupported, skip_unsupported(t, "the camera item '" + std::string(k) + "'"));
         t = next();
@@ -121,13 +146,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
 }
 
-void Interpreter::apply_transform(Light& light, const Matrix& m) {
-  light.location = m.point(light.location);
-  light.point_at = m.point(light.point_at);
-  light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
-  light.axis2 = m.vector(light.axis2);
-  for (Object& o : light.looks_like) apply_transform(o, m);
-}
+void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_light(light, m); }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   Matrix m;

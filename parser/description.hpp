@@ -83,6 +83,7 @@ enum class PatternKind {
   gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
   bozo, spotted, granite, marble, wood, agate,                      // noise-based
   crackle, cells,                                                   // a random point or value per unit cube
+  bumps, dents, wrinkles, ripples, waves,                           // the normal patterns used as pigments
   average,                                                          // mean of its pigment_map's pigments
   image_map,                                                        // the colour of an image (Pigment::image)
   uv_mapping                                                        // its one entry at the hit's <u, v, 0>
@@ -217,7 +218,9 @@ struct Normal {
 struct TextureLayer {
   Pigment pigment;
   Finish finish;
-  std::optional<Normal> normal;   // none: the layer uses the surface's own normal
+  // none: the layer uses the surface's own normal. Shared and immutable (copied when a transform changes it), so
+  // that copying a texture for every transformed object does not copy its normals.
+  std::shared_ptr<const Normal> normal;
 };
 
 struct Texture;
@@ -269,6 +272,8 @@ struct Box {
   bool rotated = false;
 };
 
+// The parser turns a difference into an intersection with its later children inverted, as POV-Ray does;
+// `difference` remains for descriptions built in code.
 enum class CsgKind { union_, merge, intersection, difference };
 struct Object;
 struct Light;
@@ -334,7 +339,7 @@ struct Object {
   Matrix world_from_object;                 // composed object transforms in written order
   std::shared_ptr<const Texture> texture;   // never null once the parser has placed the object
   std::optional<Interior> interior;
-  bool inverse = false;
+  bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
   // uv_mapping (before any texture): textures are evaluated at the hit's <u, v, 0> and later transforms of the
   // object no longer move them (POV-Ray's UV_FLAG). CSG children that inherit the texture inherit the flag.
@@ -342,10 +347,21 @@ struct Object {
   std::optional<bool> hollow;               // unset: inherited from a CSG parent, else false
   SourceLoc loc;
   Unsupported unsupported;
+  std::vector<Object> clipped_by;           // the surface and inside are limited to inside all of these
+  std::vector<Object> bounded_by;           // rays missing one of these (and starting outside) skip the object
+  bool clips_are_bounds = false;            // one list for both (clipped_by { bounded_by } or the reverse)
+  // Bounds POV-Ray removed when the object was placed ("Unnecessary bounding object removed"): no longer tested,
+  // but the bounding box they gave the object stays, and rays that miss that box miss the object (see
+  // renderer/csg_build.cpp).
+  std::vector<Object> removed_bounds;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------
-enum class Projection { perspective, orthographic };
+// POV-Ray 3.7's camera types (mesh_camera is refused by name).
+enum class Projection {
+  perspective, orthographic, fisheye, ultra_wide_angle, omnimax, panoramic, spherical,
+  cylinder1, cylinder2, cylinder3, cylinder4   // `cylinder N`: 1, 2 vertical/horizontal axis, 3, 4 the same, orthographic
+};
 
 // Final camera vectors, resolved by the parser in POV-Ray's fixed order (pipeline §1).
 struct Camera {
@@ -354,6 +370,8 @@ struct Camera {
   Vec3 direction{0, 0, 1};
   Vec3 up{0, 1, 0};
   Vec3 right{1.33, 0, 0};
+  double angle = 90;                         // degrees: the field of view of the non-planar projections
+  double h_angle = 360, v_angle = 180;       // spherical: horizontal and vertical field of view
   SourceLoc loc;
   Unsupported unsupported;
 };

@@ -121,7 +121,14 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   if (it != float_functions().end()) {
     Args args = parse_call_arguments(name, it->second.min_args, it->second.max_args);
     if (auto err = domain_error(n, args); !err.empty()) fail_at(name, err);
-    return Numeric::scalar(it->second.eval(args));
+    // POV-Ray warns "Domain error in acos/asin" and goes on with the clamped argument.
+    if ((n == "acos" || n == "asin") && std::fabs(args[0]) > 1.0) warn(name.loc, "domain error in " + std::string(n));
+    const double value = it->second.eval(args);
+    // A result that is not a number or is infinite (pow(0, -1), exp(1000)) goes on, as in POV-Ray, but is named
+    // where it is made: it would otherwise surface far away as a missing object or a black pixel.
+    if (!std::isfinite(value) && std::isfinite(args[0]))
+      warn(name.loc, std::string(n) + " gives " + (std::isnan(value) ? "a value that is not a number" : "an infinite value"));
+    return Numeric::scalar(value);
   }
   auto vector_arg = [&](bool first) {
     if (!first) accept(",");   // optional between arguments, as POV-Ray's Parse_Comma

@@ -17,6 +17,7 @@
 //   height_field.cpp  height_field
 //   image_map.cpp     image_map, bump_map
 //   texture_patterns.cpp patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
+//   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 #pragma once
 
 #include <array>
@@ -26,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "parser/description_transforms.hpp"
 #include "parser/lexer.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/reserved_words.hpp"
@@ -33,9 +35,6 @@
 #include "parser/values.hpp"
 
 namespace povtrace::sdl {
-
-// A texture moved by `m` (textures.cpp): every layer's pigment and normal, or a patterned texture's pattern.
-std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m);
 
 class Interpreter {
  public:
@@ -276,7 +275,7 @@ class Interpreter {
   bool try_normal_modifier(const Token& t, Normal& n);
   std::vector<SlopeEntry> parse_slope_map(const Token& keyword);
   // The normal a `normal { }` block edits: the layer's own, else the #default texture's, else a new one.
-  Normal starting_normal(const std::optional<Normal>& current) const;
+  Normal starting_normal(const Normal* current) const;
 
   // ---- objects (objects.cpp) ----
   std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source
@@ -287,8 +286,6 @@ class Interpreter {
   SceneItem parse_object_block(const Token& keyword);
   void parse_object_modifiers(Object& object);
   bool try_object_modifier(const Token& t, Object& object);
-  // How a transform was written: boxes fold translations and scalings into their corners (objects.cpp).
-  enum class TransformKind { translate, scale, other };
   void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
   void parse_material_block(const Token& keyword, Object& object);
   static std::string csg_name(CsgKind kind);
@@ -326,6 +323,11 @@ class Interpreter {
   std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
                                                  const std::string& what);
   void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
+  // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
+  static void invert_object(Object& object);                  // De Morgan for CSG (§10)
+  void parse_clip_or_bound(const Token& keyword, Object& object);
+  std::vector<Object> parse_bound_clip_objects(const Token& keyword);
+  void remove_unnecessary_bounds(Object& object);             // Link_To_Frame's Remove_Bounds, when placed
 
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----
   std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
@@ -366,6 +368,7 @@ class Interpreter {
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
+  std::optional<Projection> try_camera_type(const Token& t);
   Light parse_light(const Token& keyword);
   void parse_area_light(const Token& keyword, Light& light);
   void parse_looks_like(const Token& keyword, Light& light);

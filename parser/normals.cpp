@@ -133,7 +133,7 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
   }
   if (t.is("uv_mapping")) {
     const NestingGuard guard(*this, t);   // `uv_mapping uv_mapping …` nests
-    auto inner = std::make_shared<const Normal>(parse_normal_contents(keyword, starting_normal(std::nullopt)));
+    auto inner = std::make_shared<const Normal>(parse_normal_contents(keyword, starting_normal(nullptr)));
     n.kind = NormalKind::uv_mapping;
     n.has_type = true;
     n.unsupported = inner->unsupported;
@@ -149,17 +149,20 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
     if (try_normal_modifier(t, n)) { t = next(); continue; }
     if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(n.unsupported, skip_unsupported(t, "the normal item '" + std::string(t.text) + "'"));
+      // An unrendered pattern with a block (pigment_pattern { … }, image_pattern { … }) may carry the amount.
+      if (accept(",") || peek().kind == TokenKind::number) n.amount = parse_float();
       t = next();
       continue;
     }
     fail_expected(t, "a normal pattern, bump_size, accuracy, a transform or '}' in normal { }");
   }
   taint(n.unsupported, n.pattern.unsupported);
-  if (!n.has_type && !n.unsupported) fail_at(keyword, "no normal type given (as in POV-Ray)");
+  // A normal without a type is legal until an object uses it (POV-Ray's Post_Tnormal: `#default { normal {
+  // bump_size 2 } }` is fine when every object names its pattern): see Interpreter::check_normal_types.
   return n;
 }
 
-Normal Interpreter::starting_normal(const std::optional<Normal>& current) const {
+Normal Interpreter::starting_normal(const Normal* current) const {
   if (current) return *current;
   const auto& defaults = default_texture().layers.back().normal;
   return defaults ? *defaults : Normal{};

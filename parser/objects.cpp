@@ -3,24 +3,13 @@
 // affected by it (§9, [V sdl_tex_order]).
 #include <cmath>
 
+#include "parser/description_transforms.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
 namespace povtrace::sdl {
 
 namespace {
-void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
-  if (!texture) return;
-  texture = transformed_texture(*texture, m);
-}
-
-// Box::Translate and Box::Scale move a box's corners (re-sorted per axis) while it has no transform of its own.
-void fold_into_corners(Box& box, const Matrix& m) {
-  const Vec3 a = m.point(box.corner1), b = m.point(box.corner2);
-  box.corner1 = min(a, b);
-  box.corner2 = max(a, b);
-}
-
 // The object's own top texture layer, created from the #default texture when the object has none yet
 // (object-level pigment/finish on an untextured object, §4 #default).
 TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
@@ -30,26 +19,9 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
-// A transform moves the object, what is attached to it (unless it is uv-mapped: POV-Ray's UV_FLAG), and for CSG
-// every child and light inside (POV-Ray transforms a CSG by transforming its children; the CSG node itself keeps
-// no matrix).
+// A transform moves the object and what is attached to it (parser/description_transforms.cpp).
 void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  if (!object.uv_mapping) transform_texture(object.texture, m);
-  if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) apply_transform(child, m, kind);
-    for (auto& light : csg->lights) apply_transform(light, m);
-    return;
-  }
-  if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
-    for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
-  if (auto* box = std::get_if<Box>(&object.shape)) {
-    if (!box->rotated && kind != TransformKind::other) {
-      fold_into_corners(*box, m);
-      return;
-    }
-    box->rotated = true;
-  }
-  object.world_from_object = object.world_from_object * m;
+  transform_object(object, m, kind);
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
@@ -90,7 +62,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   }
   if (k == "normal") {
     TextureLayer& layer = own_top_layer(object, default_texture());
-    layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+    layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
     taint(object.unsupported, layer.normal->unsupported);
     return true;
   }
@@ -108,12 +80,9 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "no_shadow") { object.no_shadow = true; return true; }
-  if (k == "inverse") {
-    object.inverse = !object.inverse;
-    if (const auto* csg = std::get_if<Csg>(&object.shape))
-      taint(object.unsupported, UnsupportedFeature{"'inverse' of a CSG " + csg_name(csg->kind), t.loc});
-    return true;
-  }
+  if (k == "inverse") { invert_object(object); return true; }
+  if (k == "clipped_by") { parse_clip_or_bound(t, object); return true; }
+  if (k == "bounded_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "hollow") {
     // hollow [bool]: fog (and media) reach rays inside hollow objects only.
     object.hollow = optional_float(1.0) > 0.0;
@@ -124,7 +93,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     fail_at(t, "'open' must directly follow the parameters of a cylinder or cone; it is no object modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "clipped_by", "bounded_by", "no_image", "no_reflection", "no_radiosity", "double_illuminate",
+      "no_image", "no_reflection", "no_radiosity", "double_illuminate",
       "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
@@ -233,8 +202,8 @@ std::string Interpreter::csg_name(CsgKind kind) {
   return "CSG";
 }
 
-// union/merge/intersection/difference { objects… modifiers } (§10). A union of the shapes povtrace renders is
-// rendered as its children; the other operations are parsed whole and refused when placed (issue 4).
+// union/merge/intersection/difference { objects… modifiers } (§10). A difference becomes an intersection whose
+// items after the first are inverted as they are added (a light source counts as an item, as in POV-Ray).
 Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   const NestingGuard guard(*this, keyword);
   if (const Token open = next(); !open.is("{"))   // not expect(): its message would be built every time
@@ -244,18 +213,22 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   Csg csg;
   csg.kind = kind;
   Token t = next();
-  while (true) {
+  for (std::size_t items = 1;; ++items) {
     auto item = try_parse_item(t);
     if (!item) break;
-    if (auto* light = std::get_if<Light>(&*item)) csg.lights.push_back(std::move(*light));
-    else csg.children.push_back(std::move(std::get<Object>(*item)));
+    if (auto* light = std::get_if<Light>(&*item)) {
+      csg.lights.push_back(std::move(*light));
+    } else {
+      Object& child = std::get<Object>(*item);
+      if (kind == CsgKind::difference && items > 1) invert_object(child);
+      csg.children.push_back(std::move(child));
+    }
     t = next();
   }
+  if (kind == CsgKind::difference) csg.kind = CsgKind::intersection;
   unget(t);
   if (csg.children.size() + csg.lights.size() < 2)
     warn(keyword.loc, "a CSG " + csg_name(kind) + " should have at least two objects");
-  if (kind != CsgKind::union_)
-    o.unsupported = UnsupportedFeature{"CSG " + csg_name(kind), keyword.loc};
   o.shape = std::move(csg);
   parse_object_modifiers(o);
   return o;

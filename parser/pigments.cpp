@@ -35,6 +35,9 @@ constexpr SimplePattern kSimplePatterns[] = {
     {"planar", PatternKind::planar},     {"boxed", PatternKind::boxed},
     {"spherical", PatternKind::spherical}, {"cylindrical", PatternKind::cylindrical},
     {"average", PatternKind::average},   {"cells", PatternKind::cells},
+    {"bumps", PatternKind::bumps},       {"dents", PatternKind::dents},
+    {"wrinkles", PatternKind::wrinkles}, {"ripples", PatternKind::ripples},
+    {"waves", PatternKind::waves},
 };
 
 struct WaveKeyword {

@@ -138,7 +138,7 @@ void Interpreter::parse_default(const Token& keyword) {
       default_texture_ = *tex;
     }
     else if (t.is("normal")) {
-      layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
       refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
     } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
@@ -188,7 +188,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
-  if (k == "normal") return Value(parse_normal_block(first, starting_normal(std::nullopt)));
+  if (k == "normal") return Value(parse_normal_block(first, starting_normal(nullptr)));
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
   if (k == "texture_map") return Value(parse_texture_map(first, false));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
@@ -258,6 +258,9 @@ Unsupported first_unsupported(const Object& o) {
         if (auto u = first_unsupported(shown)) return u;
     }
   }
+  for (const auto* list : {&o.clipped_by, &o.bounded_by})
+    for (const auto& c : *list)
+      if (auto u = first_unsupported(c)) return u;
   return std::nullopt;
 }
 }  // namespace
@@ -321,9 +324,41 @@ void Interpreter::post_process(Object& object) {
   }
 }
 
+namespace {
+// POV-Ray's Post_Tnormal: a normal that reaches an object without a pattern is the error "No normal type given".
+const Normal* untyped_normal(const Normal& n) {
+  if (n.uv_normal) return untyped_normal(*n.uv_normal);
+  return !n.has_type && !n.unsupported ? &n : nullptr;
+}
+
+const Normal* untyped_normal(const Texture* texture) {
+  if (!texture) return nullptr;
+  for (const TextureLayer& layer : texture->layers)
+    if (layer.normal)
+      if (const Normal* n = untyped_normal(*layer.normal)) return n;
+  if (texture->pattern)   // the textures of a patterned texture
+    for (const TextureMapEntry& e : texture->pattern->entries)
+      if (const Normal* n = untyped_normal(e.texture.get())) return n;
+  return nullptr;
+}
+
+const Normal* first_untyped_normal(const Object& o) {
+  if (const Normal* n = untyped_normal(o.texture.get())) return n;
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
+    for (const auto& t : mesh->textures)
+      if (const Normal* n = untyped_normal(t.get())) return n;
+  if (const auto* csg = std::get_if<Csg>(&o.shape))
+    for (const Object& child : csg->children)
+      if (const Normal* n = first_untyped_normal(child)) return n;
+  return nullptr;
+}
+}  // namespace
+
 void Interpreter::place_object(Object object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
+  remove_unnecessary_bounds(object);
   post_process(object);
+  if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   scene_.objects.push_back(std::move(object));
 }
 

@@ -25,7 +25,11 @@ bool uses_uv_mapping(const Pigment& p) {
 // A texture's transforms move every layer's pigment and normal (POV-Ray's Transform_Textures).
 void transform_layer(TextureLayer& l, const Matrix& m) {
   transform_pigment(l.pigment, m);
-  if (l.normal) transform_pigment(l.normal->pattern, m);
+  if (l.normal) {
+    auto moved = std::make_shared<Normal>(*l.normal);
+    transform_pigment(moved->pattern, m);
+    l.normal = std::move(moved);
+  }
 }
 }  // namespace
 
@@ -166,7 +170,6 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
                   "fade_distance in 'interior { }'");
     } else if (k == "crand") {
       f.crand = parse_float();
-      taint(f.unsupported, UnsupportedFeature{"the finish item 'crand' (random speckle)", t.loc});
     } else if (!k.empty() && is_reserved_word(k)) {
       taint(f.unsupported, skip_unsupported(t, "the finish item '" + std::string(k) + "'"));
     } else {
@@ -405,7 +408,8 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceL
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
     else if (try_transform(t, m))
       for (auto& l : tex.layers) transform_layer(l, m);
-    else if (t.is("normal")) layer.normal = parse_normal_block(t, starting_normal(layer.normal));
+    else if (t.is("normal"))
+      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
     else if (!edited && starts_texture_pattern(t)) return parse_patterned_texture(t, loc, closer);
     else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(tex.unsupported, skip_unsupported(t, "the texture item '" + std::string(t.text) + "'"));
@@ -417,17 +421,6 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceL
     if (l.normal) taint(tex.unsupported, l.normal->unsupported);
   }
   return std::make_shared<const Texture>(std::move(tex));
-}
-
-std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m) {
-  auto moved = std::make_shared<Texture>(texture);
-  if (texture.pattern) {   // a patterned texture moves its pattern; its textures are evaluated in its space
-    auto pattern = std::make_shared<TexturePattern>(*texture.pattern);
-    transform_pigment(pattern->pattern, m);
-    moved->pattern = std::move(pattern);
-  }
-  for (auto& l : moved->layers) transform_layer(l, m);
-  return moved;
 }
 
 }  // namespace povtrace::sdl

@@ -45,7 +45,7 @@ struct Bounds {
 };
 
 enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly, triangle, polygon, mesh,
-                                     quadric, superellipsoid, height_field, blob };
+                                     quadric, superellipsoid, height_field, blob, csg };
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is
@@ -89,8 +89,9 @@ struct MaterialBlend {
 MaterialBlend materials_at(const SurfaceHit& hit);
 
 // The uv coordinates of a hit for uv_mapping (POV-Ray's UVCoord, shapes/uv_coordinates.cpp): spheres, boxes, tori
-// and meshes have their own; every other shape gives the world point's x and y.
-std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point);
+// and meshes have their own; every other shape gives the world point's x and y, divided by `scene_scale` (the factor a
+// rescaled twin of the scene was made with, renderer/scene_scale.hpp), so that they are the scene's own.
+std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, double scene_scale = 1.0);
 
 // Scratch list of hits. Shapes with many roots (CSG, meshes) append to one, so that a ray allocates only while a
 // thread's buffer is still growing.

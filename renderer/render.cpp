@@ -11,14 +11,6 @@
 
 namespace povtrace::render {
 
-Ray camera_ray(const RenderCamera& c, double x, double y, int width, int height) {
-  const double u = (x + 0.5) / width - 0.5;
-  const double v = 0.5 - (y + 0.5) / height;
-  if (c.projection == Projection::orthographic)
-    return Ray{c.location + c.right * u + c.up * v, normalize(c.direction)};
-  return Ray{c.location, normalize(c.direction + c.right * u + c.up * v)};
-}
-
 double working_to_linear(const RenderScene& scene, double value) {
   if (scene.gamma_mode == GammaMode::legacy_srgb) return image::srgb_decode(value);
   if (scene.assumed_gamma == 1.0 || value <= 0) return value;
@@ -58,7 +50,9 @@ class BlockRenderer {
 
  private:
   Sample shade(double x, double y) {
-    const Radiance r = tracer_.trace_camera_ray(camera_ray(scene_.camera, x, y, s_.width, s_.height));
+    const std::optional<Ray> ray = camera_ray(scene_.camera, x, y, s_.width, s_.height);
+    if (!ray) return {Rgb{0, 0, 0}, 1.0};   // POV-Ray: no ray traced, a black and fully transparent sample
+    const Radiance r = tracer_.trace_camera_ray(*ray);
     return {r.colour, r.transmit};
   }
 

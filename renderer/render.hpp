@@ -4,6 +4,8 @@
 // every block is computed on its own, including the frame pixels that method 1 compares against.
 #pragma once
 
+#include <optional>
+
 #include <atomic>
 #include <functional>
 
@@ -39,8 +41,12 @@ struct RenderResult {
 
 RenderResult render(const RenderScene& scene, const RenderSettings& settings);
 
-// The camera ray through continuous pixel position (x, y) (integer = pixel centre, y = 0 top row).
-Ray camera_ray(const RenderCamera& camera, double x, double y, int width, int height);
+// The camera ray through continuous pixel position (x, y) (integer = pixel centre, y = 0 top row); none where the
+// projection traces no ray (outside a fisheye's or omnimax's circle). renderer/camera.cpp.
+std::optional<Ray> camera_ray(const RenderCamera& camera, double x, double y, int width, int height);
+// Whether camera rays start at different points (orthographic, cylinder 3 and 4).
+bool origins_vary(const RenderCamera& camera);
+RenderCamera make_render_camera(const Camera& camera);
 
 // Working-space value → linear light (pipeline §6).
 double working_to_linear(const RenderScene& scene, double value);

@@ -1,9 +1,13 @@
 #include "renderer/render_scene.hpp"
+#include "renderer/scene_scale.hpp"
+#include "renderer/render.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 
 #include "renderer/shapes/quadric_shapes.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
+
+#include "renderer/csg_build.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -34,9 +38,11 @@ RenderLight make_light(const Light& l) {
   r.colour = rgb_of(l.colour);
   const Vec3 axis = l.point_at - l.location;
   if (l.parallel) r.parallel_direction = length(axis) > 0 ? -normalize(axis) : Vec3{0, 0, -1};
-  if (l.cylinder) r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 1};
+  // A spotlight or cylinder light whose point_at is its location has no direction: POV-Ray keeps the zero vector,
+  // so every angle test fails and the light lights nothing.
+  if (l.cylinder) r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 0};
   if (l.spotlight && !l.cylinder) {
-    r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 1};
+    r.spot_axis = length(axis) > 0 ? normalize(axis) : Vec3{0, 0, 0};
     r.cos_radius = std::cos(l.radius * M_PI / 180.0);
     r.cos_falloff = std::cos(l.falloff * M_PI / 180.0);
   }
@@ -108,7 +114,7 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
     p.world_from_object = shape.world_from_object;
     p.object_from_world = shape.object_from_world;
   } else {
-    throw std::logic_error("CSG nodes are flattened by add_object and never reach add_primitives");
+    throw std::logic_error("CSG objects become CSG nodes in add_object and never reach add_primitives");
   }
   out.push_back(p);
 }
@@ -145,12 +151,21 @@ class MaterialTable {
 };
 
 // A union is its children: every intersection of every child is kept (§10), which is what placing the
-// children side by side gives. The parser has already moved the union's transforms and inherited textures
-// into the children. Other CSG operations are refused by the parser until issue 4.
+// children side by side gives (POV-Ray splits such unions too). The parser has already moved the union's
+// transforms and inherited textures into the children. Other CSG, and clipped or bounded objects, become one
+// CSG node (csg_build.hpp) whose leaves are built by add_primitives like any other shape.
 void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, std::vector<Primitive>& out) {
-  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
-    if (csg->kind != CsgKind::union_) throw std::logic_error("only CSG unions reach the renderer");
-    for (const auto& child : csg->children) add_object(child, object_index, materials, out);
+  if (splits_into_children(o)) {
+    for (const auto& child : std::get<Csg>(o.shape).children) add_object(child, object_index, materials, out);
+    return;
+  }
+  if (needs_csg_node(o)) {
+    Primitive node = build_csg_node(o, [&](const Object& leaf, bool shaded, std::vector<Primitive>& dst) {
+      add_primitives(leaf, shaded ? materials.material_for(leaf) : 0, object_index, dst);
+    });
+    node.material = materials.material_for(o);   // only for whole-object checks; hits shade their leaf's material
+    node.object = object_index;
+    out.push_back(std::move(node));
     return;
   }
   add_primitives(o, materials.material_for(o), object_index, out);
@@ -178,6 +193,16 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   MaterialTable materials(r.materials, images);
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
+  if (!options.povray_tolerances) {
+    // A scene far from the ordinary scale is rendered as its rescaled twin (scene_scale.hpp).
+    if (const double k = normalizing_scale(scene_size(primitives, scene.camera.location)); k != 1.0) {
+      BuildOptions twin = options;
+      twin.povray_tolerances = true;
+      RenderScene r2 = build_render_scene(scaled_scene(scene, k), twin);
+      r2.scale = k;
+      return r2;
+    }
+  }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   for (const auto& p : primitives) {
     const Material& m = r.materials[p.material];
@@ -194,8 +219,7 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   r.fogs = scene.fogs;
   r.noise_generator = generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected;
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
-  r.camera = RenderCamera{scene.camera.projection, scene.camera.location, scene.camera.direction, scene.camera.up,
-                          scene.camera.right};
+  r.camera = make_render_camera(scene.camera);
   r.settings = scene.settings;
   r.language_version = scene.language_version;
   // Background (pipeline §5) as POV-Ray's parser leaves it.

@@ -142,15 +142,20 @@ struct RenderLight {
   bool fades = false;
 };
 
+// The camera as its rays are made (renderer/camera.cpp): the non-planar projections keep unit vectors, the
+// lengths they had and the aspect ratio POV-Ray derives from them.
 struct RenderCamera {
   Projection projection = Projection::perspective;
   Vec3 location, direction, up, right;
+  double angle = 90, h_angle = 360, v_angle = 180;   // degrees
+  double up_length = 1, right_length = 1, aspect = 1;
 };
 
 // How working-space values become linear light for output (pipeline §6).
 enum class GammaMode { power, legacy_srgb };
 
 struct RenderScene {
+  double scale = 1.0;   // the factor the scene was rescaled by for scale invariance (scene_scale.hpp), 1 if not
   Accelerator accelerator;
   std::vector<Material> materials;
   std::vector<RenderLight> lights;
@@ -180,6 +185,9 @@ struct RenderScene {
 
 struct BuildOptions {
   bool output_alpha = false;
+  // POV-Ray's absolute tolerances at any scale, artefacts included: no rescaling of very small or very large
+  // scenes (renderer/scene_scale.hpp).
+  bool povray_tolerances = false;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

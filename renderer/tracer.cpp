@@ -1,9 +1,11 @@
 // Whitted tracing with POV-Ray 3.7's shading (povray-pixel-pipeline.md §2–§5). Comments cite the section of
 // that document whose behaviour each step reproduces.
 #include "renderer/tracer.hpp"
+#include "renderer/render.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/pattern/pattern.hpp"
@@ -41,7 +43,7 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
   state.alpha_background = scene_.output_alpha;
   // A perspective camera's rays all start at its location; an orthographic camera's start across its image
   // plane, so POV-Ray finds the containing objects for each of them.
-  if (scene_.camera.projection == Projection::orthographic) {
+  if (origins_vary(scene_.camera)) {
     for (const InteriorRef& r : scene_.containing_interiors(ray.origin)) state.interiors.append(r);
   } else {
     for (const InteriorRef& r : scene_.camera_interiors) state.interiors.append(r);
@@ -140,6 +142,18 @@ Rgb reflectivity(const Finish& f, double c, double ior, double& weight) {
 }
 
 bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
+
+// A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).
+double speckle_random(Vec3 p, std::size_t light) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull * (light + 1);
+  for (const double v : {p.x, p.y, p.z}) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 27; h *= 0x94D049BB133111EBull; h ^= h >> 31;
+  }
+  return static_cast<double>(h >> 11) * (1.0 / 9007199254740991.0);
+}
 }  // namespace
 
 namespace {
@@ -148,9 +162,9 @@ Radiance mix(const Radiance& a, double wa, const Radiance& b, double wb) {
 }
 
 // The texture point with the hit's uv coordinates when the material reads them.
-TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv) {
+TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv, double scene_scale) {
   if (!uv) return TexturePoint(point);
-  const auto [u, v] = uv_coordinates(hit, point);
+  const auto [u, v] = uv_coordinates(hit, point, scene_scale);
   return TexturePoint(point, u, v);
 }
 
@@ -165,7 +179,7 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
   const Vec3 point = ray.origin + ray.direction * hit.t;
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
-  const TexturePoint at = texture_point(hit, point, uv);
+  const TexturePoint at = texture_point(hit, point, uv, scene_.scale);
   if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], at, level, weight, state);
   // A mesh triangle with a texture_list: each texture shaded whole, the results blended by their weights; weights
   // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
@@ -442,7 +456,7 @@ Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque) {
   if (opaque) return {0, 0, 0};
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
-  const TexturePoint point = texture_point(hit, at, uv);
+  const TexturePoint point = texture_point(hit, at, uv, scene_.scale);
   Rgb through{0, 0, 0};
   for (int k = 0; k < blend.count; ++k) {
     const Material& m = scene_.materials[blend.material[k]];
@@ -542,12 +556,17 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   Rgb out = mul(pigment * att, mul(rgb_of(fin.ambient), rgb_of(scene_.settings.ambient_light)) + rgb_of(fin.emission));
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
 
-  for (const RenderLight& l : scene_.lights) {
+  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+    const RenderLight& l = scene_.lights[li];
     Rgb lc;
     Vec3 to_light;
     double distance;
     if (!light_at(l, point, lc, to_light, distance)) continue;
     const double c = dot(normal, to_light);
+    // crand: POV-Ray lowers each diffuse term by a uniform random amount in [0, crand] drawn from a per-thread
+    // sequence (its order depends on threads and blocks); ours is a hash of the point and the light, so the speckle
+    // has the same distribution and the same image comes out whatever the threads.
+    const double speckle = fin.crand > 0 ? fin.crand * speckle_random(point, li) : 0.0;
     const bool behind = c < tolerance::epsilon;
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
@@ -555,11 +574,13 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
       if (all_below(lc, tolerance::epsilon)) continue;
     }
     if (behind) {
-      out += mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance));
+      if (fin.diffuse_back > 0)
+        out += mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle);
       continue;
     }
-    if (fin.diffuse != 0)
-      out += mul(pigment, lc) * (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)));
+    if (fin.diffuse > 0)
+      out += mul(pigment, lc) *
+             (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
     if (l.light.shadowless || !layer.has_highlights) continue;   // fill lights give no highlights
 
     Rgb highlight = lc;

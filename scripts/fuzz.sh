@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Fuzzes the SDL front end with libFuzzer for a bounded time: scripts/fuzz.sh [seconds] (default 60).
-# Builds fuzz/povtrace_parse_fuzzer with clang (ASan + UBSan, -DPOVTRACE_FUZZ=ON) in build-fuzz/, seeds the corpus
+# Fuzzes with libFuzzer for a bounded time: scripts/fuzz.sh [seconds] (default 60), two thirds of it on the SDL
+# front end (fuzz/povtrace_parse_fuzzer), one third on the whole pipeline at 8×6 (fuzz/povtrace_render_fuzzer,
+# which also fails on a non-finite pixel). Builds them with clang (ASan + UBSan, -DPOVTRACE_FUZZ=ON) in build-fuzz/, seeds the corpus
 # with scenes/*.pov (copied at run time) and runs it with a dictionary of SDL keywords made from
 # parser/reserved_words.cpp. Exits non-zero on a finding — a crash, a sanitizer report, an exception other than
 # ParseError, a timeout or running out of memory — and leaves the input that caused it in build-fuzz/findings/.
-# Reproduce one with: build-fuzz/fuzz/povtrace_parse_fuzzer build-fuzz/findings/<file>
+# Reproduce one with: build-fuzz/fuzz/povtrace_parse_fuzzer (or povtrace_render_fuzzer) build-fuzz/findings/<file>
 set -euo pipefail
 seconds=${1:-60}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,7 +13,7 @@ bash "$root/scripts/setup.sh"
 out="$root/build-fuzz"
 cmake -S "$root" -B "$out" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOVTRACE_FUZZ=ON \
   -DBUILD_TESTING=OFF >/dev/null
-cmake --build "$out" --target povtrace_parse_fuzzer -j"$(nproc)"
+cmake --build "$out" --target povtrace_parse_fuzzer povtrace_render_fuzzer -j"$(nproc)"
 
 corpus="$out/corpus"          # grows from run to run on this machine
 findings="$out/findings"
@@ -33,14 +34,19 @@ dict="$out/sdl.dict"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 cd "$scratch"
-echo "fuzz: running the front end for ${seconds}s (corpus $corpus)" >&2
-status=0
-"$out/fuzz/povtrace_parse_fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
-  -dict="$dict" -artifact_prefix="$findings/" -print_final_stats=1 "$corpus" 2>"$out/fuzz.log" || status=$?
-if ((status != 0)); then
-  tail -n 60 "$out/fuzz.log" >&2
-  echo "fuzz: FINDING (exit $status); the input is in $findings/, the log in $out/fuzz.log" >&2
-  exit 1
-fi
-grep -E '^Done|^stat::' "$out/fuzz.log" >&2 || true
+run_target() {   # run_target NAME SECONDS
+  local name=$1 time=$2 status=0
+  echo "fuzz: running $name for ${time}s (corpus $corpus)" >&2
+  "$out/fuzz/$name" -max_total_time="$time" -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
+    -dict="$dict" -artifact_prefix="$findings/" -print_final_stats=1 "$corpus" 2>"$out/$name.log" || status=$?
+  if ((status != 0)); then
+    tail -n 60 "$out/$name.log" >&2
+    echo "fuzz: FINDING in $name (exit $status); the input is in $findings/, the log in $out/$name.log" >&2
+    exit 1
+  fi
+  grep -E '^Done|^stat::' "$out/$name.log" >&2 || true
+}
+render_seconds=$((seconds / 3))
+run_target povtrace_parse_fuzzer $((seconds - render_seconds))
+run_target povtrace_render_fuzzer "$render_seconds"
 echo "fuzz: no findings in ${seconds}s" >&2

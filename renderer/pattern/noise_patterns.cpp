@@ -1,8 +1,9 @@
-// The noise-based patterns (POV-Ray 3.7 pattern.cpp): granite, marble, wood and agate. bozo and spotted are the
-// noise itself.
+// The noise-based patterns (POV-Ray 3.7 pattern.cpp): granite, marble, wood, agate, dents, wrinkles, and the
+// wave-source patterns ripples and waves. bozo, spotted and bumps are the noise itself.
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/pattern/pattern_functions.hpp"
 
 namespace povtrace::render::patterns {
@@ -48,4 +49,50 @@ double agate(Vec3 p, const Turbulence& turbulence, double agate_turb, NoiseGener
   return std::pow(std::min(1.0, v), 0.77);
 }
 
+// dents: the noise cubed (POV-Ray's dents_pattern).
+double dents(Vec3 p, NoiseGenerator generator) {
+  const double n = noise(p, generator);
+  return n * n * n;
+}
+
+// wrinkles: ten octaves of noise, each at twice the frequency and half the weight, halved; with the range-corrected
+// generators each octave is 2n − ½ clamped to [0, 1] (POV-Ray's wrinkles_pattern).
+double wrinkles(Vec3 p, NoiseGenerator generator) {
+  auto octave = [&](Vec3 q) {
+    const double n = noise(q, generator);
+    return generator == NoiseGenerator::original ? n : std::clamp(n * 2.0 - 0.5, 0.0, 1.0);
+  };
+  double value = octave(p), lambda = 2.0, omega = 0.5;
+  for (int i = 1; i < 10; ++i, lambda *= 2.0, omega *= 0.5) value += omega * octave(p * lambda);
+  return value / 2.0;
+}
+
+namespace {
+const std::vector<WaveSource>& wave_sources() {
+  static const std::vector<WaveSource> sources = make_wave_sources(10);   // POV-Ray's default number_of_waves
+  return sources;
+}
+// The distance to a wave source; POV-Ray takes 1 at the source itself.
+double distance_to(Vec3 p, const WaveSource& s) {
+  const double d = length(p - s.centre);
+  return d == 0.0 ? 1.0 : d;
+}
+}  // namespace
+
+// ripples: the mean of the sines of the distances to the wave sources, mapped to [0, 1].
+double ripples(Vec3 p, double frequency, double phase) {
+  double sum = 0.0;
+  for (const WaveSource& s : wave_sources()) sum += cycloidal(distance_to(p, s) * frequency + phase);
+  return 0.5 * (1.0 + sum / static_cast<double>(wave_sources().size()));
+}
+
+// waves: as ripples, each source at its own frequency and weighted by its inverse.
+double waves(Vec3 p, double frequency, double phase) {
+  double sum = 0.0;
+  for (const WaveSource& s : wave_sources())
+    sum += cycloidal(distance_to(p, s) * frequency * s.frequency + phase) / s.frequency;
+  return 0.2 * (2.5 + sum / static_cast<double>(wave_sources().size()));
+}
+
 }  // namespace povtrace::render::patterns
+

@@ -70,6 +70,12 @@ double pattern_value(const PatternParams& params, Vec3 p) {
       return patterns::agate(p, params.turbulence.value_or(Turbulence{}), params.agate_turb, params.noise_generator);
     case PatternKind::crackle: return patterns::crackle(p, params.crackle, params.noise_generator);
     case PatternKind::cells: return patterns::cells(p);
+    case PatternKind::bumps: return noise(p, params.noise_generator);
+    case PatternKind::dents: return patterns::dents(p, params.noise_generator);
+    case PatternKind::wrinkles: return patterns::wrinkles(p, params.noise_generator);
+    // POV-Ray applies frequency and phase inside these two and once more in the wave step.
+    case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
+    case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:

@@ -19,6 +19,7 @@ struct PatternParams {
   CrackleParams crackle;
   std::optional<Turbulence> turbulence;   // the classic turbulence: marble, wood and agate use it inside
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
+  double frequency = 1.0, phase = 0.0;    // ripples and waves use them inside too (as well as in the wave step)
 };
 
 // The frequency/phase/wave step every pattern value goes through.

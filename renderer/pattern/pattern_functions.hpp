@@ -1,5 +1,5 @@
 // The pattern functions behind pattern_value(), grouped by file: tilings.cpp (checker, hexagon, brick) and
-// noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate), cell_patterns.cpp (crackle, cells). Internal to renderer/pattern.
+// noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate, dents, wrinkles, ripples, waves), cell_patterns.cpp (crackle, cells). Internal to renderer/pattern.
 #pragma once
 
 #include "renderer/pattern/pattern.hpp"
@@ -14,6 +14,11 @@ double granite(Vec3 p, NoiseGenerator generator);
 double marble(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerator generator);
 double wood(Vec3 p, const std::optional<Turbulence>& turbulence);
 double agate(Vec3 p, const Turbulence& turbulence, double agate_turb, NoiseGenerator generator);
+
+double dents(Vec3 p, NoiseGenerator generator);
+double wrinkles(Vec3 p, NoiseGenerator generator);
+double ripples(Vec3 p, double frequency, double phase);
+double waves(Vec3 p, double frequency, double phase);
 
 double crackle(Vec3 p, const CrackleParams& params, NoiseGenerator generator);
 double cells(Vec3 p);

@@ -70,6 +70,12 @@ Bounds height_field_object_bounds(const Primitive& p);
 Vec3 blob_normal(const Primitive& p, Vec3 world_point);
 bool inside_blob(const Primitive& p, Vec3 world_point);
 Bounds blob_object_bounds(const Primitive& p);
+// CSG nodes (csg.cpp): hits come from the children through collect_hits, so there is no intersect_all.
+void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
+bool nearest_csg_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+Vec3 csg_normal(const Primitive& p, Vec3 world_point);
+bool inside_csg(const Primitive& p, Vec3 world_point);
+Bounds csg_world_bounds(const Primitive& p);
 }  // namespace shapes
 
 bool Bounds::finite() const {
@@ -101,6 +107,7 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
     case ShapeType::superellipsoid:
     case ShapeType::height_field:
     case ShapeType::blob: return shapes::first_roots(p, ray);
+    case ShapeType::csg: return {};
   }
   return {};
 }
@@ -108,6 +115,7 @@ Intersections intersect_all(const Primitive& p, const Ray& ray) {
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (p.type == ShapeType::mesh) return shapes::collect_mesh_hits(p, ray, out);
   if (shapes::has_many_roots(p.type)) return shapes::collect_many_roots(p, ray, out);
+  if (p.type == ShapeType::csg) return shapes::collect_csg_hits(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
 }
@@ -115,6 +123,7 @@ void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
   if (p.type == ShapeType::mesh) return shapes::nearest_mesh_hit(p, ray, t_min, t_max, hit);
   if (shapes::has_many_roots(p.type)) return shapes::nearest_of_many_roots(p, ray, t_min, t_max, hit);
+  if (p.type == ShapeType::csg) return shapes::nearest_csg_hit(p, ray, t_min, t_max, hit);
   const Intersections xs = intersect_all(p, ray);
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
@@ -149,6 +158,7 @@ Vec3 surface_normal(const Primitive& p, Vec3 world_point) {
     case ShapeType::superellipsoid: return shapes::superellipsoid_normal(p, world_point);
     case ShapeType::height_field: return shapes::height_field_normal(p, world_point);
     case ShapeType::blob: return shapes::blob_normal(p, world_point);
+    case ShapeType::csg: return shapes::csg_normal(p, world_point);
   }
   return {};
 }
@@ -170,6 +180,7 @@ bool inside(const Primitive& p, Vec3 world_point) {
     case ShapeType::superellipsoid: return shapes::inside_superellipsoid(p, world_point);
     case ShapeType::height_field: return shapes::inside_height_field(p, world_point);
     case ShapeType::blob: return shapes::inside_blob(p, world_point);
+    case ShapeType::csg: return shapes::inside_csg(p, world_point);
   }
   return false;
 }
@@ -205,6 +216,7 @@ Bounds world_bounds(const Primitive& p) {
     case ShapeType::superellipsoid: return to_world(p, shapes::superellipsoid_object_bounds(p));
     case ShapeType::height_field: return to_world(p, shapes::height_field_object_bounds(p));
     case ShapeType::blob: return to_world(p, shapes::blob_object_bounds(p));
+    case ShapeType::csg: return shapes::csg_world_bounds(p);
   }
   return {};
 }

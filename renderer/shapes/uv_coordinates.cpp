@@ -8,7 +8,8 @@
 //   +z: u = 1/4 + x/4; the four side faces v = 1/3 + y/3).
 // - torus: u = 1 − (atan2(z, x) + π)/2π around y, v = (atan2(y, r − R) + π)/2π around the tube.
 // - mesh: the triangle's uv_vectors weighted by the point's barycentric coordinates (<0, 0> without uv_vectors).
-// - every other shape (plane, cylinder, cone, disc, triangle, polygon, …): the world point's x and y.
+// - every other shape (plane, cylinder, cone, disc, triangle, polygon, …): the world point's x and y (in the scene's
+//   own units when povtrace renders a rescaled twin of it).
 #include <cmath>
 
 #include "renderer/geometry.hpp"
@@ -86,14 +87,14 @@ std::array<double, 2> mesh_uv(const SurfaceHit& hit) {
 }
 }  // namespace
 
-std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point) {
+std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, double scene_scale) {
   const Primitive& p = *hit.leaf;
   switch (p.type) {
     case ShapeType::sphere: return sphere_uv(p, world_point);
     case ShapeType::box: return box_uv(p, world_point);
     case ShapeType::torus: return torus_uv(p, world_point);
     case ShapeType::mesh: return mesh_uv(hit);
-    default: return {world_point.x, world_point.y};
+    default: return {world_point.x / scene_scale, world_point.y / scene_scale};
   }
 }
 

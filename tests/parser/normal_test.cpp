@@ -86,6 +86,24 @@ TEST(NormalParse, ListPatternNormalHasNoFrequency) {
   EXPECT_EQ(n.amount, 0.8);
 }
 
+TEST(NormalParse, TypeMayComeLaterThanTheFirstNormalBlock) {
+  // POV-Ray checks the type when an object uses the normal (Post_Tnormal), as normmap.pov's #default relies on.
+  const SceneDescription s = scene(
+      "#default { normal { bump_size 1.5 } }\n#declare N = normal { scale 2 }\n"
+      "plane { y, 0 normal { N bumps } }\n");
+  EXPECT_EQ(normal_of(s).kind, NormalKind::bumps);
+  EXPECT_EQ(normal_of(s).amount, 1.5);
+  const ParseError e = parse_error("#version 3.7;\n#default { normal { bump_size 1.5 } }\nsphere { 0, 1 }\n");
+  EXPECT_NE(std::string(e.what()).find("no normal type given"), std::string::npos) << e.what();
+  // An unrendered pattern keeps its amount after a comma or without one.
+  for (const char* text : {"plane { y, 0 normal { pigment_pattern { checker } , 0.5 } }\n",
+                           "plane { y, 0 normal { pigment_pattern { checker } 10 } }\n"}) {
+    const ParseError u = parse_error(std::string("#version 3.7;\n") + text);
+    EXPECT_NE(std::string(u.what()).find("unsupported: the normal item 'pigment_pattern'"), std::string::npos)
+        << u.what();
+  }
+}
+
 TEST(NormalParse, ErrorsAndRefusals) {
   EXPECT_NE(std::string(parse_error("#version 3.7;\nsphere { 0, 1 normal { scale 2 } }\n").what())
                 .find("no normal type given"),

@@ -525,6 +525,23 @@ TEST(Background, DefaultIsTransparentBlack) {
   expect_colour(scene("background { rgbt <0,0,1,0.25> }").background, {0, 0, 1, 0, 0.25});
 }
 
+TEST(Camera, NonPlanarProjectionsKeepTheirAngles) {
+  // POV-Ray's Parse_Camera: angle scales the direction only for perspective and orthographic cameras; the others
+  // read it as written (default 90); spherical takes `angle H [, V]` with V = H/2 by default.
+  const Camera f = camera_of("camera { fisheye angle 180 }");
+  EXPECT_EQ(f.projection, Projection::fisheye);
+  EXPECT_EQ(f.angle, 180);
+  expect_vec_near(f.direction, {0, 0, 1});
+  EXPECT_EQ(camera_of("camera { ultra_wide_angle }").angle, 90);
+  const Camera s = camera_of("camera { spherical angle 300 }");
+  EXPECT_EQ(s.h_angle, 300);
+  EXPECT_EQ(s.v_angle, 150);
+  EXPECT_EQ(camera_of("camera { spherical angle 300, 100 }").v_angle, 100);
+  EXPECT_EQ(camera_of("camera { cylinder 3 }").projection, Projection::cylinder3);
+  const ParseError e = parse_error("#version 3.7;\ncamera { cylinder 5 }\n");
+  EXPECT_NE(std::string(e.what()).find("invalid cylinder camera type"), std::string::npos) << e.what();
+}
+
 TEST(Scene, VersionGiven) {
   EXPECT_TRUE(parse("#version 3.7;\nsphere{0,1}").version_given);
   EXPECT_FALSE(parse("sphere{0,1}").version_given);
@@ -534,3 +551,4 @@ TEST(Scene, VersionGiven) {
 
 }  // namespace
 }  // namespace povtrace::test
+

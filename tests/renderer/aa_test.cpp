@@ -186,7 +186,7 @@ TEST(AntialiasModel, ShadeFunctionMatchesTheTracer) {
   int checked = 0;
   for (double sy = -1; sy < 40; sy += 0.37)
     for (double sx = -1; sx < 40; sx += 0.41) {
-      const Radiance r = tracer.trace_camera_ray(camera_ray(rs.camera, sx, sy, 40, 40));
+      const Radiance r = tracer.trace_camera_ray(*camera_ray(rs.camera, sx, sy, 40, 40));
       ASSERT_EQ(r.colour.x, shade_blocks(sx, sy)) << sx << "," << sy;
       ++checked;
     }

@@ -96,6 +96,15 @@ TEST(Lights, SpotlightFalloffZoneIsSmoothstepInCosine) {
   EXPECT_REL(trace_xy(lit_plane(spotlight(10, 25, 0)), 0, x).colour.x, cos_t * a);
 }
 
+TEST(Lights, SpotlightAimedAtItselfLightsNothing) {
+  // point_at = location: POV-Ray keeps the zero direction, every angle test fails (also for cylinder lights).
+  Light spot = spotlight(10, 25, 0);
+  spot.point_at = spot.location;
+  EXPECT_EQ(trace_xy(lit_plane(spot), 0, 0).colour.x, 0.0);
+  spot.cylinder = true;
+  EXPECT_EQ(trace_xy(lit_plane(spot), 0, 0).colour.x, 0.0);
+}
+
 TEST(Lights, SpotlightOutsideFalloffIsDark) {
   const double x = x_at_angle(30);
   EXPECT_EQ(trace_xy(lit_plane(spotlight(10, 25, 0)), x, 0).colour, (Vec3{0, 0, 0}));

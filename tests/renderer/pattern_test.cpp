@@ -2,6 +2,7 @@
 // noise (which cannot match POV-Ray's point by point: its random table is not ours).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -252,6 +253,36 @@ TEST(NoisePatterns, ValuesStayInRange) {
     EXPECT_LE(s.max, k == PatternKind::granite ? 2.0 : 1.0);   // granite sums six ridges of weight ½^k
     EXPECT_GT(s.sd, 0.02);
   }
+}
+
+// The normal patterns used as pigments (POV-Ray's Evaluate_TPat): bumps is the noise, dents its cube, wrinkles
+// ten octaves halved; ripples and waves average sines of the distances to the wave sources.
+TEST(NoisePatterns, NormalPatternsAsPigments) {
+  PatternParams params;
+  const Vec3 q{0.3, 1.7, -2.2};
+  params.kind = PatternKind::bumps;
+  const double n = pattern_value(params, q);
+  EXPECT_EQ(n, noise(q, params.noise_generator));
+  params.kind = PatternKind::dents;
+  EXPECT_DOUBLE_EQ(pattern_value(params, q), n * n * n);
+  params.kind = PatternKind::wrinkles;
+  double expected = std::clamp(2 * n - 0.5, 0.0, 1.0), weight = 0.5;
+  for (int i = 1; i < 10; ++i, weight /= 2)
+    expected += weight * std::clamp(2 * noise(q * std::pow(2.0, i), params.noise_generator) - 0.5, 0.0, 1.0);
+  EXPECT_DOUBLE_EQ(pattern_value(params, q), expected / 2);
+  const Stats w = sample([&](Vec3 p) { return pattern_value(params, p); });
+  EXPECT_GE(w.min, 0.0);
+  EXPECT_LE(w.max, 1.0);   // 1 + ½ + … + ½⁹ < 2, halved
+  EXPECT_GT(w.sd, 0.02);
+  params.kind = PatternKind::ripples;
+  const Stats r = sample([&](Vec3 p) { return pattern_value(params, p * 10.0); });
+  EXPECT_GE(r.min, 0.0);
+  EXPECT_LE(r.max, 1.0);
+  EXPECT_NEAR(r.mean, 0.5, 0.1);
+  params.kind = PatternKind::waves;
+  const Stats v = sample([&](Vec3 p) { return pattern_value(params, p * 10.0); });
+  EXPECT_GT(v.sd, 0.01);
+  EXPECT_NEAR(v.mean, 0.5, 0.1);   // 0.2·(2.5 + mean of sines / frequency)
 }
 
 // warp { repeat x*2 offset <0, 1, 0> flip x }: x = 5.5 lies in slab 2 (even) at 1.5, shifted 2 along y; x = 3.5

@@ -1,0 +1,56 @@
+// libFuzzer target for the whole pipeline: arbitrary bytes as a scene file, parsed, built and rendered at 8×6 on
+// one thread. A ParseError (bad or unsupported input, wherever it is found) is the expected outcome of most
+// inputs; any other exception, a crash, a sanitizer report or a non-finite pixel is a finding.
+// Built by scripts/fuzz.sh (clang, -DPOVTRACE_FUZZ=ON); see fuzz/CMakeLists.txt.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "parser/parse_scene.hpp"
+#include "renderer/render.hpp"
+#include "renderer/render_scene.hpp"
+
+namespace {
+const povtrace::ParseOptions& fuzz_options() {
+  static const povtrace::ParseOptions options = [] {
+    povtrace::ParseOptions o;
+    o.message_sink = [](const std::string&) {};   // #debug and warnings are dropped
+    o.max_tokens = 200000;                          // every input ends (a runaway #while is legal SDL)
+    return o;
+  }();
+  return options;
+}
+
+// Keeps each input's render cheap (legal but slow settings are not what this target looks for): a shallow trace
+// and small area-light grids.
+void bound_the_work(povtrace::SceneDescription& scene) {
+  scene.settings.max_trace_level = std::min(scene.settings.max_trace_level, 5);
+  for (povtrace::Light& l : scene.lights) {
+    l.size1 = std::min(l.size1, 4);
+    l.size2 = std::min(l.size2, 4);
+  }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    povtrace::SceneDescription scene = povtrace::parse_scene_text(text, "fuzz.pov", fuzz_options());
+    if (scene.objects.size() > 2000) return 0;
+    bound_the_work(scene);
+    const povtrace::render::RenderScene built = povtrace::render::build_render_scene(scene, {});
+    povtrace::render::RenderSettings settings;
+    settings.width = 8;
+    settings.height = 6;
+    settings.threads = 1;
+    const povtrace::render::RenderResult out = povtrace::render::render(built, settings);
+    for (const float v : out.image.rgba)
+      if (!std::isfinite(v)) std::abort();   // a NaN or infinite pixel is a finding
+  } catch (const povtrace::ParseError&) {
+    // a located error: bad input reported as it should be
+  }
+  return 0;
+}

@@ -1,0 +1,98 @@
+// The object modifiers that combine objects (povray-sdl-and-geometry.md §9, §10): `inverse` (De Morgan for CSG),
+// `clipped_by { objects }`, `bounded_by { objects }`, the inversion of a difference's later children, and the
+// removal of unnecessary bounds when an object is placed.
+//
+// POV-Ray behaviour reproduced (facts read from source/backend/parser/parse.cpp and shape/csg.cpp, 3.7-stable):
+// - Inverting a CSG inverts each child (CSG children recursively) and turns a union or merge into an
+//   intersection and an intersection into a merge; its clip objects are not inverted. So `inverse inverse` on a
+//   union leaves a merge. A difference is an intersection whose items after the first were inverted as they were
+//   added (a light source counts as an item there).
+// - clipped_by / bounded_by take one or more objects, then optional transforms that move all of them, then '}'.
+//   Objects with a texture are refused. `clipped_by { bounded_by }` and `bounded_by { clipped_by }` reuse the
+//   other list (it is copied here; later transforms move both the same way, so a copy behaves identically).
+// - When a finished object is placed in the scene (Link_To_Frame), with Remove_Bounds on (the default), the
+//   bounding objects of anything but a union, merge, intersection, poly (cubic, quartic) or quadric are dropped
+//   with the warning "Unnecessary bounding object removed."; a union that will be split into its children (no
+//   clip, no bound) gets the same treatment for each child. Objects inside CSG keep their bounds. (POV-Ray keeps
+//   a quadric's bounds unless it found automatic bounds for it, which povtrace does not model: they are kept.)
+// - A removed bound leaves behind the bounding box it gave the object (Parse_Object_Mods sets the object's box to
+//   the bounds' box when that is smaller, and Link_To_Frame does not recompute it), so it is kept as
+//   removed_bounds for the renderer.
+#include "parser/interpreter.hpp"
+
+namespace povtrace::sdl {
+
+void Interpreter::invert_object(Object& object) {
+  auto* csg = std::get_if<Csg>(&object.shape);
+  if (!csg) {
+    object.inverse = !object.inverse;
+    return;
+  }
+  if (csg->kind == CsgKind::difference) {   // only in descriptions built in code: parse_csg converts differences
+    for (std::size_t i = 1; i < csg->children.size(); ++i) invert_object(csg->children[i]);
+    csg->kind = CsgKind::intersection;
+  }
+  for (auto& child : csg->children) invert_object(child);
+  csg->kind = csg->kind == CsgKind::intersection ? CsgKind::merge : CsgKind::intersection;
+}
+
+std::vector<Object> Interpreter::parse_bound_clip_objects(const Token& keyword) {
+  std::vector<Object> objects;
+  Token t = next();
+  while (auto item = try_parse_item(t)) {
+    auto* object = std::get_if<Object>(&*item);
+    if (!object) fail_at(t, "a light source cannot be a clipping or bounding object");
+    if (object->texture) fail_at(t, "illegal texture in a clipping or bounding object");
+    objects.push_back(std::move(*object));
+    t = next();
+  }
+  if (objects.empty()) fail_expected(t, "an object in " + std::string(keyword.text) + " { }");
+  Matrix m;
+  while (try_transform(t, m)) t = next();
+  if (!t.is("}")) fail_expected(t, "a transform or '}' closing " + std::string(keyword.text) + " { }");
+  if (!(m == Matrix::identity()))
+    for (auto& o : objects) apply_transform(o, m);
+  return objects;
+}
+
+void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
+  const NestingGuard guard(*this, keyword);
+  if (const Token open = next(); !open.is("{")) fail_expected(open, "'{' after '" + std::string(keyword.text) + "'");
+  const bool clip = keyword.is("clipped_by");
+  std::vector<Object>& list = clip ? object.clipped_by : object.bounded_by;
+  const std::string_view other = clip ? "bounded_by" : "clipped_by";
+  // POV-Ray's parse errors once the two lists are one.
+  if (!list.empty() && object.clips_are_bounds)
+    fail_at(keyword, clip ? "cannot add clips after linking bounds and clips"
+                          : "cannot add bounds after linking bounds and clips");
+  if (peek().is(other)) {
+    const Token link = next();
+    if (!list.empty())
+      fail_at(link, clip ? "cannot link bounds with previous clips" : "cannot link clips with previous bounds");
+    expect("}", " after '" + std::string(other) + "' in " + std::string(keyword.text) + " { }");
+    list = clip ? object.bounded_by : object.clipped_by;
+    object.clips_are_bounds = !list.empty();
+    return;
+  }
+  std::vector<Object> objects = parse_bound_clip_objects(keyword);
+  for (auto& o : objects) list.push_back(std::move(o));
+}
+
+void Interpreter::remove_unnecessary_bounds(Object& object) {
+  const auto* csg = std::get_if<Csg>(&object.shape);
+  if (!csg) {
+    const bool kept = std::holds_alternative<Poly>(object.shape) || std::holds_alternative<Quadric>(object.shape);
+    if (!object.bounded_by.empty() && !kept) {
+      object.removed_bounds = std::move(object.bounded_by);
+      object.bounded_by.clear();
+      object.clips_are_bounds = false;
+      warn(object.loc, "unnecessary bounding object removed");
+    }
+    return;
+  }
+  // A union without clip or bound is split into its children, each placed as if on its own.
+  if (csg->kind == CsgKind::union_ && object.clipped_by.empty() && object.bounded_by.empty())
+    for (auto& child : std::get<Csg>(object.shape).children) remove_unnecessary_bounds(child);
+}
+
+}  // namespace povtrace::sdl

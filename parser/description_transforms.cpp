@@ -1,0 +1,68 @@
+#include "parser/description_transforms.hpp"
+
+namespace povtrace {
+
+namespace {
+void transform_pattern(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
+
+// Box::Translate and Box::Scale move a box's corners (re-sorted per axis) while it has no transform of its own.
+void fold_into_corners(Box& box, const Matrix& m) {
+  const Vec3 a = m.point(box.corner1), b = m.point(box.corner2);
+  box.corner1 = min(a, b);
+  box.corner2 = max(a, b);
+}
+}  // namespace
+
+std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m) {
+  auto moved = std::make_shared<Texture>(texture);
+  if (texture.pattern) {
+    auto pattern = std::make_shared<TexturePattern>(*texture.pattern);
+    transform_pattern(pattern->pattern, m);
+    moved->pattern = std::move(pattern);
+  }
+  for (auto& layer : moved->layers) {
+    transform_pattern(layer.pigment, m);
+    if (layer.normal) {
+      auto normal = std::make_shared<Normal>(*layer.normal);
+      transform_pattern(normal->pattern, m);
+      layer.normal = std::move(normal);
+    }
+  }
+  return moved;
+}
+
+void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
+  if (texture) texture = transformed_texture(*texture, m);
+}
+
+void transform_object(Object& object, const Matrix& m, TransformKind kind) {
+  if (!object.uv_mapping) transform_texture(object.texture, m);
+  for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
+  for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
+  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);
+  if (auto* csg = std::get_if<Csg>(&object.shape)) {
+    for (auto& child : csg->children) transform_object(child, m, kind);
+    for (auto& light : csg->lights) transform_light(light, m);
+    return;
+  }
+  if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
+    for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
+  if (auto* box = std::get_if<Box>(&object.shape)) {
+    if (!box->rotated && kind != TransformKind::other) {
+      fold_into_corners(*box, m);
+      return;
+    }
+    box->rotated = true;
+  }
+  object.world_from_object = object.world_from_object * m;
+}
+
+void transform_light(Light& light, const Matrix& m) {
+  light.location = m.point(light.location);
+  light.point_at = m.point(light.point_at);
+  light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
+  light.axis2 = m.vector(light.axis2);
+  for (Object& o : light.looks_like) transform_object(o, m);
+}
+
+}  // namespace povtrace

@@ -1,0 +1,86 @@
+// Building CSG render nodes from description objects (see csg_build.hpp). Inversion is already pushed down to
+// the leaves by the parser (De Morgan, and a difference's later children); a `difference` built in code is
+// handled the same way here.
+#include "renderer/csg_build.hpp"
+
+#include "renderer/shapes/csg.hpp"
+
+namespace povtrace::render {
+
+namespace {
+
+CsgOperation operation_of(CsgKind kind) {
+  switch (kind) {
+    case CsgKind::union_: return CsgOperation::union_;
+    case CsgKind::merge: return CsgOperation::merge;
+    case CsgKind::intersection:
+    case CsgKind::difference: return CsgOperation::intersection;
+  }
+  return CsgOperation::union_;
+}
+
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf);
+
+// One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
+Primitive primitive_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
+  if (needs_csg_node(o)) return node_for(o, shaded, add_leaf);
+  std::vector<Primitive> leaves;
+  add_leaf(o, shaded, leaves);
+  if (leaves.size() == 1) return leaves.front();
+  return make_csg(CsgOperation::union_, std::move(leaves));
+}
+
+std::vector<Primitive> primitives_for(const std::vector<Object>& objects, bool shaded, const LeafBuilder& add_leaf) {
+  std::vector<Primitive> out;
+  out.reserve(objects.size());
+  for (const Object& o : objects) out.push_back(primitive_for(o, shaded, add_leaf));
+  return out;
+}
+
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
+  CsgOperation operation = CsgOperation::union_;
+  std::vector<Primitive> children;
+  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+    operation = operation_of(csg->kind);
+    children = primitives_for(csg->children, shaded, add_leaf);
+    if (csg->kind == CsgKind::difference)
+      for (std::size_t i = 1; i < children.size(); ++i) children[i] = inverted(children[i]);
+  } else {
+    add_leaf(o, shaded, children);   // a clipped or bounded shape: a one-child union carrying the clip or bound
+  }
+  std::vector<Primitive> bounds = primitives_for(o.bounded_by, false, add_leaf);
+  Primitive p = make_csg(operation, std::move(children), primitives_for(o.clipped_by, false, add_leaf), bounds);
+  // Bounds removed when the object was placed still gave it their bounding box (csg_modifiers.cpp).
+  for (Primitive& removed : primitives_for(o.removed_bounds, false, add_leaf)) bounds.push_back(std::move(removed));
+  if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
+  p.casts_shadow = !o.no_shadow;
+  return p;
+}
+
+// Link_To_Frame: a union all of whose children have no_shadow gets no_shadow too.
+bool all_children_without_shadow(const Csg& csg) {
+  for (const Object& child : csg.children)
+    if (!child.no_shadow) return false;
+  return true;
+}
+
+}  // namespace
+
+bool splits_into_children(const Object& o) {
+  const auto* csg = std::get_if<Csg>(&o.shape);
+  return csg && csg->kind == CsgKind::union_ && o.clipped_by.empty() && o.bounded_by.empty();
+}
+
+bool needs_csg_node(const Object& o) {
+  return std::holds_alternative<Csg>(o.shape) || !o.clipped_by.empty() || !o.bounded_by.empty() ||
+         !o.removed_bounds.empty();
+}
+
+Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf) {
+  Primitive p = node_for(o, true, add_leaf);
+  if (const auto* csg = std::get_if<Csg>(&o.shape); csg && csg->kind == CsgKind::union_ && all_children_without_shadow(*csg))
+    p.casts_shadow = false;
+  return p;
+}
+
+}  // namespace povtrace::render

@@ -1,0 +1,31 @@
+// Description objects that become CSG render nodes (renderer/shapes/csg.hpp): every union, merge and
+// intersection except the unions POV-Ray splits into their children, and any object with clipped_by or
+// bounded_by. The shapes themselves are turned into primitives by the caller (render_scene.cpp), so a shape added
+// there works inside CSG, clips and bounds without changes here.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "parser/description.hpp"
+#include "renderer/geometry.hpp"
+
+namespace povtrace::render {
+
+// Appends the primitives of one non-CSG object without clip or bound. `shaded` is false for clip and bounding
+// objects, which are never shaded and have no texture.
+using LeafBuilder = std::function<void(const Object& leaf, bool shaded, std::vector<Primitive>& out)>;
+
+// A top-level union without clipped_by or bounded_by is placed as its children (POV-Ray's split_union: each child
+// becomes a scene object of its own; a bounded union stays whole since Split_Unions is off by default).
+bool splits_into_children(const Object& o);
+
+// Whether the object needs a CSG node: it is CSG (and not split) or has clip or bounding objects.
+bool needs_csg_node(const Object& o);
+
+// The node for `o` (needs_csg_node(o)), with its children, clips and bounds built recursively. Its casts_shadow
+// follows the object's no_shadow (and POV-Ray's rule that a union whose children all have no_shadow has it too);
+// material and object index are left to the caller.
+Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf);
+
+}  // namespace povtrace::render

@@ -1,0 +1,62 @@
+#include "renderer/scene_scale.hpp"
+
+#include <cmath>
+
+#include "parser/description_transforms.hpp"
+
+namespace povtrace::render {
+
+namespace {
+// The ordinary range of scene sizes, where POV-Ray's absolute tolerances are small against the scene and its
+// maximum distance far beyond it; rescaled scenes land near the middle of it.
+constexpr double kSmallest = 1.0, kLargest = 16384, kTarget = 16;
+
+void scale_interiors(Object& o, double k) {
+  if (o.interior) o.interior->fade_distance *= k;
+  if (auto* csg = std::get_if<Csg>(&o.shape))
+    for (Object& child : csg->children) scale_interiors(child, k);
+}
+}  // namespace
+
+double scene_size(const std::vector<Primitive>& primitives, Vec3 camera_location) {
+  Bounds box;
+  box.extend(camera_location);
+  for (const Primitive& p : primitives)
+    if (const Bounds b = world_bounds(p); b.finite() && !b.empty()) box.extend(b);
+  return length(box.hi - box.lo);
+}
+
+double normalizing_scale(double size) {
+  if (!(size > 0) || !std::isfinite(size) || (size >= kSmallest && size <= kLargest)) return 1.0;
+  return std::exp2(std::round(std::log2(kTarget / size)));
+}
+
+SceneDescription scaled_scene(const SceneDescription& scene, double k) {
+  SceneDescription s = scene;
+  const Matrix m = Matrix::scaling({k, k, k});
+  for (Object& o : s.objects) {
+    transform_object(o, m);
+    scale_interiors(o, k);
+  }
+  for (Light& l : s.lights) {
+    transform_light(l, m);
+    l.fade_distance *= k;
+    if (l.cylinder) {
+      l.radius *= k;
+      l.falloff *= k;
+    }
+  }
+  Camera& c = s.camera;
+  c.location = c.location * k;
+  c.direction = c.direction * k;
+  c.up = c.up * k;
+  c.right = c.right * k;
+  for (Fog& f : s.fogs) {
+    f.distance *= k;
+    f.alt *= k;
+    f.offset *= k;
+  }
+  return s;
+}
+
+}  // namespace povtrace::render

@@ -1,0 +1,176 @@
+// CSG and the object modifiers that combine objects, as the parser describes them (parser/csg_modifiers.cpp,
+// objects.cpp): differences as intersections with inverted later children, inverse by De Morgan, clipped_by and
+// bounded_by lists (transformed with the object, linked, refused when textured), removal of unnecessary bounds,
+// texture inheritance and the #default texture through nested CSG, lights inside CSG, inside() with clips.
+#include <gtest/gtest.h>
+
+#include "parse_helpers.hpp"
+
+namespace {
+
+using namespace povtrace;
+using namespace povtrace::test;
+
+SceneDescription scene(const std::string& body, Messages* messages = nullptr) {
+  return parse("#version 3.7;\n" + body, messages);
+}
+
+const Csg& csg_of(const Object& o) { return std::get<Csg>(o.shape); }
+
+TEST(Csg, DifferenceIsAnIntersectionWithTheLaterChildrenInverted) {
+  const SceneDescription s = scene("difference { box { -1, 1 } sphere { 0, 0.5 } union { sphere { x, 0.2 } "
+                                   "sphere { -x, 0.2 } } }\n");
+  const Csg& d = csg_of(s.objects.at(0));
+  EXPECT_EQ(d.kind, CsgKind::intersection);
+  ASSERT_EQ(d.children.size(), 3u);
+  EXPECT_FALSE(d.children[0].inverse);
+  EXPECT_TRUE(d.children[1].inverse);
+  // An inverted union is the intersection of its inverted children (De Morgan).
+  const Csg& u = csg_of(d.children[2]);
+  EXPECT_EQ(u.kind, CsgKind::intersection);
+  for (const Object& c : u.children) EXPECT_TRUE(c.inverse);
+  EXPECT_FALSE(d.children[2].inverse);
+}
+
+TEST(Csg, ALightCountsAsTheFirstItemOfADifference) {
+  // POV-Ray counts items, lights included: after a light, the first object is inverted too.
+  const SceneDescription s = scene("difference { light_source { 0, 1 } sphere { 0, 1 } sphere { x, 1 } }\n");
+  const Csg& d = csg_of(s.objects.at(0));
+  ASSERT_EQ(d.children.size(), 2u);
+  EXPECT_TRUE(d.children[0].inverse);
+  EXPECT_TRUE(d.children[1].inverse);
+  EXPECT_EQ(s.lights.size(), 1u);
+}
+
+TEST(Csg, InverseFollowsDeMorgan) {
+  const SceneDescription s = scene(
+      "union { sphere { 0, 1 } box { 0, 1 } inverse }\n"
+      "intersection { sphere { 0, 1 } box { 0, 1 } inverse }\n"
+      "merge { sphere { 0, 1 } box { 0, 1 } inverse }\n"
+      "union { sphere { 0, 1 } box { 0, 1 } inverse inverse }\n"
+      "difference { sphere { 0, 1 } box { 0, 1 } inverse }\n");
+  ASSERT_EQ(s.objects.size(), 5u);
+  EXPECT_EQ(csg_of(s.objects[0]).kind, CsgKind::intersection);
+  EXPECT_EQ(csg_of(s.objects[1]).kind, CsgKind::merge);
+  EXPECT_EQ(csg_of(s.objects[2]).kind, CsgKind::intersection);
+  // Twice inverted, a union comes back as a merge with its children as written.
+  EXPECT_EQ(csg_of(s.objects[3]).kind, CsgKind::merge);
+  for (const Object& c : csg_of(s.objects[3]).children) EXPECT_FALSE(c.inverse);
+  // difference { A B } inverted: merge { inverse A, B }.
+  const Csg& d = csg_of(s.objects[4]);
+  EXPECT_EQ(d.kind, CsgKind::merge);
+  EXPECT_TRUE(d.children[0].inverse);
+  EXPECT_FALSE(d.children[1].inverse);
+  for (const Object& o : s.objects) EXPECT_FALSE(o.inverse);
+}
+
+TEST(Csg, InsideOfInvertedCsgAndDifferences) {
+  EXPECT_EQ(debug_output("#declare U = union { sphere { 0, 1 } sphere { 3*x, 1 } inverse }\n"
+                         "#declare D = difference { box { -2, 2 } sphere { 0, 1 } inverse }\n"
+                         "#debug concat(str(inside(U, 0), 0, 0), str(inside(U, 1.5*x), 0, 0), "
+                         "str(inside(D, 0), 0, 0), str(inside(D, 1.5*x), 0, 0), str(inside(D, 5*x), 0, 0))\n"),
+            "01101");
+}
+
+TEST(ClippedBy, ObjectsAreTransformedWithTheObject) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 clipped_by { plane { y, 0 } box { -1, 1 } translate x } translate 2*y }\n");
+  const Object& o = s.objects.at(0);
+  ASSERT_EQ(o.clipped_by.size(), 2u);
+  // The clip's own translate x, then the object's translate 2*y.
+  EXPECT_EQ(o.clipped_by[1].world_from_object.point({0, 0, 0}).x, 1.0);
+  EXPECT_EQ(o.clipped_by[1].world_from_object.point({0, 0, 0}).y, 2.0);
+  EXPECT_EQ(o.clipped_by[0].world_from_object.point({0, 0, 0}).y, 2.0);
+  EXPECT_TRUE(o.bounded_by.empty());
+}
+
+TEST(ClippedBy, InsideRequiresTheClips) {
+  EXPECT_EQ(debug_output("#declare C = sphere { 0, 1 clipped_by { plane { y, 0 } } }\n"
+                         "#debug concat(str(inside(C, -0.5*y), 0, 0), str(inside(C, 0.5*y), 0, 0))\n"),
+            "10");
+}
+
+TEST(ClippedBy, LinkingSharesTheList) {
+  Messages m;
+  const SceneDescription s = scene(
+      "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -1, 2 } } clipped_by { bounded_by } }\n", &m);
+  const Object& o = s.objects.at(0);
+  EXPECT_EQ(o.clipped_by.size(), 1u);
+  EXPECT_EQ(o.bounded_by.size(), 1u);   // a union keeps its bounds
+  EXPECT_TRUE(o.clips_are_bounds);
+}
+
+TEST(BoundedBy, RemovedFromPlacedPrimitivesAndSplitUnionChildren) {
+  Messages m;
+  const SceneDescription s = scene(
+      "sphere { 0, 1 bounded_by { box { -1, 1 } } }\n"
+      "union { sphere { 0, 1 bounded_by { box { -1, 1 } } } sphere { x, 1 } }\n"
+      "intersection { sphere { 0, 1 bounded_by { box { -1, 1 } } } sphere { x, 1 } bounded_by { sphere { 0, 3 } } }\n"
+      "sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } }\n",
+      &m);
+  ASSERT_EQ(s.objects.size(), 4u);
+  EXPECT_TRUE(s.objects[0].bounded_by.empty());
+  EXPECT_EQ(s.objects[0].removed_bounds.size(), 1u);   // its bounding box stays (POV-Ray's BBox)
+  EXPECT_TRUE(csg_of(s.objects[1]).children[0].bounded_by.empty());
+  EXPECT_EQ(csg_of(s.objects[1]).children[0].removed_bounds.size(), 1u);
+  // Inside CSG, and on CSG, bounds stay.
+  EXPECT_EQ(csg_of(s.objects[2]).children[0].bounded_by.size(), 1u);
+  EXPECT_EQ(s.objects[2].bounded_by.size(), 1u);
+  EXPECT_TRUE(s.objects[2].removed_bounds.empty());
+  // A removed bound that was also the clip leaves the clip.
+  EXPECT_TRUE(s.objects[3].bounded_by.empty());
+  EXPECT_EQ(s.objects[3].clipped_by.size(), 1u);
+  int warnings = 0;
+  for (const auto& item : m.items) warnings += item.find("unnecessary bounding object removed") != std::string::npos;
+  EXPECT_EQ(warnings, 3);
+}
+
+TEST(Csg, TexturesInheritThroughNestedCsgAndTheDefaultFillsTheRest) {
+  const SceneDescription s = scene(
+      "#default { pigment { rgb <0, 0, 1> } }\n"
+      "difference {\n"
+      "  intersection { box { -1, 1 } sphere { 0, 1.4 } pigment { rgb <1, 0, 0> } }\n"
+      "  union { sphere { 0, 0.5 } box { 0, 1 pigment { rgb <0, 1, 0> } } }\n"
+      "}\n"
+      "intersection { sphere { 0, 1 } box { 0, 1 pigment { rgb <0, 1, 0> } } pigment { rgb <1, 1, 0> } }\n");
+  const Csg& d = csg_of(s.objects.at(0));
+  const Csg& inner = csg_of(d.children[0]);
+  for (const Object& c : inner.children) EXPECT_EQ(c.texture->layers.back().pigment.colour.r, 1.0);
+  const Csg& cutters = csg_of(d.children[1]);
+  // The untextured union (and its untextured child) falls back to the #default texture, blue.
+  EXPECT_EQ(cutters.children[0].texture->layers.back().pigment.colour.b, 1.0);
+  EXPECT_EQ(cutters.children[1].texture->layers.back().pigment.colour.g, 1.0);
+  const Csg& second = csg_of(s.objects.at(1));
+  EXPECT_EQ(second.children[0].texture->layers.back().pigment.colour.g, 1.0);   // inherits yellow <1,1,0>
+  EXPECT_EQ(second.children[0].texture->layers.back().pigment.colour.r, 1.0);
+  EXPECT_EQ(second.children[1].texture->layers.back().pigment.colour.r, 0.0);   // keeps its own green
+}
+
+TEST(Csg, NoShadowAndLightsPropagate) {
+  const SceneDescription s = scene(
+      "intersection { sphere { 0, 1 } difference { box { -1, 1 } light_source { <0, 5, 0>, 1 } sphere { 0, 0.5 } } "
+      "no_shadow translate x }\n");
+  const Csg& i = csg_of(s.objects.at(0));
+  for (const Object& c : i.children) EXPECT_TRUE(c.no_shadow);
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].location.x, 1.0);   // moved with the CSG
+}
+
+TEST(ClipAndBound, PovRaysErrors) {
+  auto message = [](const std::string& text) { return std::string(parse_error("#version 3.7;\n" + text).what()); };
+  EXPECT_NE(message("sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } clipped_by { box { 0, 1 } "
+                    "} }\n")
+                .find("cannot add clips after linking bounds and clips"),
+            std::string::npos);
+  EXPECT_NE(message("sphere { 0, 1 clipped_by { box { -1, 1 } } bounded_by { box { 0, 1 } } clipped_by { "
+                    "bounded_by } }\n")
+                .find("cannot link bounds with previous clips"),
+            std::string::npos);
+  EXPECT_NE(message("sphere { 0, 1 clipped_by { box { -1, 1 pigment { rgb 1 } } } }\n")
+                .find("illegal texture in a clipping or bounding object"),
+            std::string::npos);
+  EXPECT_NE(message("sphere { 0, 1 clipped_by { } }\n").find("expected an object in clipped_by { }"),
+            std::string::npos);
+}
+
+}  // namespace

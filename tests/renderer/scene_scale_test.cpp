@@ -1,0 +1,74 @@
+// Scale invariance (renderer/scene_scale.cpp): the rescaling factor and what a rescaled scene carries.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renderer/scene_scale.hpp"
+#include "scene_kit.hpp"
+
+namespace {
+
+using namespace povtrace;
+using namespace povtrace::render;
+using namespace povtrace::render::test;
+
+TEST(SceneScale, OrdinarySizesAreLeftAlone) {
+  for (double size : {1.0, 7.9, 26.0, 1000.0, 16384.0}) EXPECT_EQ(normalizing_scale(size), 1.0) << size;
+  EXPECT_EQ(normalizing_scale(0.0), 1.0);   // a single point (only unbounded shapes): nothing to go by
+  EXPECT_EQ(normalizing_scale(INFINITY), 1.0);
+}
+
+TEST(SceneScale, TinyAndHugeScenesGetAPowerOfTwoTowardsSixteen) {
+  for (double size : {1.5e-5, 0.3, 2e5, 1.5e7}) {
+    const double k = normalizing_scale(size);
+    EXPECT_EQ(std::exp2(std::round(std::log2(k))), k) << size;   // exact in floating point
+    EXPECT_GE(size * k, 16.0 / std::sqrt(2.0)) << size;
+    EXPECT_LE(size * k, 16.0 * std::sqrt(2.0)) << size;
+  }
+}
+
+TEST(SceneScale, EveryLengthIsScaled) {
+  SceneDescription s = base_scene();
+  Object glass = sphere_object({1, 2, 3}, 0.5, texture(rgb(1, 1, 1)));
+  glass.interior = Interior{};
+  glass.interior->fade_distance = 2;
+  s.objects.push_back(glass);
+  Light l = point_light({4, 5, 6});
+  l.fade_distance = 3;
+  l.cylinder = true;
+  l.radius = 0.75;
+  l.falloff = 1;
+  l.area = true;
+  l.axis1 = {1, 0, 0};
+  s.lights.push_back(l);
+  Fog f;
+  f.distance = 10;
+  f.alt = 1;
+  f.offset = 0.5;
+  s.fogs.push_back(f);
+  const SceneDescription t = scaled_scene(s, 4);
+  EXPECT_EQ(t.objects[0].world_from_object.point({1, 2, 3}), (Vec3{4, 8, 12}));
+  EXPECT_EQ(t.objects[0].interior->fade_distance, 8);
+  EXPECT_EQ(t.lights[0].location, (Vec3{16, 20, 24}));
+  EXPECT_EQ(t.lights[0].fade_distance, 12);
+  EXPECT_EQ(t.lights[0].radius, 3);
+  EXPECT_EQ(t.lights[0].falloff, 4);
+  EXPECT_EQ(t.lights[0].axis1, (Vec3{4, 0, 0}));
+  EXPECT_EQ(t.fogs[0].distance, 40);
+  EXPECT_EQ(t.fogs[0].alt, 4);
+  EXPECT_EQ(t.fogs[0].offset, 2);
+  EXPECT_EQ(t.camera.location, s.camera.location * 4.0);
+  EXPECT_EQ(t.camera.right, s.camera.right * 4.0);
+}
+
+TEST(SceneScale, ATinySceneIsBuiltRescaledUnlessPovrayTolerancesAreAsked) {
+  SceneDescription s = base_scene();
+  s.camera.location = {0, 0, -1e-5};
+  s.objects.push_back(sphere_object({0, 0, 0}, 1e-6, texture(rgb(1, 1, 1))));
+  EXPECT_NE(build_render_scene(s, BuildOptions{}).scale, 1.0);
+  BuildOptions povray;
+  povray.povray_tolerances = true;
+  EXPECT_EQ(build_render_scene(s, povray).scale, 1.0);
+}
+
+}  // namespace
