@@ -33,6 +33,51 @@ struct UnsupportedFeature {
 };
 using Unsupported = std::optional<UnsupportedFeature>;
 
+// ---- Images (image_map, bump_map) -------------------------------------------------------------------------
+// How an image's stored numbers become working-space values. POV-Ray decides it where the image is parsed
+// (Parse_Image reads the file then), from the scene's gamma handling at that point (source/backend/parser/
+// parstxtr.cpp Parse_Image; base/image/png.cpp Read).
+enum class ImageGammaMode {
+  none,              // no gamma handling yet (no assumed_gamma, no #version ≥ 3.7): the stored numbers as they are
+  file_or_srgb,      // #version ≥ 3.7: the file's sRGB or gAMA chunk, else sRGB, re-encoded to the working gamma
+  file_or_working,   // assumed_gamma in an older scene: the file's chunk, else the working gamma (no change)
+};
+struct ImageGamma {
+  ImageGammaMode mode = ImageGammaMode::none;
+  double working = 1.0;        // assumed_gamma at that point (1 when none was given yet)
+  // `gamma G` / `gamma srgb` after the file name: the file is decoded with it whatever its chunks say.
+  bool given = false;
+  bool given_srgb = false;
+  double given_gamma = 1.0;
+  friend bool operator==(const ImageGamma&, const ImageGamma&) = default;
+};
+
+// `filter N, F` / `transmit N, T` (palette entry N, only for palette images) or `filter all F` / `transmit all T`
+// (index −1), in written order: each `all` overwrites every palette entry written before it.
+struct ImageChannelSetting {
+  bool transmit = false;   // else filter
+  int index = -1;          // −1: all
+  double value = 0;
+  SourceLoc loc;
+};
+
+// image_map { [png] "file" [gamma G] [map_type N] [once] [interpolate N] [filter/transmit …] [repeat] [offset] }
+// and bump_map { … [bump_size F] [use_index|use_colour] }. The parser records the file's path; the renderer reads
+// and decodes it (PNG only).
+struct ImageMap {
+  std::string file;          // the path found in the working directory or a library path, else as written
+  SourceLoc file_loc;        // where the file name is written
+  ImageGamma gamma;
+  int map_type = 0;          // 0 planar, 1 spherical, 2 cylindrical, 5 torus
+  int interpolate = 0;       // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
+  bool once = false;
+  bool use_index = false;    // bump_map: palette indices instead of the colours' grey
+  double repeat_u = 1, repeat_v = 1;   // `repeat <u, v>`: the image spans 1/u by 1/v units
+  double offset_u = 0, offset_v = 0;   // `offset <u, v>` in image widths and heights
+  std::vector<ImageChannelSetting> channels;
+  bool has_filter = false;   // a filter or transmit item was written (POV-Ray's HAS_FILTER: not opaque)
+};
+
 // ---- Textures -------------------------------------------------------------------------------------------
 // Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
 enum class PatternKind {
@@ -41,7 +86,9 @@ enum class PatternKind {
   bozo, spotted, granite, marble, wood, agate,                      // noise-based
   crackle, cells,                                                   // a random point or value per unit cube
   bumps, dents, wrinkles, ripples, waves,                           // the normal patterns used as pigments
-  average                                                           // mean of its pigment_map's pigments
+  average,                                                          // mean of its pigment_map's pigments
+  image_map,                                                        // the colour of an image (Pigment::image)
+  uv_mapping                                                        // its one entry at the hit's <u, v, 0>
 };
 
 // The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).
@@ -111,6 +158,7 @@ struct Pigment {
   std::optional<Turbulence> turbulence;   // the classic `turbulence` (always applied last, next to the pattern)
   std::vector<PatternWarp> warps;         // in written order
   Matrix world_from_pattern;     // every transform applied to the pigment since it was created (after its warps)
+  std::shared_ptr<const ImageMap> image;   // image_map
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -145,7 +193,9 @@ struct Finish {
 // normal { } (POV-Ray's TNORMAL, texture/normal.cpp Perturb_Normal). The normal-only patterns perturb the normal
 // with their own formula; any pigment pattern used as a normal (`pattern`) is sampled around the point and its
 // slope bends the normal.
-enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves };
+enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves,
+                        bump_map,      // the slope of an image's grey (or palette indices): pattern.image
+                        uv_mapping };  // uv_normal at the hit's <u, v, 0>
 
 // A slope_map entry `[value, <height, slope>]` (single precision, as POV-Ray's blend map entries).
 struct SlopeEntry {
@@ -162,6 +212,7 @@ struct Normal {
   double accuracy = 0.02;        // the sampling distance of pattern normals (POV-Ray's Delta)
   bool no_bump_scale = false;
   std::vector<SlopeEntry> slope_map;
+  std::shared_ptr<const Normal> uv_normal;   // uv_mapping: the normal evaluated at the hit's uv
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -174,11 +225,31 @@ struct TextureLayer {
   std::shared_ptr<const Normal> normal;
 };
 
-// Layers in written order: the *last* one is the top layer (pipeline §2 "Layers").
+struct Texture;
+
+// One texture of a patterned texture's map or list; `value` in single precision, as POV-Ray's blend map entries.
+struct TextureMapEntry {
+  double value = 0;
+  std::shared_ptr<const Texture> texture;
+};
+
+// A patterned texture (POV-Ray's Parse_Texture falling through to Parse_Pattern): whole textures chosen or
+// blended by a pattern — `texture { PATTERN texture_map { [v TEXTURE_BODY] … } }`, `texture { checker|hexagon|brick
+// texture { … } … }`, `tiles { … tile2 … }` (a checker), `average` (weighted mean), or `uv_mapping TEXTURE_BODY`
+// (its one texture at the hit's <u, v, 0>). Each texture is evaluated at the pattern-space point of this one.
+struct TexturePattern {
+  Pigment pattern;                        // pattern kind, parameters, wave, turbulence, warps, transforms
+  std::vector<TextureMapEntry> entries;   // ascending
+};
+
+// Plain: layers in written order, the *last* one the top layer (pipeline §2 "Layers"). Patterned: `pattern` set
+// and no layers (POV-Ray refuses to layer a patterned texture or to layer over one).
 struct Texture {
   std::vector<TextureLayer> layers;
+  std::shared_ptr<const TexturePattern> pattern;
   SourceLoc loc;
   Unsupported unsupported;
+  bool patterned() const { return pattern != nullptr; }
 };
 
 struct Interior {
@@ -195,7 +266,13 @@ struct Interior {
 // ---- Geometry -------------------------------------------------------------------------------------------
 struct Sphere { Vec3 centre; double radius = 1; };
 struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; };   // normal as written (unit-normalised by parser)
-struct Box { Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1}; };     // sorted per axis by the parser
+// Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
+// and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a
+// transform (`rotated`); the object's matrix holds only the transforms from then on. uv_mapping sees the difference.
+struct Box {
+  Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};
+  bool rotated = false;
+};
 
 // The parser turns a difference into an intersection with its later children inverted, as POV-Ray does;
 // `difference` remains for descriptions built in code.
@@ -286,6 +363,9 @@ struct Object {
   std::optional<Interior> interior;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
+  // uv_mapping (before any texture): textures are evaluated at the hit's <u, v, 0> and later transforms of the
+  // object no longer move them (POV-Ray's UV_FLAG). CSG children that inherit the texture inherit the flag.
+  bool uv_mapping = false;
   std::optional<bool> hollow;               // unset: inherited from a CSG parent, else false
   SourceLoc loc;
   Unsupported unsupported;

@@ -2,33 +2,59 @@
 
 namespace povtrace {
 
-void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
-  if (!texture) return;
-  auto moved = std::make_shared<Texture>(*texture);
+namespace {
+void transform_pattern(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
+
+// Box::Translate and Box::Scale move a box's corners (re-sorted per axis) while it has no transform of its own.
+void fold_into_corners(Box& box, const Matrix& m) {
+  const Vec3 a = m.point(box.corner1), b = m.point(box.corner2);
+  box.corner1 = min(a, b);
+  box.corner2 = max(a, b);
+}
+}  // namespace
+
+std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m) {
+  auto moved = std::make_shared<Texture>(texture);
+  if (texture.pattern) {
+    auto pattern = std::make_shared<TexturePattern>(*texture.pattern);
+    transform_pattern(pattern->pattern, m);
+    moved->pattern = std::move(pattern);
+  }
   for (auto& layer : moved->layers) {
-    layer.pigment.world_from_pattern = layer.pigment.world_from_pattern * m;
+    transform_pattern(layer.pigment, m);
     if (layer.normal) {
       auto normal = std::make_shared<Normal>(*layer.normal);
-      normal->pattern.world_from_pattern = normal->pattern.world_from_pattern * m;
+      transform_pattern(normal->pattern, m);
       layer.normal = std::move(normal);
     }
   }
-  texture = std::move(moved);
+  return moved;
 }
 
-void transform_object(Object& object, const Matrix& m) {
-  transform_texture(object.texture, m);
-  for (auto& clip : object.clipped_by) transform_object(clip, m);
-  for (auto& bound : object.bounded_by) transform_object(bound, m);
-  for (auto& bound : object.removed_bounds) transform_object(bound, m);
+void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m) {
+  if (texture) texture = transformed_texture(*texture, m);
+}
+
+void transform_object(Object& object, const Matrix& m, TransformKind kind) {
+  if (!object.uv_mapping) transform_texture(object.texture, m);
+  for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
+  for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
+  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) transform_object(child, m);
+    for (auto& child : csg->children) transform_object(child, m, kind);
     for (auto& light : csg->lights) transform_light(light, m);
     return;
   }
-  if (auto* mesh = std::get_if<Mesh>(&object.shape))   // a mesh's per-triangle textures move with it
-    for (auto& texture : mesh->textures) transform_texture(texture, m);
+  if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
+    for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
   if (auto* text = std::get_if<Text>(&object.shape)) text->box_transforms.push_back(m);   // extents, as CSG::Transform
+  if (auto* box = std::get_if<Box>(&object.shape)) {
+    if (!box->rotated && kind != TransformKind::other) {
+      fold_into_corners(*box, m);
+      return;
+    }
+    box->rotated = true;
+  }
   object.world_from_object = object.world_from_object * m;
 }
 

@@ -11,25 +11,10 @@
 // and `function W, H { … }` height fields are refused by name.
 #include <filesystem>
 
+#include "parser/image_files.hpp"
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
-
-namespace {
-bool is_image_type_word(std::string_view w) {
-  static const std::string_view types[] = {"iff", "gif", "pot", "sys", "tga", "png", "pgm", "ppm",
-                                           "jpeg", "tiff", "bmp", "exr", "hdr"};
-  for (auto t : types)
-    if (w == t) return true;
-  return false;
-}
-
-bool has_png_extension(const std::string& name) {
-  std::string ext = std::filesystem::path(name).extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".png";
-}
-}  // namespace
 
 std::string Interpreter::locate_image_file(const std::string& name) const {
   const std::filesystem::path p(name);
@@ -55,7 +40,7 @@ void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h,
   else unget(t);
   h.file_loc = peek().loc;
   const std::string name = parse_string();
-  if (type.empty() && !has_png_extension(name)) type = "'" + std::filesystem::path(name).extension().string() + "'";
+  if (type.empty() && lower_extension(name) != ".png") type = "'" + std::filesystem::path(name).extension().string() + "'";
   if (!type.empty() && type != "png")
     taint(o.unsupported, UnsupportedFeature{"a height_field read from a " + type + " image", keyword.loc});
   h.file = locate_image_file(name);

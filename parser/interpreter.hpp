@@ -16,6 +16,8 @@
 //   implicit_shapes.cpp superellipsoid, blob
 //   height_field.cpp  height_field
 //   text.cpp          text (fonts read by truetype*.cpp, laid out by text_layout.cpp)
+//   image_map.cpp     image_map, bump_map
+//   texture_patterns.cpp patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
 //   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 //   sweep_shapes.cpp  lathe, prism, sor
 //   isosurface.cpp    isosurface
@@ -28,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "parser/description_transforms.hpp"
 #include "parser/lexer.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/reserved_words.hpp"
@@ -257,7 +260,9 @@ class Interpreter {
   // ---- pigment patterns, maps and pattern modifiers (pigments.cpp) ----
   Pigment parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer);
   Pigment default_pigment() const;
+  Pigment uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer);
   bool try_pattern(const Token& t, Pigment& p);
+  void set_list_pattern(const Token& t, Pigment& p);   // checker/hexagon/brick without their entries
   bool try_pattern_modifier(const Token& t, Pigment& p);
   bool try_pattern_parameter(const Token& t, Pigment& p);
   bool starts_map_expression(const Token& t) const;
@@ -271,6 +276,7 @@ class Interpreter {
 
   // ---- normal { } (normals.cpp) ----
   Normal parse_normal_block(const Token& keyword, const Normal& start);
+  Normal parse_normal_contents(const Token& keyword, const Normal& start);
   bool try_normal_pattern(const Token& t, Normal& n);
   bool try_normal_modifier(const Token& t, Normal& n);
   std::vector<SlopeEntry> parse_slope_map(const Token& keyword);
@@ -286,7 +292,7 @@ class Interpreter {
   SceneItem parse_object_block(const Token& keyword);
   void parse_object_modifiers(Object& object);
   bool try_object_modifier(const Token& t, Object& object);
-  void apply_transform(Object& object, const Matrix& m);
+  void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
   void parse_material_block(const Token& keyword, Object& object);
   static std::string csg_name(CsgKind kind);
 
@@ -317,7 +323,7 @@ class Interpreter {
   void check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count, const std::string& items);
   void expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items);
   std::vector<float> parse_mesh2_vectors(const Token& keyword, bool normals);
-  std::size_t parse_mesh2_uv_vectors(const Token& keyword);
+  std::vector<double> parse_mesh2_uv_vectors(const Token& keyword);
   std::array<std::uint32_t, 3> mesh2_index_triple(const Token& at, const Numeric& value, std::size_t limit,
                                                   const std::string& what);
   std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
@@ -353,6 +359,29 @@ class Interpreter {
   void parse_isosurface_container(Isosurface& iso);
   bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
   void correct_isosurface_values(const Token& keyword, Isosurface& iso);
+  // ---- image_map, bump_map (image_map.cpp) ----
+  ImageGamma current_image_gamma() const;
+  void parse_image_file(const Token& keyword, ImageMap& m, Unsupported& unsupported);
+  void parse_image_decoding(ImageMap& m, Unsupported& unsupported);
+  void parse_image_channel(const Token& keyword, ImageMap& m);
+  bool try_image_item(const Token& t, ImageMap& m, bool bump);
+  void parse_image_map(const Token& keyword, Pigment& p);
+  void parse_bump_map(const Token& keyword, Normal& n);
+
+  // ---- patterned textures (texture_patterns.cpp) ----
+  std::shared_ptr<const Texture> parse_texture_contents(const SourceLoc& loc, std::string_view closer);
+  static bool starts_texture_pattern(const Token& t);
+  bool is_list_pattern_word(const Token& t) const;
+  std::shared_ptr<const Texture> transformed_patterned_texture(const Texture& declared, Token t,
+                                                               std::string_view closer);
+  std::vector<TextureMapEntry> parse_texture_list(std::size_t count);
+  BlendMapValue parse_texture_map(const Token& keyword, bool weights_optional);
+  std::vector<TextureMapEntry> parse_tiles(const Token& keyword);
+  std::shared_ptr<const Texture> parse_patterned_texture(const Token& first, const SourceLoc& loc,
+                                                         std::string_view closer);
+  void parse_texture_pattern_modifiers(const Token& first, TexturePattern& pattern, std::string_view closer);
+  // POV-Ray's Link_Textures checks: nothing over a patterned texture, a patterned one over nothing.
+  void refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const;
 
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);
@@ -409,6 +438,7 @@ class Interpreter {
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
   bool camera_seen_ = false;
   bool statement_seen_ = false;
+  bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
   // global_settings { charset }.

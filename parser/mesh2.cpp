@@ -73,16 +73,21 @@ std::vector<float> Interpreter::parse_mesh2_vectors(const Token& keyword, bool n
   return out;
 }
 
-// uv_vectors { n, UV1, … }: read and checked; returns the count (uv_mapping is refused, so they are not kept).
-std::size_t Interpreter::parse_mesh2_uv_vectors(const Token& keyword) {
+// uv_vectors { n, UV1, … }: u v per vector.
+std::vector<double> Interpreter::parse_mesh2_uv_vectors(const Token& keyword) {
   const std::size_t n = parse_mesh2_count(keyword, true);
+  std::vector<double> uvs;
+  uvs.reserve(2 * std::min(n, kMaxReserve));
   for (std::size_t i = 0; i < n; ++i) {
     check_mesh2_item(keyword, i, n, "vector");
-    parse_additive();   // parameter level, as POV-Ray's Parse_UV_Vect: `<1, 1> <-1, 1>` are two vectors, not a comparison
+    // parameter level, as POV-Ray's Parse_UV_Vect: `<1, 1> <-1, 1>` are two vectors, not a comparison
+    const auto [u, v] = parse_uv_vector("in uv_vectors");
+    uvs.push_back(u);
+    uvs.push_back(v);
     accept(",");
   }
   expect_mesh2_section_end(keyword, n, "vector");
-  return n;
+  return uvs;
 }
 
 // One index triple <a, b, c>, truncated to integers and checked against `limit` at its own position.
@@ -173,12 +178,14 @@ std::size_t drop_degenerate_faces(MeshData& data) {
       data.faces[3 * kept + k] = data.faces[3 * i + k];
       if (!data.face_normals.empty()) data.face_normals[3 * kept + k] = data.face_normals[3 * i + k];
       if (!data.face_textures.empty()) data.face_textures[3 * kept + k] = data.face_textures[3 * i + k];
+      if (!data.face_uvs.empty()) data.face_uvs[3 * kept + k] = data.face_uvs[3 * i + k];
     }
     ++kept;
   }
   data.faces.resize(3 * kept);
   if (!data.face_normals.empty()) data.face_normals.resize(3 * kept);
   if (!data.face_textures.empty()) data.face_textures.resize(3 * kept);
+  if (!data.face_uvs.empty()) data.face_uvs.resize(3 * kept);
   return count - kept;
 }
 
@@ -207,14 +214,13 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
   o.loc = keyword.loc;
   MeshData data;
   Mesh mesh;
-  std::size_t uv_count = 0;
   for (Token t = next();; t = next()) {
     auto replaced = [&](bool had) {
       if (had) warn(t.loc, "duplicate '" + std::string(t.text) + "' block; the earlier one is ignored");
     };
     if (t.is("vertex_vectors")) { replaced(!data.vertices.empty()); data.vertices = parse_mesh2_vectors(t, false); }
     else if (t.is("normal_vectors")) { replaced(!data.normals.empty()); data.normals = parse_mesh2_vectors(t, true); }
-    else if (t.is("uv_vectors")) { replaced(uv_count > 0); uv_count = parse_mesh2_uv_vectors(t); }
+    else if (t.is("uv_vectors")) { replaced(!data.uvs.empty()); data.uvs = parse_mesh2_uv_vectors(t); }
     else if (t.is("texture_list")) {
       const std::size_t n = parse_mesh2_count(t, true);
       for (std::size_t i = 0; i < n; ++i) {
@@ -234,6 +240,7 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
   const std::size_t vertex_count = data.vertices.size() / 3, normal_count = data.normals.size() / 3;
   parse_mesh2_faces(faces, vertex_count, mesh.textures.size(), data);
   const std::size_t face_count = data.triangle_count();
+  const std::size_t uv_count = data.uvs.size() / 2;
   bool uv_indices = false;
   std::optional<std::vector<std::uint32_t>> normal_indices;
   for (Token t = next();; t = next()) {
@@ -243,7 +250,7 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
       const Token at = peek();
       if (parse_mesh2_count(t, true) != face_count)
         fail_at(at, "the number of uv_indices must equal the number of faces (" + std::to_string(face_count) + ")");
-      parse_mesh2_indices(t, face_count, std::max<std::size_t>(uv_count, 1), "uv");
+      data.face_uvs = parse_mesh2_indices(t, face_count, std::max<std::size_t>(uv_count, 1), "uv");
     } else if (t.is("normal_indices")) {
       if (normal_indices) fail_at(t, "only one normal_indices section is allowed in mesh2");
       const Token at = peek();
@@ -259,6 +266,10 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
     data.inside_vector = parse_inside_vector();
   }
   if (!uv_indices && uv_count > 1 && uv_count != vertex_count) fail_at(faces, "mesh2 needs a uv_indices section");
+  // Without uv_indices, one uv vector per vertex pairs with the vertices; a single one serves every corner
+  // (POV-Ray's Parse_Mesh2). With none, every corner is <0, 0>.
+  if (uv_count == 0) data.face_uvs.clear();
+  else if (!uv_indices) data.face_uvs = uv_count == vertex_count ? data.faces : std::vector<std::uint32_t>(data.faces.size(), 0);
   if (!normal_indices && normal_count > 0) {
     if (normal_count != vertex_count) fail_at(faces, "mesh2 needs a normal_indices section");
     normal_indices = data.faces;   // one normal per vertex: the vertex indices are the normal indices

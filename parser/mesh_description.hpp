@@ -45,6 +45,10 @@ struct MeshData {
   // second = a single texture; all three set = a texture_list whose colours are blended across the triangle.
   // Empty when no triangle has a texture of its own.
   std::vector<std::int32_t> face_textures;
+  // uv_vectors: u v per coordinate (double, as POV-Ray keeps them) and three indices into them per triangle. Empty
+  // when none were given: every triangle's corners are <0, 0> (POV-Ray's default).
+  std::vector<double> uvs;
+  std::vector<std::uint32_t> face_uvs;
   std::optional<Vec3> inside_vector;        // unit; absent: the mesh has no inside (POV-Ray's PATCH_OBJECT)
   std::size_t triangle_count() const { return faces.size() / 3; }
   Vec3 vertex(std::uint32_t i) const { return {vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]}; }

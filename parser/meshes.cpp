@@ -25,7 +25,7 @@
 //   an error. Without normal_indices, normal_vectors of the vertex count pair with the vertices; fewer normal
 //   indices than faces leave the remaining faces flat. Degenerate faces (zero area of the single-precision
 //   vertices) are never hit in POV-Ray; povtrace drops them with a warning.
-// - uv_vectors and uv_indices are read and checked; povtrace refuses uv_mapping, so they are not stored.
+// - uv_vectors (per mesh triangle, or mesh2's list with uv_indices) are kept in double precision for uv_mapping.
 #include <bit>
 #include <cmath>
 #include <unordered_map>
@@ -85,8 +85,22 @@ struct Interpreter::MeshBuilder {
     return static_cast<std::int32_t>(textures.size() - 1);
   }
   void add_triangle(const std::array<Vec3, 3>& p, const std::array<Vec3, 3>* smooth_normals,
-                    const std::array<std::int32_t, 3>& tex) {
+                    const std::array<std::int32_t, 3>& tex, const std::optional<std::array<double, 6>>& uv) {
     const std::size_t before = data.triangle_count();
+    // uv_vectors: the first triangle with some adds a <0, 0> (index 0) for the earlier ones.
+    if (uv && data.uvs.empty()) {
+      data.uvs = {0.0, 0.0};
+      data.face_uvs.assign(3 * before, 0);
+    }
+    if (uv) {
+      for (int k = 0; k < 3; ++k) {
+        data.face_uvs.push_back(static_cast<std::uint32_t>(data.uvs.size() / 2));
+        data.uvs.push_back((*uv)[2 * k]);
+        data.uvs.push_back((*uv)[2 * k + 1]);
+      }
+    } else if (!data.uvs.empty()) {
+      data.face_uvs.insert(data.face_uvs.end(), 3, 0);
+    }
     for (const Vec3& v : p) data.faces.push_back(add(data.vertices, vertex_index, v));
     // The per-face arrays start with the first face that needs them, earlier faces filled in as flat/untextured.
     if (smooth_normals) {
@@ -308,10 +322,12 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
     }
     n[k] = normalize(n[k]);
   }
+  std::optional<std::array<double, 6>> uv;
   if (accept("uv_vectors")) {
+    uv.emplace();
     for (int k = 0; k < 3; ++k) {
       if (k > 0) accept(",");
-      parse_additive();
+      std::tie((*uv)[2 * k], (*uv)[2 * k + 1]) = parse_uv_vector("in uv_vectors");
     }
   }
   const std::array<std::int32_t, 3> tex = parse_mesh_triangle_textures(mesh);
@@ -322,7 +338,7 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   }
   const Vec3 d1 = n[0] - n[1], d2 = n[0] - n[2];
   const bool distinct_normals = smooth && (dot(d1, d1) > kEpsilon || dot(d2, d2) > kEpsilon);
-  mesh.add_triangle(p, distinct_normals ? &n : nullptr, tex);
+  mesh.add_triangle(p, distinct_normals ? &n : nullptr, tex, uv);
 }
 
 std::optional<Vec3> Interpreter::parse_inside_vector() {

@@ -51,6 +51,13 @@ bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
     return true;
   }
   if (t.is("average")) return false;   // an average of normals needs a normal_map: refused by name
+  if (t.is("image_map")) fail_at(t, "image_map can only be used in a pigment (as in POV-Ray)");
+  if (t.is("bump_map")) {
+    parse_bump_map(t, n);
+    n.kind = NormalKind::bump_map;
+    n.has_type = true;
+    return true;
+  }
   if (try_pattern(t, n.pattern)) {
     n.kind = NormalKind::pattern;
     n.has_type = true;
@@ -111,12 +118,27 @@ bool Interpreter::try_normal_modifier(const Token& t, Normal& n) {
 Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'normal'");
+  return parse_normal_contents(keyword, start);
+}
+
+// The inside of normal { … } up to its '}'. `uv_mapping NORMAL_BODY`: the rest of the block is a normal (from the
+// #default one) evaluated at the hit's <u, v, 0> (POV-Ray's UV_MAP_PATTERN in Parse_Pattern).
+Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& start) {
   Normal n = start;
   n.loc = keyword.loc;
   Token t = next();
   if (const Value* v = lookup(t); v && std::holds_alternative<Boxed<Normal>>(*v)) {
     n = *std::get<Boxed<Normal>>(*v);
     t = next();
+  }
+  if (t.is("uv_mapping")) {
+    const NestingGuard guard(*this, t);   // `uv_mapping uv_mapping …` nests
+    auto inner = std::make_shared<const Normal>(parse_normal_contents(keyword, starting_normal(nullptr)));
+    n.kind = NormalKind::uv_mapping;
+    n.has_type = true;
+    n.unsupported = inner->unsupported;
+    n.uv_normal = std::move(inner);
+    return n;
   }
   if (try_normal_pattern(t, n)) {
     accept(",");

@@ -20,16 +20,26 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }  // namespace
 
 // A transform moves the object and what is attached to it (parser/description_transforms.cpp).
-void Interpreter::apply_transform(Object& object, const Matrix& m) { transform_object(object, m); }
+void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
+  transform_object(object, m, kind);
+}
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   Matrix m;
-  if (try_transform(t, m)) { apply_transform(object, m); return true; }
+  if (try_transform(t, m)) {
+    const TransformKind kind = t.is("translate") ? TransformKind::translate
+                               : t.is("scale")   ? TransformKind::scale
+                                                 : TransformKind::other;
+    apply_transform(object, m, kind);
+    return true;
+  }
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "texture") {
     auto tex = parse_texture_block(t);
     // Each texture statement links its layers on top of what the object already has, so consecutive blocks
-    // stack as layers; the last written is the top (§11, pipeline §2 "Layers").
+    // stack as layers; the last written is the top (§11, pipeline §2 "Layers"). Patterned textures take no part in
+    // layering (POV-Ray's Link_Textures).
+    refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
@@ -39,6 +49,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     }
     return true;
   }
+  if (k == "uv_mapping") {
+    if (object.texture) fail_at(t, "uv_mapping must be specified before texture (as in POV-Ray)");
+    object.uv_mapping = true;
+    return true;
+  }
+  if (k == "pigment" || k == "normal" || k == "finish") refuse_layering(t, object.texture.get(), false);
   if (k == "pigment") {
     TextureLayer& layer = own_top_layer(object, default_texture());
     layer.pigment = parse_pigment_block(t, layer.pigment);
@@ -79,7 +95,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
       "no_image", "no_reflection", "no_radiosity", "double_illuminate",
-      "sturm", "interior_texture", "uv_mapping", "photons", "radiosity", "split_union", "cutaway_textures",
+      "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {
@@ -87,6 +103,12 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
       return true;
     }
   return false;
+}
+
+// POV-Ray's Link_Textures: nothing is layered over a patterned texture, and a patterned texture over nothing else.
+void Interpreter::refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const {
+  if (existing && existing->patterned()) fail_at(t, "cannot layer over a patterned texture (as in POV-Ray)");
+  if (existing && adding_patterned) fail_at(t, "cannot layer a patterned texture over another (as in POV-Ray)");
 }
 
 // material { [M_id] texture{} interior{} transforms } (§9): a texture and an interior together.

@@ -104,20 +104,28 @@ std::vector<MapEntry> Interpreter::parse_list_entries(PatternKind kind, std::siz
   return entries;
 }
 
+void Interpreter::set_list_pattern(const Token& t, Pigment& p) {
+  const PatternKind kind = t.is("checker") ? PatternKind::checker
+                           : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
+  // A brick pigment edited with `brick` again keeps its size and mortar.
+  if (kind == PatternKind::brick && p.pattern != PatternKind::brick) {
+    p.brick_size = {8, 3, 4.5};
+    p.mortar = single(0.5 - 2 * kPovEpsilon);
+  }
+  p.pattern = kind;
+  p.frequency = 0.0;
+}
+
 bool Interpreter::try_pattern(const Token& t, Pigment& p) {
+  if (t.is("image_map")) {
+    parse_image_map(t, p);
+    return true;
+  }
   for (const auto& s : kSimplePatterns)
     if (t.is(s.keyword)) { p.pattern = s.kind; return true; }
   if (t.is("checker") || t.is("hexagon") || t.is("brick")) {
-    const PatternKind kind = t.is("checker") ? PatternKind::checker
-                             : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
-    // A brick pigment edited with `brick` again keeps its size and mortar.
-    if (kind == PatternKind::brick && p.pattern != PatternKind::brick) {
-      p.brick_size = {8, 3, 4.5};
-      p.mortar = single(0.5 - 2 * kPovEpsilon);
-    }
-    p.pattern = kind;
-    p.frequency = 0.0;
-    p.entries = parse_list_entries(kind, kind == PatternKind::hexagon ? 3 : 2);
+    set_list_pattern(t, p);
+    p.entries = parse_list_entries(p.pattern, p.pattern == PatternKind::hexagon ? 3 : 2);
     return true;
   }
   if (t.is("gradient")) {
@@ -148,7 +156,7 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
 
 void Interpreter::refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map) {
   if (p.unsupported) return;   // the pattern may be one povtrace skipped: its kind is unknown here
-  const bool solid = p.pattern == PatternKind::solid;
+  const bool solid = p.pattern == PatternKind::solid || p.pattern == PatternKind::image_map;
   const bool average = p.pattern == PatternKind::average;
   if (solid || is_list_pattern(p.pattern) || (average && !pigment_map))
     fail_at(t, "cannot use " + std::string(t.text) + " with this pattern type (as in POV-Ray)");
@@ -204,7 +212,7 @@ BlendMapValue Interpreter::parse_blend_map(const Token& keyword, bool weights_op
   Token t = next();
   if (const Value* v = lookup(t); v && std::holds_alternative<BlendMapValue>(*v)) {
     map = std::get<BlendMapValue>(*v);
-    if (map.pigments != keyword.is("pigment_map"))
+    if (map.textures || map.pigments != keyword.is("pigment_map"))
       fail_at(t, "this identifier is a " + value_type_name(*v) + ", not a " + std::string(keyword.text));
     expect("}", " after the map identifier");
     return map;
@@ -353,6 +361,18 @@ bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
   return false;
 }
 
+// `uv_mapping PIGMENT_BODY`: the rest of the block is a pigment (from the #default one) evaluated at the hit's
+// <u, v, 0> (POV-Ray's UV_MAP_PATTERN, Parse_Item_Into_Blend_List); what came before stays but has no effect.
+Pigment Interpreter::uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer) {
+  MapEntry e;
+  e.pigment = std::make_shared<const Pigment>(parse_pigment_contents(default_pigment(), loc, closer));
+  outer.pattern = PatternKind::uv_mapping;
+  outer.entries = {e};
+  outer.image.reset();
+  taint(outer.unsupported, e.pigment->unsupported);
+  return outer;
+}
+
 Pigment Interpreter::default_pigment() const { return default_texture().layers.back().pigment; }
 
 // The inside of `pigment { … }` or of a pigment_map entry `[v …]`, up to `closer`: an optional pigment
@@ -366,6 +386,10 @@ Pigment Interpreter::parse_pigment_contents(const Pigment& start, const SourceLo
     t = next();
   }
   while (!t.is(closer)) {
+    if (t.is("uv_mapping")) {
+      const NestingGuard guard(*this, t);   // `uv_mapping uv_mapping …` nests
+      return uv_mapped_pigment(p, loc, closer);
+    }
     if (try_pigment_item(t, p)) { t = next(); continue; }
     if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(p.unsupported, skip_unsupported(t, "the pigment item '" + std::string(t.text) + "'"));

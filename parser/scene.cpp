@@ -138,7 +138,11 @@ void Interpreter::parse_default(const Token& keyword) {
     TextureLayer& layer = default_texture_.layers.back();
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
-    else if (t.is("texture")) default_texture_ = *parse_texture_block(t);
+    else if (t.is("texture")) {
+      auto tex = parse_texture_block(t);
+      if (tex->patterned()) fail_unsupported(t, "a patterned #default texture");
+      default_texture_ = *tex;
+    }
     else if (t.is("normal")) {
       layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
       refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
@@ -181,6 +185,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
       Token more = next();
       auto top = parse_texture_block(more);
+      refuse_layering(more, tex.get(), top->patterned());
       auto layered = std::make_shared<Texture>(*tex);
       for (const auto& l : top->layers) layered->layers.push_back(l);
       tex = std::move(layered);
@@ -191,6 +196,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
   if (k == "normal") return Value(parse_normal_block(first, starting_normal(nullptr)));
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
+  if (k == "texture_map") return Value(parse_texture_map(first, false));
   if (k == "interior") return Value(parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
   if (k == "sky_sphere") return Value(parse_sky_sphere(first));
@@ -299,7 +305,10 @@ void Interpreter::post_process(Object& object) {
   }
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
     for (auto& child : csg->children) {
-      if (!child.texture) child.texture = object.texture;
+      if (!child.texture) {   // the uv_mapping flag goes with the texture (POV-Ray's Post_Process)
+        child.texture = object.texture;
+        child.uv_mapping = child.uv_mapping || object.uv_mapping;
+      }
       if (!child.interior) child.interior = object.interior;
       if (!child.hollow) child.hollow = object.hollow;   // hollow reaches the children that did not set it
       if (object.no_shadow) child.no_shadow = true;
@@ -323,10 +332,19 @@ void Interpreter::post_process(Object& object) {
 
 namespace {
 // POV-Ray's Post_Tnormal: a normal that reaches an object without a pattern is the error "No normal type given".
+const Normal* untyped_normal(const Normal& n) {
+  if (n.uv_normal) return untyped_normal(*n.uv_normal);
+  return !n.has_type && !n.unsupported ? &n : nullptr;
+}
+
 const Normal* untyped_normal(const Texture* texture) {
-  if (texture)
-    for (const TextureLayer& layer : texture->layers)
-      if (layer.normal && !layer.normal->has_type && !layer.normal->unsupported) return layer.normal.get();
+  if (!texture) return nullptr;
+  for (const TextureLayer& layer : texture->layers)
+    if (layer.normal)
+      if (const Normal* n = untyped_normal(*layer.normal)) return n;
+  if (texture->pattern)   // the textures of a patterned texture
+    for (const TextureMapEntry& e : texture->pattern->entries)
+      if (const Normal* n = untyped_normal(e.texture.get())) return n;
   return nullptr;
 }
 

@@ -30,7 +30,9 @@ struct Namer {
   std::string operator()(const std::shared_ptr<UserFile>&) const { return "file"; }
   std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "function"; }
   std::string operator()(const SkySphere&) const { return "sky_sphere"; }
-  std::string operator()(const BlendMapValue& m) const { return m.pigments ? "pigment_map" : "color_map"; }
+  std::string operator()(const BlendMapValue& m) const {
+    return m.textures ? "texture_map" : m.pigments ? "pigment_map" : "color_map";
+  }
   std::string operator()(const Normal&) const { return "normal"; }
 };
 }  // namespace

@@ -15,6 +15,13 @@ template <class T> const T* identifier_value(const Value* v) {
 
 void transform_pigment(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
 
+bool uses_uv_mapping(const Pigment& p) {
+  if (p.pattern == PatternKind::uv_mapping) return true;
+  for (const auto& e : p.entries)
+    if (e.pigment && uses_uv_mapping(*e.pigment)) return true;
+  return false;
+}
+
 // A texture's transforms move every layer's pigment and normal (POV-Ray's Transform_Textures).
 void transform_layer(TextureLayer& l, const Matrix& m) {
   transform_pigment(l.pigment, m);
@@ -200,6 +207,10 @@ SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
     Matrix m;
     if (t.is("pigment")) {
       sky.pigments.push_back(parse_pigment_block(t, Pigment{}));
+      // A miss has no surface and no uv: POV-Ray stops the render there ("The 'uv_mapping' pattern cannot be used
+      // as part of a pigment function!").
+      if (uses_uv_mapping(sky.pigments.back()))
+        fail_at(t, "the 'uv_mapping' pattern cannot be used in a sky_sphere (there is no surface to take uv from)");
       taint(sky.unsupported, sky.pigments.back().unsupported);
     } else if (t.is("emission")) {
       const Colour c = parse_colour();
@@ -363,39 +374,46 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
   return in;
 }
 
-// texture { [T_id] pigment{} finish{} transforms }. A declared pigment/finish starts from the current #default
-// (§4 #default).
+// texture { … } (POV-Ray's Parse_Texture).
 std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
   expect("{", " after 'texture'");
+  return parse_texture_contents(keyword.loc, "}");
+}
+
+// The inside of texture { … } or of a texture_map entry [v …], up to `closer`: [T_id] then pigment{} normal{}
+// finish{} transforms (a plain texture, editing the id's top layer or a copy of the #default texture); or, with
+// no id and nothing of these first, a patterned texture (texture_patterns.cpp). A declared pigment/finish starts
+// from the current #default (§4 #default).
+std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceLoc& loc, std::string_view closer) {
   Texture tex;
-  tex.loc = keyword.loc;
+  tex.loc = loc;
   Token t = next();
-  if (const Value* v = lookup(t)) {
-    if (std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
-      const auto declared = std::get<std::shared_ptr<const Texture>>(*v);
-      t = next();
-      // `texture { T }` unchanged shares the declared texture: textures are immutable once built, and scenes
-      // that place thousands of objects with a few textures must not copy them.
-      if (t.is("}")) return declared;
-      tex = *declared;
-    }
+  bool edited = false;   // POV-Ray's Modified_Pnf: a texture id or a pigment/normal/finish/transform was read
+  if (const Value* v = lookup(t); v && std::holds_alternative<std::shared_ptr<const Texture>>(*v)) {
+    const auto declared = std::get<std::shared_ptr<const Texture>>(*v);
+    t = next();
+    // `texture { T }` unchanged shares the declared texture: textures are immutable once built, and scenes
+    // that place thousands of objects with a few textures must not copy them.
+    if (t.is(closer)) return declared;
+    if (declared->patterned()) return transformed_patterned_texture(*declared, t, closer);
+    tex = *declared;
+    edited = true;
   }
   if (tex.layers.empty()) tex.layers.push_back(default_texture().layers.front());
   TextureLayer& layer = tex.layers.back();
-  while (!t.is("}")) {
+  for (; !t.is(closer); t = next(), edited = true) {
     Matrix m;
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
     else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
-    else if (try_transform(t, m)) {
+    else if (try_transform(t, m))
       for (auto& l : tex.layers) transform_layer(l, m);
-    } else if (t.is("normal")) {
+    else if (t.is("normal"))
       layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
-    } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
+    else if (!edited && starts_texture_pattern(t)) return parse_patterned_texture(t, loc, closer);
+    else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(tex.unsupported, skip_unsupported(t, "the texture item '" + std::string(t.text) + "'"));
-    } else {
-      fail_expected(t, "pigment, normal, finish, a transform or '}' in texture { }");
-    }
-    t = next();
+    else fail_expected(t, "pigment, normal, finish, a transform or '" + std::string(closer) + "' in texture { }");
   }
   for (const auto& l : tex.layers) {
     taint(tex.unsupported, l.pigment.unsupported);

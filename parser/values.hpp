@@ -69,10 +69,12 @@ struct OpaqueValue {
   UnsupportedFeature feature;
 };
 
-// A declared color_map or pigment_map (`#declare M = color_map { … }`), used as `color_map { M }`.
+// A declared color_map, pigment_map or texture_map (`#declare M = color_map { … }`), used as `color_map { M }`.
 struct BlendMapValue {
   bool pigments = false;   // pigment_map
+  bool textures = false;   // texture_map: the entries are in `texture_entries`
   std::vector<MapEntry> entries;
+  std::vector<TextureMapEntry> texture_entries;
 };
 
 // A large value held behind a shared pointer and immutable once made, so that a Value stays small: the symbol

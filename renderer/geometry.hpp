@@ -2,6 +2,7 @@
 // structure over them. Built once from the SceneDescription; immutable while rendering (STYLE.md (a) step 4).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -87,6 +88,11 @@ struct MaterialBlend {
   int count = 1;
 };
 MaterialBlend materials_at(const SurfaceHit& hit);
+
+// The uv coordinates of a hit for uv_mapping (POV-Ray's UVCoord, shapes/uv_coordinates.cpp): spheres, boxes, tori
+// and meshes have their own; every other shape gives the world point's x and y, divided by `scene_scale` (the factor a
+// rescaled twin of the scene was made with, renderer/scene_scale.hpp), so that they are the scene's own.
+std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, double scene_scale = 1.0);
 
 // Scratch list of hits. Shapes with many roots (CSG, meshes) append to one, so that a ray allocates only while a
 // thread's buffer is still growing.

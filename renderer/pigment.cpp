@@ -46,32 +46,33 @@ Colour lerp(const Colour& a, const Colour& b, double f) {
           a.t + f * (b.t - a.t)};
 }
 
-Colour entry_colour(const RenderPigment& pigment, const RenderMapEntry& e, Vec3 pattern_point) {
-  return e.child < 0 ? e.colour : evaluate_pigment(pigment.children[static_cast<std::size_t>(e.child)], pattern_point);
+// A map entry's colour: its own, or its pigment's at the pattern point (found as that pigment reports).
+Colour entry_colour(const RenderPigment& pigment, const RenderMapEntry& e, const TexturePoint& at, bool& found) {
+  if (e.child < 0) {
+    found = true;
+    return e.colour;
+  }
+  bool child_found = false;
+  const Colour c = evaluate_pigment(pigment.children[static_cast<std::size_t>(e.child)], at, &child_found);
+  found = found || child_found;
+  return c;
 }
 
-// The two entries around `value`: at or above the last entry, the last alone; otherwise the first entry not below
-// the value and the one before it (the same entry when the value equals an entry's or lies below the first).
-Colour blend(const RenderPigment& pigment, double value, Vec3 pattern_point) {
-  const auto& map = pigment.map;
-  std::size_t cur = 0;
-  if (value >= map.back().value) cur = map.size() - 1;
-  else
-    while (value > map[cur].value) ++cur;
-  const std::size_t prev = (cur == 0 || value == map[cur].value || value >= map.back().value) ? cur : cur - 1;
-  const Colour c = entry_colour(pigment, map[cur], pattern_point);
-  if (prev == cur) return c;
-  const Colour before = entry_colour(pigment, map[prev], pattern_point);
-  const double fraction = (value - map[prev].value) / (map[cur].value - map[prev].value);
-  return lerp(before, c, fraction);
+Colour blend(const RenderPigment& pigment, double value, const TexturePoint& at, bool& found) {
+  const MapChoice m = choose_entries(pigment.map, value);
+  const Colour c = entry_colour(pigment, pigment.map[m.cur], at, found);
+  if (m.prev == m.cur) return c;
+  const Colour before = entry_colour(pigment, pigment.map[m.prev], at, found);
+  return lerp(before, c, m.fraction);
 }
 
 // average: the map's pigments weighted by their values (Do_Average_Pigments).
-Colour average(const RenderPigment& pigment, Vec3 pattern_point) {
+Colour average(const RenderPigment& pigment, const TexturePoint& at) {
   Colour sum{};
   double total = 0.0;
+  bool found = false;
   for (const auto& e : pigment.map) {
-    const Colour c = entry_colour(pigment, e, pattern_point);
+    const Colour c = entry_colour(pigment, e, at, found);
     sum = {sum.r + c.r * e.value, sum.g + c.g * e.value, sum.b + c.b * e.value, sum.f + c.f * e.value,
            sum.t + c.t * e.value};
     total += e.value;
@@ -80,12 +81,22 @@ Colour average(const RenderPigment& pigment, Vec3 pattern_point) {
 }
 }  // namespace
 
-Colour evaluate_pigment(const RenderPigment& pigment, Vec3 world_point) {
+Colour evaluate_pigment(const RenderPigment& pigment, const TexturePoint& at, bool* found) {
+  bool dummy = false;
+  bool& ok = found ? *found : dummy;
+  ok = true;
   if (pigment.pattern == PatternKind::solid) return pigment.colour;
-  const Vec3 p = to_pattern_space(pigment, world_point);
+  // uv_mapping: the one pigment at the hit's <u, v, 0>, unwarped (Compute_Pigment UV_MAP_PATTERN).
+  // It always counts as found, even over an image map used once.
+  if (pigment.pattern == PatternKind::uv_mapping)
+    return evaluate_pigment(pigment.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v));
+  const TexturePoint p(to_pattern_space(pigment, at.point), at.u, at.v);
+  if (pigment.pattern == PatternKind::image_map)
+    return image_map_colour(*pigment.image->image, pigment.image->mapping, p.point, ok);
   if (pigment.pattern == PatternKind::average) return average(pigment, p);
-  const double value = apply_wave(pattern_value(pigment.params, p), pigment.wave);
-  return blend(pigment, value, p);
+  ok = false;
+  const double value = apply_wave(pattern_value(pigment.params, p.point), pigment.wave);
+  return blend(pigment, value, p, ok);
 }
 
 }  // namespace povtrace::render

@@ -15,28 +15,20 @@
 
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/pattern/render_pigment.hpp"
+#include "renderer/pattern/render_texture.hpp"
 
 namespace povtrace::render {
 
 namespace {
-Material make_material(const Texture& texture, const std::optional<Interior>& interior) {
+Material make_material(const Texture& texture, const std::optional<Interior>& interior, bool uv_mapping,
+                       ImageCache& images) {
   Material m;
   m.interior = interior.value_or(Interior{});
-  m.opaque = false;
-  for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) {
-    RenderLayer layer;
-    layer.pigment = build_render_pigment(it->pigment);
-    layer.finish = it->finish;
-    if (it->normal) layer.normal = build_render_normal(*it->normal);
-    layer.specular_exponent = 1.0 / it->finish.roughness;
-    layer.has_highlights = it->finish.phong != 0.0 || it->finish.specular != 0.0;
-    const auto nonzero = [](const Colour& c) { return c.r != 0 || c.g != 0 || c.b != 0; };
-    layer.reflects = nonzero(it->finish.reflection_min) || nonzero(it->finish.reflection_max);
-    layer.reflection_exponent_inverse = 1.0 / it->finish.reflection_exponent;
-    // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3).
-    if (!pigment_has_transparency(it->pigment)) m.opaque = true;
-    m.layers.push_back(layer);
-  }
+  m.texture = build_render_texture(texture, images);
+  // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3).
+  m.opaque = texture_is_opaque(m.texture);
+  m.uv_mapping = uv_mapping;
+  m.needs_uv = uv_mapping || texture_reads_uv(m.texture);
   return m;
 }
 
@@ -130,26 +122,32 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
 // Objects sharing one texture (and no interior of their own) share one material.
 class MaterialTable {
  public:
-  explicit MaterialTable(std::vector<Material>& materials) : materials_(materials) {}
+  MaterialTable(std::vector<Material>& materials, ImageCache& images) : materials_(materials), images_(images) {}
   std::uint32_t material_for(const Object& o) {
-    auto found = o.interior ? shared_.end() : shared_.find(o.texture.get());
+    const Key key{o.texture.get(), o.uv_mapping};
+    auto found = o.interior ? shared_.end() : shared_.find(key);
     if (found != shared_.end()) return found->second;
-    materials_.push_back(make_material(*o.texture, o.interior));
+    materials_.push_back(make_material(*o.texture, o.interior, o.uv_mapping, images_));
     const auto index = static_cast<std::uint32_t>(materials_.size() - 1);
-    if (!o.interior) shared_.emplace(o.texture.get(), index);
+    if (!o.interior) shared_.emplace(key, index);
     return index;
   }
   // A mesh placement's own textures, as consecutive materials (the index of the first is returned).
-  std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures,
-                       const std::optional<Interior>& interior) {
+  std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures, const Object& o) {
     const auto first = static_cast<std::uint32_t>(materials_.size());
-    for (const auto& t : textures) materials_.push_back(make_material(*t, interior));
+    for (const auto& t : textures) materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_));
     return first;
   }
 
  private:
+  // A texture placed with and without uv_mapping makes two materials.
+  using Key = std::pair<const Texture*, bool>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const { return std::hash<const Texture*>()(k.first) ^ (k.second ? 1u : 0u); }
+  };
   std::vector<Material>& materials_;
-  std::unordered_map<const Texture*, std::uint32_t> shared_;
+  ImageCache& images_;
+  std::unordered_map<Key, std::uint32_t, KeyHash> shared_;
 };
 
 // A union is its children: every intersection of every child is kept (§10), which is what placing the
@@ -172,7 +170,7 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
   }
   add_primitives(o, materials.material_for(o), object_index, out);
   if (const auto* mesh = std::get_if<Mesh>(&o.shape))
-    out.back().element_materials = materials.append(mesh->textures, o.interior);
+    out.back().element_materials = materials.append(mesh->textures, o);
 }
 }  // namespace
 
@@ -191,7 +189,8 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   RenderScene r;
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
-  MaterialTable materials(r.materials);
+  ImageCache images;
+  MaterialTable materials(r.materials, images);
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
   if (!options.povray_tolerances) {
@@ -234,7 +233,7 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     r.background_colour = Colour{bg.r * (1.0 - bg.t), bg.g * (1.0 - bg.t), bg.b * (1.0 - bg.t), 0, 0};
   if (scene.sky_sphere) {
     for (const Pigment& p : scene.sky_sphere->pigments) {
-      r.sky_pigments.push_back(build_render_pigment(p));
+      r.sky_pigments.push_back(build_render_pigment(p, &images));
       set_generator(r.sky_pigments.back(), generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
     }
     r.sky_emission = rgb_of(scene.sky_sphere->emission);

@@ -11,6 +11,7 @@
 #include "parser/description.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/interior_list.hpp"
+#include "renderer/pattern/image_map.hpp"
 #include "renderer/pattern/pattern.hpp"
 
 namespace povtrace::render {
@@ -20,6 +21,16 @@ using Rgb = Vec3;
 inline Rgb rgb_of(const Colour& c) { return {c.r, c.g, c.b}; }
 // POV-Ray's intensity weights (pipeline notation grey()).
 inline double grey(const Rgb& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
+// Where a texture is evaluated: the point (the world point, or the hit's <u, v, 0> on a uv-mapped object, or the
+// point a patterned texture passes down to its textures) and the hit's uv coordinates, which `uv_mapping`
+// pigments, normals and textures read.
+struct TexturePoint {
+  TexturePoint() = default;
+  explicit TexturePoint(Vec3 p, double u_ = 0, double v_ = 0) : point(p), u(u_), v(v_) {}
+  Vec3 point;
+  double u = 0, v = 0;
+};
 
 // One step from the pigment's outer space toward pattern space: an inverse transform, then (if any) a turbulence
 // displacement. Built from the pigment's transforms and warps in POV-Ray's order of application (pigment.cpp).
@@ -37,6 +48,24 @@ struct RenderMapEntry {
   int child = -1;
 };
 
+// The entries a pattern value falls between (POV-Ray's Search_Blend_Map): at or above the last entry the last
+// alone; otherwise the first entry not below the value (`cur`) and the one before it (`prev`; the same entry when
+// the value equals an entry's or lies below the first), `fraction` of the way from prev to cur.
+struct MapChoice {
+  std::size_t prev = 0, cur = 0;
+  double fraction = 0;
+};
+template <class Entry>   // any entry type with a `value`; the map is not empty
+MapChoice choose_entries(const std::vector<Entry>& map, double value) {
+  std::size_t cur = 0;
+  if (value >= map.back().value) cur = map.size() - 1;
+  else
+    while (value > map[cur].value) ++cur;
+  const std::size_t prev = (cur == 0 || value == map[cur].value || value >= map.back().value) ? cur : cur - 1;
+  const double fraction = prev == cur ? 0.0 : (value - map[prev].value) / (map[cur].value - map[prev].value);
+  return MapChoice{prev, cur, fraction};
+}
+
 struct RenderPigment {
   PatternKind pattern = PatternKind::solid;
   Colour colour;
@@ -45,7 +74,8 @@ struct RenderPigment {
   std::vector<PatternStep> steps;        // world → pattern space, in order
   bool classic_turbulence_warps = false; // the classic turbulence displaces the point (not marble or wood)
   std::vector<RenderMapEntry> map;       // the written map or the pattern's built-in one; never empty for patterns
-  std::vector<RenderPigment> children;   // pigment_map / pigment list entries
+  std::vector<RenderPigment> children;   // pigment_map / pigment list entries; uv_mapping: its one pigment
+  std::shared_ptr<const RenderImageMap> image;   // image_map
 };
 
 // A layer's normal perturbation (POV-Ray's Perturb_Normal, pattern/normal_perturbation.cpp). `pattern` carries the
@@ -60,6 +90,9 @@ struct RenderNormal {
   double accuracy = 0.02;
   bool no_bump_scale = false;
   std::vector<SlopeEntry> slope_map;
+  std::shared_ptr<const RenderImageMap> bump;    // bump_map
+  bool use_index = false;                        // bump_map: heights from palette indices
+  std::shared_ptr<RenderNormal> uv_normal;       // uv_mapping: this normal at the hit's <u, v, 0>
 };
 
 // The wave sources that ripples and waves sum over (POV-Ray's Initialize_Waves, number_of_waves of them).
@@ -78,10 +111,26 @@ struct RenderLayer {
   double reflection_exponent_inverse = 1;   // POV-Ray raises the reflected colour to 1/exponent
 };
 
+// A texture ready for shading (POV-Ray's TEXTURE): plain layers, or a pattern choosing or blending whole textures,
+// each of them evaluated at this pattern's pattern-space point (Trace::ComputeOneTextureColour).
+struct RenderTexture {
+  double value = 0;                      // its entry value in the enclosing pattern's map
+  std::vector<RenderLayer> layers;       // plain: top layer first (the last one written in the scene)
+  RenderPigment pattern;                 // patterned: the pattern (checker, …, average, uv_mapping) and its steps
+  std::vector<RenderTexture> children;   // patterned: the entries, ascending
+  // The pattern's transforms composed: layer normals below are taken through them (POV-Ray's Warp_Normal over
+  // the patterned textures passed on the way down).
+  bool warps_normals = false;
+  Matrix world_from_pattern, pattern_from_world;
+  bool patterned() const { return !children.empty(); }
+};
+
 struct Material {
-  std::vector<RenderLayer> layers;   // top layer first (the last one written in the scene)
+  RenderTexture texture;
   Interior interior;
   bool opaque = true;                // blocks shadow rays outright (pipeline §3 "opaque" flag)
+  bool uv_mapping = false;           // the object's uv_mapping: textures at the hit's <u, v, 0>
+  bool needs_uv = false;             // uv coordinates are read somewhere (uv_mapping of any kind)
 };
 
 struct RenderLight {

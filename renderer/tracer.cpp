@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "renderer/pattern/normal_perturbation.hpp"
+#include "renderer/pattern/pattern.hpp"
 
 namespace povtrace::render {
 
@@ -155,27 +156,104 @@ double speckle_random(Vec3 p, std::size_t light) {
 }
 }  // namespace
 
+namespace {
+Radiance mix(const Radiance& a, double wa, const Radiance& b, double wb) {
+  return {a.colour * wa + b.colour * wb, a.transmit * wa + b.transmit * wb};
+}
+
+// The texture point with the hit's uv coordinates when the material reads them.
+TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv, double scene_scale) {
+  if (!uv) return TexturePoint(point);
+  const auto [u, v] = uv_coordinates(hit, point, scene_scale);
+  return TexturePoint(point, u, v);
+}
+
+// Where a material's textures are evaluated: the hit's <u, v, 0> on a uv-mapped object (POV-Ray's UV_FLAG).
+TexturePoint material_point(const Material& m, const TexturePoint& at) {
+  return m.uv_mapping ? TexturePoint({at.u, at.v, 0.0}, at.u, at.v) : at;
+}
+}  // namespace
+
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
   const MaterialBlend blend = materials_at(hit);
-  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], level, weight, state);
+  const Vec3 point = ray.origin + ray.direction * hit.t;
+  bool uv = false;
+  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
+  const TexturePoint at = texture_point(hit, point, uv, scene_.scale);
+  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], at, level, weight, state);
   // A mesh triangle with a texture_list: each texture shaded whole, the results blended by their weights; weights
   // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
   Radiance out;
   for (int k = 0; k < blend.count; ++k) {
     if (blend.weight[k] < scene_.settings.adc_bailout) continue;
-    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], level, weight, state);
+    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], at, level, weight, state);
     out.colour += r.colour * blend.weight[k];
     out.transmit += r.transmit * blend.weight[k];
   }
   return out;
 }
 
-Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level,
-                                double weight, const RayState& state) {
+Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material,
+                                const TexturePoint& at, int level, double weight, const RayState& state) {
   const Vec3 point = ray.origin + ray.direction * hit.t;
   const Vec3 geometric = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
+  const ShadingPoint sp{hit, point, raw_normal, warps_.size()};
+  return shade_texture(ray, sp, material.texture, material_point(material, at), level, weight, state);
+}
+
+// A patterned texture shades the texture(s) its pattern picks at the pattern-space point, every one of them whole,
+// and blends the results (POV-Ray's ComputeOneTextureColour); `average` weighs all of them, `uv_mapping` shades
+// its one texture at the hit's <u, v, 0>. Layer normals below are taken through the pattern's transforms.
+Radiance Tracer::shade_texture(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
+                               const TexturePoint& at, int level, double weight, const RayState& state) {
+  if (!texture.patterned()) return shade_layers(ray, sp, texture, at, level, weight, state);
+  warps_.push_back(&texture);
+  Radiance out;
+  const RenderPigment& pattern = texture.pattern;
+  if (pattern.pattern == PatternKind::uv_mapping) {
+    out = shade_texture(ray, sp, texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v), level,
+                        weight, state);
+  } else {
+    const TexturePoint p(to_pattern_space(pattern, at.point), at.u, at.v);
+    if (pattern.pattern == PatternKind::average) {
+      double total = 0;
+      for (const RenderTexture& c : texture.children) {
+        out = mix(out, 1.0, shade_texture(ray, sp, c, p, level, weight, state), c.value);
+        total += c.value;
+      }
+      out = mix(out, 1.0 / total, Radiance{}, 0.0);
+    } else {
+      const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
+      const MapChoice m = choose_entries(texture.children, value);
+      out = shade_texture(ray, sp, texture.children[m.cur], p, level, weight, state);
+      if (m.prev != m.cur)
+        out = mix(out, m.fraction, shade_texture(ray, sp, texture.children[m.prev], p, level, weight, state),
+                  1.0 - m.fraction);
+    }
+  }
+  warps_.pop_back();
+  return out;
+}
+
+// A layer's normal: through the transforms of the patterned textures above (outermost first), bent by the layer's
+// normal, and back (POV-Ray's Warp_Normal, Perturb_Normal, UnWarp_Normal in ComputeLightedTexture).
+Vec3 Tracer::layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const {
+  Vec3 n = sp.raw_normal;
+  for (std::size_t i = sp.warps_from; i < warps_.size(); ++i)
+    if (warps_[i]->warps_normals) n = normalize(warps_[i]->world_from_pattern.normal_from_inverse(normalize(n)));
+  n = perturb_normal(normal, n, at, scene_.wave_sources);
+  for (std::size_t i = warps_.size(); i-- > sp.warps_from;)
+    if (warps_[i]->warps_normals) n = normalize(warps_[i]->pattern_from_world.normal_from_inverse(normalize(n)));
+  return n;
+}
+
+Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
+                              const TexturePoint& at, int level, double weight, const RayState& state) {
+  const Vec3 point = sp.point;
+  const Vec3 raw_normal = sp.raw_normal;
+  const SurfaceHit& hit = sp.hit;
   const InteriorRef self = interior_of(hit);
 
   // Layers top first; each is weighted by what the layers above let through (§2 "Layers"). Their reflections are
@@ -185,13 +263,13 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
   double trans = 1.0;
   const std::size_t first_reflection = reflections_.size();
   Vec3 top_normal = raw_normal;   // the top layer's normal: refraction and TIR use it (§4)
-  for (const RenderLayer& layer : material.layers) {
+  for (const RenderLayer& layer : texture.layers) {
     if (trans <= scene_.settings.adc_bailout) break;
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
-    const Vec3 normal = layer.normal ? perturb_normal(*layer.normal, raw_normal, point, scene_.wave_sources)
-                                     : raw_normal;
-    if (&layer == &material.layers.front()) top_normal = normal;
-    const Colour s = evaluate_pigment(layer.pigment, point);
+    const Vec3 normal = layer.normal ? layer_normal(*layer.normal, sp, at) : raw_normal;
+    if (&layer == &texture.layers.front()) top_normal = normal;
+    bool found = true;   // false only off an image map used once: the layer then filters nothing
+    const Colour s = evaluate_pigment(layer.pigment, at, &found);
     if (layer.reflects) {
       const double c = -dot(ray.direction, normal);
       double w = weight * trans;
@@ -206,11 +284,13 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
     const Rgb lit = model_ == ShadingModel::povray ? lit_layer_povray(layer, s, point, normal, ray.direction, state)
                                                    : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
     out.colour += mul(lit, filter);
-    filter = mul(filter, pass_through(s));
-    // conserve_energy: what the layer reflects is no longer transmitted (§2 "Layers").
-    if (layer.reflects && layer.finish.conserve_energy) {
-      const Rgb a = reflections_.back().amount;
-      filter = mul(filter, Rgb{std::min(1.0, 1.0 - a.x), std::min(1.0, 1.0 - a.y), std::min(1.0, 1.0 - a.z)});
+    if (found) {
+      filter = mul(filter, pass_through(s));
+      // conserve_energy: what the layer reflects is no longer transmitted (§2 "Layers").
+      if (layer.reflects && layer.finish.conserve_energy) {
+        const Rgb a = reflections_.back().amount;
+        filter = mul(filter, Rgb{std::min(1.0, 1.0 - a.x), std::min(1.0, 1.0 - a.y), std::min(1.0, 1.0 - a.z)});
+      }
     }
     trans = std::min(1.0, std::fabs(grey(filter)));
   }
@@ -368,20 +448,52 @@ bool Tracer::cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Ve
 }
 
 // A transparent object filters at every surface crossing, through all its layers (§3); a texture_list triangle by the
-// weighted sum of its textures' filters (an opaque texture among them passes nothing).
+// weighted sum of its textures' filters (an opaque texture among them passes nothing); a patterned texture by the
+// filters of the textures its pattern picks, blended as their colours would be.
 Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque) {
   const MaterialBlend blend = materials_at(hit);
   opaque = blend.count == 1 && scene_.materials[blend.material[0]].opaque;
   if (opaque) return {0, 0, 0};
+  bool uv = false;
+  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
+  const TexturePoint point = texture_point(hit, at, uv, scene_.scale);
   Rgb through{0, 0, 0};
   for (int k = 0; k < blend.count; ++k) {
     const Material& m = scene_.materials[blend.material[k]];
     if (m.opaque) continue;
-    Rgb layers{1, 1, 1};
-    for (const RenderLayer& layer : m.layers) layers = mul(layers, pass_through(evaluate_pigment(layer.pigment, at)));
-    through += layers * blend.weight[k];
+    through += texture_filter(m.texture, material_point(m, point)) * blend.weight[k];
   }
   return through;
+}
+
+Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at) const {
+  if (!texture.patterned()) {
+    Rgb layers{1, 1, 1};
+    for (const RenderLayer& layer : texture.layers) {
+      bool found = true;
+      const Colour s = evaluate_pigment(layer.pigment, at, &found);
+      if (found) layers = mul(layers, pass_through(s));
+    }
+    return layers;
+  }
+  const RenderPigment& pattern = texture.pattern;
+  if (pattern.pattern == PatternKind::uv_mapping)
+    return texture_filter(texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v));
+  const TexturePoint p(to_pattern_space(pattern, at.point), at.u, at.v);
+  if (pattern.pattern == PatternKind::average) {
+    Rgb sum{0, 0, 0};
+    double total = 0;
+    for (const RenderTexture& c : texture.children) {
+      sum += texture_filter(c, p) * c.value;
+      total += c.value;
+    }
+    return sum / total;
+  }
+  const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
+  const MapChoice m = choose_entries(texture.children, value);
+  const Rgb cur = texture_filter(texture.children[m.cur], p);
+  if (m.prev == m.cur) return cur;
+  return cur * m.fraction + texture_filter(texture.children[m.prev], p) * (1.0 - m.fraction);
 }
 
 // POV-Ray walks a shadow ray from crossing to crossing (trace.cpp TracePointLightShadowRay): after a transparent

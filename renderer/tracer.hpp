@@ -55,8 +55,22 @@ class Tracer {
 
   Radiance trace(const Ray& ray, int level, double weight, const RayState& state);
   Radiance shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state);
-  Radiance shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, int level, double weight,
-                          const RayState& state);
+  // What every texture shading the same hit shares.
+  struct ShadingPoint {
+    const SurfaceHit& hit;
+    Vec3 point;        // the world point
+    Vec3 raw_normal;   // the surface normal facing the ray
+    std::size_t warps_from = 0;   // this hit's patterned textures start here in warps_ (rays traced from a layer
+                                  // push their own above them)
+  };
+  Radiance shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material, const TexturePoint& at,
+                          int level, double weight, const RayState& state);
+  Radiance shade_texture(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
+                         int level, double weight, const RayState& state);
+  Radiance shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
+                        int level, double weight, const RayState& state);
+  Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
+  Rgb texture_filter(const RenderTexture& texture, const TexturePoint& at) const;
   // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
   // (S·f + t), or for a texture_list triangle the weighted sum over its textures; `opaque` when it stops it.
   Rgb filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque);
@@ -97,11 +111,16 @@ class Tracer {
   ShadingModel model_;
   RayCounts counts_;
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
+  std::vector<const RenderTexture*> warps_;       // the patterned textures above the one being shaded
   std::vector<Rgb> area_grid_;                    // area light samples of the point being shaded
 };
 
-// Pigment colour at a world point (pattern evaluated in the pigment's own space).
-Colour evaluate_pigment(const RenderPigment& pigment, Vec3 world_point);
+// Pigment colour at a point (pattern evaluated in the pigment's own space). `found` (when given) is false where
+// only image maps used `once` were met off their image (POV-Ray's Compute_Pigment result).
+Colour evaluate_pigment(const RenderPigment& pigment, const TexturePoint& at, bool* found = nullptr);
+inline Colour evaluate_pigment(const RenderPigment& pigment, Vec3 point) {
+  return evaluate_pigment(pigment, TexturePoint(point));
+}
 // The point in the pigment's pattern space: its transforms and warps in POV-Ray's order (Warp_EPoint).
 Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 world_point);
 

@@ -14,38 +14,17 @@
 #include <vector>
 
 #include "renderer/image/display_encode.hpp"
+#include "renderer/image/png_common.hpp"
 
 namespace povtrace::image {
 namespace {
+
+using namespace png_detail;
 
 namespace fs = std::filesystem;
 
 constexpr png_fixed_point srgb_file_gamma = 45455;  // gAMA value for the sRGB curve, ×100000
 constexpr std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 1 GiB of floats: refuse larger files
-
-// Where libpng's error callback leaves its message before jumping back.
-struct PngErrorText {
-  char text[256] = "unknown libpng error";
-};
-
-void on_png_error(png_structp png, png_const_charp message) {
-  auto* error = static_cast<PngErrorText*>(png_get_error_ptr(png));
-  std::snprintf(error->text, sizeof error->text, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}  // warnings (e.g. unknown chunks) are not failures
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
-
-FilePtr open_file(const fs::path& file, const char* mode) {
-  FilePtr f(std::fopen(file.c_str(), mode));
-  if (!f) throw ImageError(std::string("cannot open the file: ") + std::strerror(errno));
-  return f;
-}
 
 // ---- writing -------------------------------------------------------------------------------------------------
 
@@ -104,24 +83,6 @@ std::vector<png_bytep> row_pointers(std::vector<png_byte>& bytes, std::size_t he
 }
 
 // ---- reading -------------------------------------------------------------------------------------------------
-
-struct PngReader {
-  PngErrorText error;
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-
-  PngReader() {
-    png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
-    if (png != nullptr) info = png_create_info_struct(png);
-    if (info == nullptr) {
-      png_destroy_read_struct(&png, nullptr, nullptr);
-      throw ImageError("libpng: out of memory");
-    }
-  }
-  ~PngReader() { png_destroy_read_struct(&png, &info, nullptr); }
-  PngReader(const PngReader&) = delete;
-  PngReader& operator=(const PngReader&) = delete;
-};
 
 // Reads the header and asks libpng for 8- or 16-bit RGB(A) rows whatever the file's layout.
 bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "renderer/pattern/image_map.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"
 
@@ -68,6 +69,8 @@ Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& 
     case NormalKind::wrinkles: return wrinkles(p) * n.amount;
     case NormalKind::ripples: return ripples(n, p, waves, false);
     case NormalKind::waves: return ripples(n, p, waves, true);
+    case NormalKind::bump_map:
+    case NormalKind::uv_mapping: break;   // perturb_normal handles them
   }
   return {0, 0, 0};
 }
@@ -97,9 +100,17 @@ double slope_value(const RenderNormal& n, Vec3 p) {
   return slope_map(n.slope_map, apply_wave(pattern_value(n.pattern.params, p), n.pattern.wave));
 }
 
-RenderNormal build_render_normal(const Normal& normal) {
+RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
   RenderNormal r;
   r.kind = normal.kind;
+  if (normal.kind == NormalKind::uv_mapping) {
+    r.uv_normal = std::make_shared<RenderNormal>(build_render_normal(*normal.uv_normal, images));
+    return r;
+  }
+  if (normal.kind == NormalKind::bump_map) {
+    r.bump = build_render_image(*normal.pattern.image, images);
+    r.use_index = normal.pattern.image->use_index;
+  }
   Pigment carrier = normal.pattern;
   // The normal-only patterns evaluate no pattern of their own; the carrier only moves the point (as a pattern
   // with a value would: POV-Ray applies the classic turbulence to every pattern but marble and wood).
@@ -120,16 +131,68 @@ RenderNormal build_render_normal(const Normal& normal) {
   return r;
 }
 
+void set_normal_generator(RenderNormal& normal, NoiseGenerator generator) {
+  set_generator(normal.pattern, generator);
+  if (normal.uv_normal) set_normal_generator(*normal.uv_normal, generator);
+}
+
 // Warp_Normal, the perturbation, UnWarp_Normal: without no_bump_scale the normal is unit length in pattern space
-// when bent and is normalised again on the way back, so scaling a normal scales its bumps with it.
-Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, Vec3 world_point, const std::vector<WaveSource>& waves) {
+// when bent and is normalised again on the way back, so scaling a normal scales its bumps with it. A uv-mapped
+// normal is its own normal at the hit's <u, v, 0>, normalised.
+Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
+  if (n.uv_normal)
+    return normalize(perturb_normal(*n.uv_normal, normal, TexturePoint({at.u, at.v, 0.0}, at.u, at.v), waves));
   const bool keep = n.no_bump_scale;
   Vec3 v = normalized_unless(keep, normal);
   if (n.transformed) v = normalized_unless(keep, n.world_from_pattern.normal_from_inverse(v));
-  v += displacement(n, to_pattern_space(n.pattern, world_point), waves);
+  const Vec3 p = to_pattern_space(n.pattern, at.point);
+  if (n.bump) v = bump_map_normal(*n.bump, n.use_index, n.amount, p, v);
+  else v += displacement(n, p, waves);
   v = normalized_unless(keep, v);
   if (n.transformed) v = n.pattern_from_world.normal_from_inverse(v);
   return normalize(v);
+}
+
+Vec3 bump_map_normal(const RenderImageMap& map, bool use_index, double amount, Vec3 pattern_point, Vec3 normal) {
+  const MapImage& image = *map.image;
+  const ImageMapping& m = map.mapping;
+  const auto at = image_position(m, pattern_point);
+  if (!at) return normal;
+  double x = (*at)[0], y = (*at)[1];
+  int index[3];
+  Texel c[3];
+  c[0] = image_colour_at(image, m, x, y, &index[0]);
+  // One pixel left and up, then one right of that, each wrapped back into the image once.
+  x -= 1.0;
+  y += 1.0;
+  if (x < 0.0) x += m.columns;
+  else if (x >= m.columns) x -= m.columns;
+  if (y < 0.0) y += m.rows;
+  else if (y >= m.rows) y -= m.rows;
+  c[1] = image_colour_at(image, m, x, y, &index[1]);
+  x += 2.0;
+  if (x < 0.0) x += m.columns;
+  else if (x >= m.columns) x -= m.columns;
+  c[2] = image_colour_at(image, m, x, y, &index[2]);
+  const bool grey = !use_index || index[0] == -1 || index[1] == -1 || index[2] == -1;
+  double h[3];
+  for (int k = 0; k < 3; ++k)
+    h[k] = amount * (grey ? static_cast<double>(static_cast<float>(0.297 * c[k].r + 0.589 * c[k].g + 0.114 * c[k].b))
+                          : static_cast<double>(index[k]));
+  const Vec3 p1{0, h[0], 0}, p2{-1, h[1], 1}, p3{1, h[2], 1};
+  const Vec3 bump = normalize(cross(p3 - p2, p1 - p2));
+  // The frame around the normal: x across it and y, z completing it (POV-Ray's choice for a normal along y).
+  Vec3 yprime = normal;
+  Vec3 xprime = cross(yprime, Vec3{0, 1, 0});
+  double len = length(xprime);
+  if (len < tolerance::epsilon) {
+    yprime = std::fabs(normal.y - 1.0) < tolerance::epsilon ? Vec3{0, 1, 0} : Vec3{0, -1, 0};
+    xprime = {1, 0, 0};
+    len = 1.0;
+  }
+  xprime = xprime / len;
+  const Vec3 zprime = normalize(cross(xprime, yprime));
+  return xprime * bump.x + yprime * bump.y - zprime * bump.z;
 }
 
 std::vector<WaveSource> make_wave_sources(int count) {

@@ -77,7 +77,9 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
     case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
     case PatternKind::solid:
-    case PatternKind::average: break;   // no pattern value: evaluate_pigment handles them
+    case PatternKind::average:
+    case PatternKind::image_map:
+    case PatternKind::uv_mapping: break;   // no pattern value: evaluate_pigment handles them
   }
   return 0.0;
 }

@@ -1,6 +1,7 @@
 #include "renderer/pattern/render_pigment.hpp"
 
 #include "renderer/pattern/default_maps.hpp"
+#include "renderer/pattern/render_texture.hpp"
 
 namespace povtrace::render {
 
@@ -31,29 +32,42 @@ std::vector<PatternStep> steps_of(const Pigment& p) {
   return steps;
 }
 
-void add_map(RenderPigment& r, const std::vector<MapEntry>& entries) {
+void add_map(RenderPigment& r, const std::vector<MapEntry>& entries, ImageCache* images) {
   for (const auto& e : entries) {
     RenderMapEntry m{e.value, e.colour, -1};
     if (e.pigment) {
       m.child = static_cast<int>(r.children.size());
-      r.children.push_back(build_render_pigment(*e.pigment));
+      r.children.push_back(build_render_pigment(*e.pigment, images));
     }
     r.map.push_back(m);
   }
 }
 
+
 }  // namespace
+
+std::shared_ptr<const RenderImageMap> build_render_image(const ImageMap& map, ImageCache* images) {
+  auto r = std::make_shared<RenderImageMap>();
+  r->image = images ? images->load(map) : load_map_image(map);
+  r->mapping = image_mapping(map, *r->image);
+  r->opaque = !(map.once || map.has_filter || r->image->transparent);
+  return r;
+}
 
 void set_generator(RenderPigment& r, NoiseGenerator generator) {
   r.params.noise_generator = generator;
   for (auto& c : r.children) set_generator(c, generator);
 }
 
-RenderPigment build_render_pigment(const Pigment& p) {
+RenderPigment build_render_pigment(const Pigment& p, ImageCache* images) {
   RenderPigment r;
   r.pattern = p.pattern;
   r.colour = p.colour;
   if (p.pattern == PatternKind::solid) return r;
+  if (p.pattern == PatternKind::uv_mapping) {   // its one pigment, at the hit's uv (no transforms of its own)
+    r.children.push_back(build_render_pigment(*p.entries.front().pigment, images));
+    return r;
+  }
   r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected};
   r.params.frequency = p.frequency;
@@ -63,24 +77,24 @@ RenderPigment build_render_pigment(const Pigment& p) {
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
   r.classic_turbulence_warps =
       p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
-  add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries);
+  if (p.pattern == PatternKind::image_map) r.image = build_render_image(*p.image, images);
+  else add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries, images);
   return r;
 }
 
-bool pigment_has_transparency(const Pigment& p) {
+bool pigment_has_transparency(const RenderPigment& p) {
   auto clear = [](const Colour& c) { return c.f != 0.0 || c.t != 0.0; };
   if (clear(p.colour)) return true;
-  for (const auto& e : p.entries)
-    if (e.pigment ? pigment_has_transparency(*e.pigment) : clear(e.colour)) return true;
+  if (p.image && !p.image->opaque) return true;
+  for (const auto& e : p.map)
+    if (e.child < 0 && clear(e.colour)) return true;
+  for (const auto& c : p.children)
+    if (pigment_has_transparency(c)) return true;
   return false;
 }
 
 void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator) {
-  for (auto& m : materials)
-    for (auto& layer : m.layers) {
-      set_generator(layer.pigment, generator);
-      if (layer.normal) set_generator(layer.normal->pattern, generator);
-    }
+  for (auto& m : materials) set_texture_generator(m.texture, generator);
 }
 
 }  // namespace povtrace::render

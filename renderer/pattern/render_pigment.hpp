@@ -8,11 +8,16 @@
 
 namespace povtrace::render {
 
-RenderPigment build_render_pigment(const Pigment& pigment);
+// Image maps read their file through `images` (one decoding per file and settings) or, without one, on their own.
+RenderPigment build_render_pigment(const Pigment& pigment, ImageCache* images = nullptr);
+
+// An image map (or bump map) ready for lookups; read through `images` when given.
+std::shared_ptr<const RenderImageMap> build_render_image(const ImageMap& map, ImageCache* images);
 
 // Whether any colour the pigment can produce has filter or transmit (POV-Ray's Post_Pigment HAS_FILTER): its own
-// colour, its map's colours and its child pigments.
-bool pigment_has_transparency(const Pigment& pigment);
+// colour, its map's colours, its child pigments, and image maps used once, with a filter/transmit item or with
+// clear pixels.
+bool pigment_has_transparency(const RenderPigment& pigment);
 
 // The noise generator of the scene (POV-Ray: 1 before #version 3.5, 2 from then on) for every pigment.
 void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator);

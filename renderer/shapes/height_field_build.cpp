@@ -16,7 +16,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "parser/source.hpp"
+#include "renderer/located_error.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
@@ -26,22 +26,7 @@ namespace povtrace::render {
 namespace {
 constexpr double hfield_offset = 0.001;   // hfield.cpp HFIELD_OFFSET
 
-// A located error at the image's name in the scene, with that source line when the file can still be read.
-[[noreturn]] void fail_at(const SourceLoc& at, const std::string& message) {
-  std::string line;
-  try {
-    const std::string text = read_text_file(at.file_name());
-    std::size_t begin = 0;
-    for (int n = 1; n < at.line && begin != std::string::npos; ++n) {
-      begin = text.find('\n', begin);
-      if (begin != std::string::npos) ++begin;
-    }
-    if (begin != std::string::npos) line = text.substr(begin, text.find('\n', begin) - begin);
-  } catch (const std::exception&) {
-    // the message alone, without the line
-  }
-  throw ParseError(at, message, line);
-}
+[[noreturn]] void fail_at(const SourceLoc& at, const std::string& message) { fail_at_scene(at, message); }
 
 struct PngKind {
   int bit_depth = 0;

@@ -59,7 +59,7 @@ TEST(Finish, DefaultsMatchVerifiedPixel) {
 TEST(Finish, DefaultPigmentIsBlack) {
   // §2: default pigment rgb 0 → an untextured lit plane renders 0.
   SceneDescription s = finish_scene(Colour{}, Finish{});
-  s.objects[0].texture = std::make_shared<const Texture>(Texture{{TextureLayer{}}, {}, {}});
+  s.objects[0].texture = std::make_shared<const Texture>(Texture{{TextureLayer{}}, {}, {}, {}});
   EXPECT_RGB_REL(trace_xy(s, 0.5, 0.5).colour, 0.0, 0.0, 0.0);
 }
 

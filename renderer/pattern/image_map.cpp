@@ -1,0 +1,213 @@
+#include "renderer/pattern/image_map.hpp"
+
+#include <cmath>
+
+namespace povtrace::render {
+
+namespace {
+constexpr double kEpsilon = 1e-10;   // POV-Ray's EPSILON, added to every image position (map_pos)
+constexpr double kTwoPi = 2.0 * M_PI;
+
+// POV-Ray's wrap(): val modulo limit in [0, limit), fmod's negative results moved up, a rounded-up limit to 0.
+double wrap(double value, double limit) {
+  double r = std::fmod(value, limit);
+  if (r < 0.0) r += limit;
+  if (r >= limit) r = 0.0;
+  return r;
+}
+
+// The angle of (x, z) from +x towards +z, in [0, 2π) (the mappers' acos form, exact on the axes).
+double angle_around_y(double x, double z, double len) {
+  if (z == 0.0) return x > 0 ? 0.0 : M_PI;
+  const double theta = std::acos(x / len);
+  return z < 0.0 ? kTwoPi - theta : theta;
+}
+
+bool planar(const ImageMapping& m, Vec3 p, double& u, double& v) {
+  if (m.once && (p.x < 0.0 || p.x > 1.0)) return false;
+  u = std::fmod(p.x * m.width, m.width);
+  if (m.once && (p.y < 0.0 || p.y > 1.0)) return false;
+  v = std::fmod(p.y * m.height, m.height);
+  return true;
+}
+
+bool spherical(const ImageMapping& m, Vec3 p, double& u, double& v) {
+  const double len = length(p);
+  if (len == 0.0) return false;
+  const Vec3 d = p / len;
+  const double phi = 0.5 + std::asin(d.y) / M_PI;
+  const double flat = std::sqrt(d.x * d.x + d.z * d.z);
+  const double theta = flat == 0.0 ? 0.0 : angle_around_y(d.x, d.z, flat) / kTwoPi;
+  u = theta * m.width;
+  v = phi * m.height;
+  return true;
+}
+
+bool cylindrical(const ImageMapping& m, Vec3 p, double& u, double& v) {
+  if (m.once && (p.y < 0.0 || p.y > 1.0)) return false;
+  v = std::fmod(p.y * m.height, m.height);
+  const double len = length(p);
+  if (len == 0.0) return false;
+  const double x = p.x / len, z = p.z / len;
+  const double flat = std::sqrt(x * x + z * z);
+  if (flat == 0.0) return false;
+  u = angle_around_y(x, z, flat) / kTwoPi * m.width;
+  return true;
+}
+
+bool torus(const ImageMapping& m, Vec3 p, double& u, double& v) {
+  constexpr double kMajorRadius = 1.0;   // POV-Ray's image gradient x
+  const double len = std::sqrt(p.x * p.x + p.z * p.z);
+  if (len == 0.0) return false;
+  const double theta = -angle_around_y(p.x, p.z, len);
+  const double x = len - kMajorRadius;
+  const double tube = std::sqrt(x * x + p.y * p.y);
+  double phi = std::acos(-x / tube);
+  if (p.y > 0.0) phi = kTwoPi - phi;
+  u = -(theta / kTwoPi) * m.width;
+  v = phi / kTwoPi * m.height;
+  return true;
+}
+
+// no_interpolation: the pixel at an integer-valued position, clamped to the edge with `once`, else wrapped; its
+// palette index (−1 for other images).
+const Texel& pixel(const MapImage& image, const ImageMapping& m, double x, double y, int& index) {
+  int ix = 0, iy = 0;
+  if (m.once) {
+    ix = x < 0.0 ? 0 : x >= m.columns ? m.columns - 1 : static_cast<int>(x);
+    iy = y < 0.0 ? 0 : y >= m.rows ? m.rows - 1 : static_cast<int>(y);
+  } else {
+    ix = static_cast<int>(wrap(x, m.columns));
+    iy = static_cast<int>(wrap(y, m.rows));
+  }
+  index = image.indexed ? image.index_at(ix, iy) : -1;
+  return image.at(ix, iy);
+}
+
+struct Sum {
+  double r = 0, g = 0, b = 0, f = 0, t = 0, index = 0;
+  void add(const Texel& c, int i, double w) {
+    r += c.r * w;
+    g += c.g * w;
+    b += c.b * w;
+    f += c.f * w;
+    t += c.t * w;
+    index += i * w;
+  }
+  Texel single() const {
+    return {static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), static_cast<float>(f),
+            static_cast<float>(t)};
+  }
+};
+
+void add_pixel(Sum& s, const MapImage& image, const ImageMapping& m, double x, double y, double w) {
+  int index = -1;
+  const Texel& t = pixel(image, m, x, y, index);
+  s.add(t, index, w);
+}
+
+// Interp: the pixels at (ix, iy), (ix−1, iy), (ix, iy−1), (ix−1, iy−1) around the shifted position.
+Sum four_pixels(const MapImage& image, const ImageMapping& m, double x, double y) {
+  x += 0.5;
+  y += 0.5;
+  const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+  const double p = x - ix, q = y - iy;
+  double w[4];
+  if (m.interpolate == 2) {
+    w[0] = p * q;
+    w[1] = (1 - p) * q;
+    w[2] = p * (1 - q);
+    w[3] = (1 - p) * (1 - q);
+  } else {   // normalised distance
+    const double inv[4] = {1.0 / ((1 - p) * (1 - p) + (1 - q) * (1 - q)), 1.0 / (p * p + (1 - q) * (1 - q)),
+                           1.0 / ((1 - p) * (1 - p) + q * q), 1.0 / (p * p + q * q)};
+    const double total = inv[0] + inv[1] + inv[2] + inv[3];
+    for (int i = 0; i < 4; ++i) w[i] = inv[i] / total;
+  }
+  Sum s;
+  add_pixel(s, image, m, ix, iy, w[0]);
+  add_pixel(s, image, m, ix - 1.0, iy, w[1]);
+  add_pixel(s, image, m, ix, iy - 1.0, w[2]);
+  add_pixel(s, image, m, ix - 1.0, iy - 1.0, w[3]);
+  return s;
+}
+
+void cubic_weights(double x, double w[4]) {
+  const double p = x - static_cast<int>(x), q = 1 - p;
+  w[0] = -0.5 * p * q * q;
+  w[1] = 0.5 * q * (q * (3 * p + 1) + 1);
+  w[2] = 0.5 * p * (p * (3 * q + 1) + 1);
+  w[3] = -0.5 * q * p * p;
+}
+
+Sum sixteen_pixels(const MapImage& image, const ImageMapping& m, double x, double y) {
+  x += 0.5;
+  y += 0.5;
+  const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+  double wx[4], wy[4];
+  cubic_weights(x, wx);
+  cubic_weights(y, wy);
+  Sum s;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) add_pixel(s, image, m, ix + i - 2.0, iy + j - 2.0, wx[i] * wy[j]);
+  return s;
+}
+}  // namespace
+
+ImageMapping image_mapping(const ImageMap& map, const MapImage& image) {
+  ImageMapping m;
+  m.map_type = map.map_type;
+  m.interpolate = map.interpolate;
+  m.once = map.once;
+  m.columns = image.width;
+  m.rows = image.height;
+  m.width = static_cast<float>(image.width * map.repeat_u);
+  m.height = static_cast<float>(image.height * map.repeat_v);
+  m.offset_u = map.offset_u * -static_cast<double>(image.width);
+  m.offset_v = map.offset_v * -static_cast<double>(image.height);
+  return m;
+}
+
+std::optional<std::array<double, 2>> image_position(const ImageMapping& m, Vec3 p) {
+  double u = 0, v = 0;
+  bool on = false;
+  switch (m.map_type) {
+    case 1: on = spherical(m, p, u, v); break;
+    case 2: on = cylindrical(m, p, u, v); break;
+    case 5: on = torus(m, p, u, v); break;
+    default: on = planar(m, p, u, v); break;
+  }
+  if (!on) return std::nullopt;
+  u += m.offset_u + kEpsilon;
+  v += m.offset_v + kEpsilon;
+  if (m.once && (u >= m.columns || v >= m.rows || u < 0.0 || v < 0.0)) return std::nullopt;
+  // Rows count from the image's top, v upwards: v is negated.
+  return std::array<double, 2>{wrap(u, m.columns), wrap(-v, m.rows)};
+}
+
+Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row, int* index) {
+  Sum s;
+  switch (m.interpolate) {
+    case 2:
+    case 4: s = four_pixels(image, m, column, row); break;
+    case 3: s = sixteen_pixels(image, m, column, row); break;
+    default: {
+      int i = -1;
+      const Texel& t = pixel(image, m, column, row, i);
+      if (index) *index = i;
+      return t;
+    }
+  }
+  if (index) *index = static_cast<int>(s.index);
+  return s.single();
+}
+
+Colour image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p, bool& found) {
+  const auto at = image_position(m, p);
+  found = at.has_value();
+  if (!found) return Colour{1, 1, 1, 0, 1};
+  const Texel c = image_colour_at(image, m, (*at)[0], (*at)[1]);
+  return Colour{c.r, c.g, c.b, c.f, c.t};
+}
+
+}  // namespace povtrace::render

@@ -1,0 +1,87 @@
+#include "renderer/pattern/render_texture.hpp"
+
+#include "renderer/pattern/normal_perturbation.hpp"
+#include "renderer/pattern/render_pigment.hpp"
+
+namespace povtrace::render {
+
+namespace {
+RenderLayer build_layer(const TextureLayer& l, ImageCache& images) {
+  RenderLayer layer;
+  layer.pigment = build_render_pigment(l.pigment, &images);
+  layer.finish = l.finish;
+  if (l.normal) layer.normal = build_render_normal(*l.normal, &images);
+  layer.specular_exponent = 1.0 / l.finish.roughness;
+  layer.has_highlights = l.finish.phong != 0.0 || l.finish.specular != 0.0;
+  const auto nonzero = [](const Colour& c) { return c.r != 0 || c.g != 0 || c.b != 0; };
+  layer.reflects = nonzero(l.finish.reflection_min) || nonzero(l.finish.reflection_max);
+  layer.reflection_exponent_inverse = 1.0 / l.finish.reflection_exponent;
+  return layer;
+}
+
+bool pigment_reads_uv(const RenderPigment& p) {
+  if (p.pattern == PatternKind::uv_mapping) return true;
+  for (const auto& c : p.children)
+    if (pigment_reads_uv(c)) return true;
+  return false;
+}
+
+bool normal_reads_uv(const RenderNormal& n) { return n.uv_normal != nullptr; }
+}  // namespace
+
+RenderTexture build_render_texture(const Texture& texture, ImageCache& images) {
+  RenderTexture r;
+  if (!texture.patterned()) {
+    for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) r.layers.push_back(build_layer(*it, images));
+    return r;
+  }
+  const TexturePattern& pattern = *texture.pattern;
+  // The pattern as a pigment without colours; uv_mapping has no value of its own, only transforms that move the
+  // layer normals below it.
+  Pigment carrier = pattern.pattern;
+  carrier.entries.clear();
+  const PatternKind kind = carrier.pattern;
+  if (kind == PatternKind::uv_mapping) carrier.pattern = PatternKind::bozo;
+  r.pattern = build_render_pigment(carrier, &images);
+  r.pattern.pattern = kind;
+  r.pattern.map.clear();
+  r.pattern.children.clear();
+  Matrix pattern_from_world;
+  for (const PatternStep& s : r.pattern.steps)
+    if (s.transformed) pattern_from_world = pattern_from_world * s.pattern_from_world;
+  r.warps_normals = !(pattern_from_world == Matrix::identity());
+  r.pattern_from_world = pattern_from_world;
+  r.world_from_pattern = pattern_from_world.inverse();
+  for (const TextureMapEntry& e : pattern.entries) {
+    r.children.push_back(build_render_texture(*e.texture, images));
+    r.children.back().value = e.value;
+  }
+  return r;
+}
+
+bool texture_is_opaque(const RenderTexture& texture) {
+  if (texture.patterned()) return false;
+  for (const RenderLayer& l : texture.layers)
+    if (!pigment_has_transparency(l.pigment)) return true;
+  return false;
+}
+
+bool texture_reads_uv(const RenderTexture& texture) {
+  if (texture.patterned() && texture.pattern.pattern == PatternKind::uv_mapping) return true;
+  for (const RenderLayer& l : texture.layers)
+    if (pigment_reads_uv(l.pigment) || (l.normal && normal_reads_uv(*l.normal))) return true;
+  for (const RenderTexture& c : texture.children)
+    if (texture_reads_uv(c)) return true;
+  return false;
+}
+
+void set_texture_generator(RenderTexture& texture, NoiseGenerator generator) {
+  set_generator(texture.pattern, generator);
+  for (RenderLayer& l : texture.layers) {
+    set_generator(l.pigment, generator);
+    if (l.normal) set_normal_generator(*l.normal, generator);
+  }
+  for (RenderTexture& c : texture.children) set_texture_generator(c, generator);
+}
+
+}  // namespace povtrace::render

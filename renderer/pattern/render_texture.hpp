@@ -1,0 +1,22 @@
+// Builds the render-ready texture (RenderTexture, render_scene.hpp) from a described one: plain layers, or a
+// patterned texture's pattern and its textures.
+#pragma once
+
+#include "parser/description.hpp"
+#include "renderer/render_scene.hpp"
+
+namespace povtrace::render {
+
+RenderTexture build_render_texture(const Texture& texture, ImageCache& images);
+
+// POV-Ray's Test_Opacity: some layer of a plain texture has a pigment without filter or transmit anywhere. A
+// patterned texture is never opaque (its textures are looked at point by point).
+bool texture_is_opaque(const RenderTexture& texture);
+
+// Whether shading the texture reads the hit's uv coordinates (a uv_mapping pigment, normal or texture in it).
+bool texture_reads_uv(const RenderTexture& texture);
+
+// The scene's noise generator for every pigment and normal pattern of the texture.
+void set_texture_generator(RenderTexture& texture, NoiseGenerator generator);
+
+}  // namespace povtrace::render

@@ -1,0 +1,101 @@
+// uv coordinates of a hit for uv_mapping, as POV-Ray 3.7 computes them (source/backend/shape/spheres.cpp
+// Sphere::UVCoord, boxes.cpp Box::UVCoord, torus.cpp Torus::CalcUV, mesh.cpp Mesh::UVCoord; scene/objects.cpp
+// ObjectBase::UVCoord for every other shape):
+// - sphere: in the sphere's own space (every transform undone), u the angle from +x towards +z over 2π, v the
+//   latitude 0.5 + asin(y)/π; at the poles (x² + z² ≤ 1e-10) u is 0.
+// - box: the point normalised to the box ([0, 1] per axis); each face gets its own region of a 4 × 3 cube layout
+//   (−x: u = z/4, v = 1/3 + y/3; +x: u = 3/4 − z/4; −y: u = 1/4 + x/4, v = z/3; +y: v = 1 − z/3; −z: u = 1 − x/4;
+//   +z: u = 1/4 + x/4; the four side faces v = 1/3 + y/3).
+// - torus: u = 1 − (atan2(z, x) + π)/2π around y, v = (atan2(y, r − R) + π)/2π around the tube.
+// - mesh: the triangle's uv_vectors weighted by the point's barycentric coordinates (<0, 0> without uv_vectors).
+// - every other shape (plane, cylinder, cone, disc, triangle, polygon, …): the world point's x and y (in the scene's
+//   own units when povtrace renders a rescaled twin of it).
+#include <cmath>
+
+#include "renderer/geometry.hpp"
+#include "renderer/shapes/triangle_shapes.hpp"
+
+namespace povtrace::render {
+
+namespace {
+constexpr double kTwoPi = 2.0 * M_PI;
+
+Vec3 object_point(const Primitive& p, Vec3 world_point) {
+  return p.transformed ? p.object_from_world.point(world_point) : world_point;
+}
+
+std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
+  Vec3 d = object_point(p, world_point) - p.a;
+  const double len = length(d);
+  if (len == 0.0) return {0.0, 0.0};
+  d = d / len;
+  const double v = 0.5 + std::asin(d.y) / M_PI;
+  const double flat2 = d.x * d.x + d.z * d.z;
+  if (!(flat2 > tolerance::epsilon)) return {0.0, v};
+  const double flat = std::sqrt(flat2);
+  double theta = 0.0;
+  if (d.z == 0.0) theta = d.x > 0 ? 0.0 : M_PI;
+  else {
+    theta = std::acos(d.x / flat);
+    if (d.z < 0.0) theta = kTwoPi - theta;
+  }
+  return {theta / kTwoPi, v};
+}
+
+// The face the point lies on, as box_normal picks it: the nearest of the six planes (axis, and the high side).
+std::array<double, 2> box_uv(const Primitive& p, Vec3 world_point) {
+  const Vec3 q = object_point(p, world_point);
+  int axis = 0;
+  bool high = false;
+  double best = std::abs(q.x - p.a.x);
+  for (int k = 0; k < 3; ++k) {
+    if (const double d = std::abs(q[k] - p.a[k]); d < best) { best = d; axis = k; high = false; }
+    if (const double d = std::abs(q[k] - p.b[k]); d < best) { best = d; axis = k; high = true; }
+  }
+  const Vec3 diff = p.b - p.a;
+  const Vec3 n{(q.x - p.a.x) / diff.x, (q.y - p.a.y) / diff.y, (q.z - p.a.z) / diff.z};
+  const double side_v = 1.0 / 3.0 + n.y / 3.0;
+  switch (axis * 2 + (high ? 1 : 0)) {
+    case 0: return {n.z / 4.0, side_v};
+    case 1: return {3.0 / 4.0 - n.z / 4.0, side_v};
+    case 2: return {1.0 / 4.0 + n.x / 4.0, n.z / 3.0};
+    case 3: return {1.0 / 4.0 + n.x / 4.0, 3.0 / 3.0 - n.z / 3.0};
+    case 4: return {1.0 - n.x / 4.0, side_v};
+    default: return {1.0 / 4.0 + n.x / 4.0, side_v};
+  }
+}
+
+std::array<double, 2> torus_uv(const Primitive& p, Vec3 world_point) {
+  const Vec3 q = object_point(p, world_point);
+  const double u = 1.0 - (std::atan2(q.z, q.x) + M_PI) / kTwoPi;
+  const double r = std::sqrt(q.x * q.x + q.z * q.z) - p.a.x;   // p.a.x: the major radius
+  const double v = (std::atan2(q.y, r) + M_PI) / kTwoPi;
+  return {u, v};
+}
+
+std::array<double, 2> mesh_uv(const SurfaceHit& hit) {
+  const MeshData& data = *static_cast<const shapes::MeshShape&>(*hit.leaf->data).data;
+  if (data.face_uvs.empty()) return {0.0, 0.0};
+  const std::uint32_t* uv = &data.face_uvs[3 * std::size_t(hit.element)];
+  const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
+  std::array<double, 2> out{0.0, 0.0};
+  for (int k = 0; k < 3; ++k) {
+    out[0] += w[k] * data.uvs[2 * std::size_t(uv[k])];
+    out[1] += w[k] * data.uvs[2 * std::size_t(uv[k]) + 1];
+  }
+  return out;
+}
+}  // namespace
+
+std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, double scene_scale) {
+  const Primitive& p = *hit.leaf;
+  switch (p.type) {
+    case ShapeType::sphere: return sphere_uv(p, world_point);
+    case ShapeType::box: return box_uv(p, world_point);
+    case ShapeType::torus: return torus_uv(p, world_point);
+    case ShapeType::mesh: return mesh_uv(hit);
+    default: return {world_point.x / scene_scale, world_point.y / scene_scale};
+  }
+}
+
+}  // namespace povtrace::render
