@@ -7,12 +7,17 @@
 //   (−x: u = z/4, v = 1/3 + y/3; +x: u = 3/4 − z/4; −y: u = 1/4 + x/4, v = z/3; +y: v = 1 − z/3; −z: u = 1 − x/4;
 //   +z: u = 1/4 + x/4; the four side faces v = 1/3 + y/3).
 // - torus: u = 1 − (atan2(z, x) + π)/2π around y, v = (atan2(y, r − R) + π)/2π around the tube.
+// - lathe: u around y as the sphere's; v = (segment + w) / segments, at most 1.
+// - sor: u around y; v = segment / segments plus the height within the segment's ring over segments; base disc
+//   r/r_base − 1, cap disc 2 − r/r_cap.
 // - mesh: the triangle's uv_vectors weighted by the point's barycentric coordinates (<0, 0> without uv_vectors).
 // - every other shape (plane, cylinder, cone, disc, triangle, polygon, …): the world point's x and y (in the scene's
 //   own units when povtrace renders a rescaled twin of it).
+#include <algorithm>
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/sweep.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
 
 namespace povtrace::render {
@@ -24,14 +29,11 @@ Vec3 object_point(const Primitive& p, Vec3 world_point) {
   return p.transformed ? p.object_from_world.point(world_point) : world_point;
 }
 
-std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
-  Vec3 d = object_point(p, world_point) - p.a;
-  const double len = length(d);
-  if (len == 0.0) return {0.0, 0.0};
-  d = d / len;
-  const double v = 0.5 + std::asin(d.y) / M_PI;
+// The angle around y from +x toward +z as a fraction of a turn, 0 near the axis (POV-Ray's sphere, lathe and sor
+// UVCoord share this).
+double turn_around_y(Vec3 d) {
   const double flat2 = d.x * d.x + d.z * d.z;
-  if (!(flat2 > tolerance::epsilon)) return {0.0, v};
+  if (!(flat2 > tolerance::epsilon)) return 0.0;
   const double flat = std::sqrt(flat2);
   double theta = 0.0;
   if (d.z == 0.0) theta = d.x > 0 ? 0.0 : M_PI;
@@ -39,7 +41,37 @@ std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
     theta = std::acos(d.x / flat);
     if (d.z < 0.0) theta = kTwoPi - theta;
   }
-  return {theta / kTwoPi, v};
+  return theta / kTwoPi;
+}
+
+std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
+  Vec3 d = object_point(p, world_point) - p.a;
+  const double len = length(d);
+  if (len == 0.0) return {0.0, 0.0};
+  d = d / len;
+  const double v = 0.5 + std::asin(d.y) / M_PI;
+  return {turn_around_y(d), v};
+}
+
+// A lathe: u around y, v the segment index plus the segment parameter w, over the number of segments (at most 1).
+std::array<double, 2> lathe_uv(const SurfaceHit& hit, Vec3 world_point) {
+  const auto& d = static_cast<const LatheData&>(*hit.leaf->data);
+  const double v = (hit.u + double(hit.element)) / double(d.segments.size());
+  return {turn_around_y(object_point(*hit.leaf, world_point)), std::min(v, 1.0)};
+}
+
+// A sor: u around y; v the height within the segment's ring, over the number of segments; on the base disc it runs
+// from −1 at the axis to 0 at the rim, on the cap from 2 to 1 (POV-Ray's Sor::UVCoord).
+std::array<double, 2> sor_uv(const SurfaceHit& hit, Vec3 world_point) {
+  const auto& d = static_cast<const SorData&>(*hit.leaf->data);
+  const Vec3 q = object_point(*hit.leaf, world_point);
+  const double u = turn_around_y(q);
+  const double r = std::sqrt(q.x * q.x + q.z * q.z);
+  if (hit.element == base_element) return {u, r / std::sqrt(d.base_radius2) - 1.0};
+  if (hit.element == cap_element) return {u, 2.0 - r / std::sqrt(d.cap_radius2)};
+  const Ring& ring = d.rings[hit.element];
+  const double per_segment = 1.0 / double(d.segments.size());
+  return {u, (q.y - ring.h1) / (ring.h2 - ring.h1) * per_segment + double(hit.element) * per_segment};
 }
 
 // The face the point lies on, as box_normal picks it: the nearest of the six planes (axis, and the high side).
@@ -94,6 +126,8 @@ std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, do
     case ShapeType::box: return box_uv(p, world_point);
     case ShapeType::torus: return torus_uv(p, world_point);
     case ShapeType::mesh: return mesh_uv(hit);
+    case ShapeType::lathe: return lathe_uv(hit, world_point);
+    case ShapeType::sor: return sor_uv(hit, world_point);
     default: return {world_point.x / scene_scale, world_point.y / scene_scale};
   }
 }
