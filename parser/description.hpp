@@ -457,7 +457,7 @@ struct GlobalSettings {
   Colour ambient_light{1, 1, 1};
   int max_trace_level = 5;
   double adc_bailout = 1.0 / 255.0;
-  std::optional<int> noise_generator;    // 1 or 2; absent: 1 before #version 3.5, 2 from then on (as POV-Ray)
+  std::optional<int> noise_generator;    // 1, 2 or 3; absent: 1 before #version 3.5, 2 from then on (as POV-Ray)
 };
 
 struct SceneDescription {

@@ -100,9 +100,10 @@ void Interpreter::parse_global_settings(const Token& keyword) {
     } else if (k == "adc_bailout") {
       scene_.settings.adc_bailout = parse_float();
     } else if (k == "noise_generator") {
-      // 1 and 2 are povtrace's lattice noise with POV-Ray's two output ranges; 3 (Perlin's improved noise) is not.
-      const double g = parse_float();
-      if (g != 1 && g != 2) fail_unsupported(t, "the global setting 'noise_generator " + std::to_string(int(g)) + "'");
+      // 1 (original), 2 (range-corrected) or 3 (Perlin's); POV-Ray truncates the value and refuses the rest.
+      const Token value_at = peek();
+      const double g = std::trunc(parse_float());
+      if (!(g >= 1 && g <= 3)) fail_at(value_at, "Value for noise_generator in global_settings must be 1, 2, or 3.");
       scene_.settings.noise_generator = static_cast<int>(g);
     } else if (k == "charset") {
       // ascii or utf8 (sys is refused): how text { } turns strings into characters and picks a character map.

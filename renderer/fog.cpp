@@ -6,8 +6,7 @@
 //   1/(1 + h²) above it, h = (height − offset)/alt; a = exp(−width · mean density / distance), the mean from the
 //   integral atan(h) of the density between the ray's two ends.
 // - Turbulence thins the fog: width ·= 1 − exp(−width/distance) · min(1, turbulence(p) · turb_depth), p the middle of
-//   the ray (scaled per axis by the turbulence vector). Our noise is our own (POV-Ray's table is not copied), so
-//   turbulent fog matches in character, not pixel for pixel.
+//   the ray (scaled per axis by the turbulence vector), with POV-Ray's noise (pattern/noise.hpp).
 // - a is at least the fog colour's transmit. Over all fogs: what is behind is scaled by a·((1 − f) + f·colour), and
 //   (1 − a)·colour is added; the alpha transmit is scaled by the grey of that attenuation.
 #include <algorithm>

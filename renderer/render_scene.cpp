@@ -211,13 +211,13 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
       r.any_shadow_fade = true;
   }
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
-  use_noise_generator(r.materials, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
+  use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
   r.accelerator = Accelerator(std::move(primitives));
   constexpr int kNumberOfWaves = 10;   // POV-Ray's default number_of_waves
   r.wave_sources = make_wave_sources(kNumberOfWaves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
   r.fogs = scene.fogs;
-  r.noise_generator = generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected;
+  r.noise_generator = static_cast<NoiseGenerator>(generator);
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = make_render_camera(scene.camera);
   r.settings = scene.settings;

@@ -102,8 +102,11 @@ TEST(PigmentParse, Refusals) {
 TEST(PigmentParse, GlobalNoiseGenerator) {
   EXPECT_EQ(scene("global_settings { noise_generator 1 }\n").settings.noise_generator, 1);
   EXPECT_FALSE(scene("global_settings { }\n").settings.noise_generator);
-  EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 3 }\n")
-                .bare_message().find("unsupported: the global setting 'noise_generator 3'"), std::string::npos);
+  EXPECT_EQ(scene("global_settings { noise_generator 3.7 }\n").settings.noise_generator, 3);   // truncated
+  EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 4 }\n")
+                .bare_message().find("must be 1, 2, or 3"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nglobal_settings { noise_generator 0 }\n")
+                .bare_message().find("must be 1, 2, or 3"), std::string::npos);
 }
 
 TEST(PigmentParse, CrackleParameters) {

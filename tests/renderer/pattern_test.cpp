@@ -178,6 +178,34 @@ template <class F> Stats sample(F f) {
   return s;
 }
 
+// Values POV-Ray 3.7.0.10 printed for these points (f_noise_generator(x, y, z, g) and vturbulence(2, 0.5, 1, P),
+// which is DNoise, through #debug str(…, 0, 17)): povtrace's noise is POV-Ray's, not just alike.
+TEST(Noise, MatchesPovRayValuesAtSamplePoints) {
+  struct Sample {
+    Vec3 p;
+    double g1, g2, g3;
+    Vec3 d;
+  };
+  const Sample samples[] = {
+      {{0.3, 1.7, -2.2}, 0.52718639941302281, 0.52885147806171373, 0.67029632432102426,
+       {0.02718639941302282, 0.32095078329650184, 0.26787703338265589}},
+      {{-5.25, 0.125, 3.9}, 0.40779956304798592, 0.47036914143691277, 0.71898011874495094,
+       {-0.09220043695201410, -0.08201685601260381, 0.19847181430114144}},
+      {{123.456, -78.9, 0.001}, 0.40375002113701491, 0.46838544976348978, 0.78057414611131193,
+       {-0.09624997886298507, -0.08513222444496608, 0.32905526927836259}},
+      {{-0.5, -0.5, -0.5}, 0.59225963749999999, 0.56072798246486522, 0.34244873489114513,
+       {0.09225963750000002, -0.26860660624999999, -0.05210759999999999}}};
+  for (const Sample& s : samples) {
+    EXPECT_NEAR(noise(s.p, NoiseGenerator::original), s.g1, 1e-15);
+    EXPECT_NEAR(noise(s.p, NoiseGenerator::range_corrected), s.g2, 1e-15);
+    EXPECT_NEAR(noise(s.p, NoiseGenerator::perlin), s.g3, 1e-15);
+    const Vec3 d = vector_noise(s.p);
+    EXPECT_NEAR(d.x, s.d.x, 1e-15);
+    EXPECT_NEAR(d.y, s.d.y, 1e-15);
+    EXPECT_NEAR(d.z, s.d.z, 1e-15);
+  }
+}
+
 TEST(Noise, RangeCorrectedNoiseIsInZeroOneCentredOnAHalf) {
   const Stats s = sample([](Vec3 p) { return noise(p, NoiseGenerator::range_corrected); });
   EXPECT_GE(s.min, 0.0);

@@ -1,0 +1,7 @@
+// Tests the noise-based pigment patterns with noise_generator 1 (POV-Ray's original noise, clipped to [0, 1]): bozo, spotted, granite, marble, wood,
+// agate, bumps, dents, wrinkles, turbulence with octaves/omega/lambda, ripples and waves (whose wave sources come
+// from the vector noise). POV-Ray's noise is reproduced exactly, so these match its render pixel for pixel.
+#version 3.7;
+global_settings { assumed_gamma 1.0 noise_generator 1 }
+#include "noise_tiles.inc"
+NoisePigmentBoard()
