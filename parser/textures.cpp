@@ -402,6 +402,19 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceL
   }
   if (tex.layers.empty()) tex.layers.push_back(default_texture().layers.front());
   TextureLayer& layer = tex.layers.back();
+  // POV-Ray still takes `texture { P N F … }` with pigment, normal and finish identifiers written bare before
+  // anything else (old syntax), each replacing the layer's own; scenes before #version 1.5 get its warning.
+  for (;; t = next(), edited = true) {
+    const Value* v = t.kind == TokenKind::identifier ? lookup(t) : nullptr;
+    std::string kind;
+    if (v && std::holds_alternative<Boxed<Pigment>>(*v)) layer.pigment = *std::get<Boxed<Pigment>>(*v), kind = "pigment";
+    else if (v && std::holds_alternative<Boxed<Normal>>(*v))
+      layer.normal = std::make_shared<const Normal>(*std::get<Boxed<Normal>>(*v)), kind = "normal";
+    else if (v && std::holds_alternative<Boxed<Finish>>(*v)) layer.finish = *std::get<Boxed<Finish>>(*v), kind = "finish";
+    else break;
+    if (scene_.language_version < 150)
+      warn(t.loc, "Found '" + kind + " identifier' that should be in '" + kind + "' statement.");
+  }
   for (; !t.is(closer); t = next(), edited = true) {
     Matrix m;
     if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);

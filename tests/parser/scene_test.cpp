@@ -550,5 +550,29 @@ TEST(Scene, VersionGiven) {
 }
 
 }  // namespace
+// POV-Ray's old syntax `texture { P N F … }`: bare pigment, normal and finish identifiers before anything else
+// replace the layer's own; a pre-1.5 scene is warned, a 3.7 one is not.
+TEST(Textures, BarePigmentNormalAndFinishIdentifiers) {
+  const std::string declares =
+      "#declare P = pigment { rgb <0, 1, 0> }\n#declare N = normal { bumps 0.5 }\n"
+      "#declare F = finish { phong 0.7 }\n";
+  Messages messages;
+  const SceneDescription s =
+      parse("#version 3.7;\n" + declares + "sphere { 0, 1 texture { F P N scale 2 finish { diffuse 0.3 } } }\n",
+            &messages);
+  const TextureLayer& l = top_layer(s.objects.at(0));
+  expect_colour(l.pigment.colour, {0, 1, 0, 0, 0});
+  ASSERT_TRUE(l.normal);
+  EXPECT_EQ(l.normal->kind, NormalKind::bumps);
+  EXPECT_EQ(l.finish.phong, 0.7);
+  EXPECT_EQ(l.finish.diffuse, 0.3);   // the statements after the identifiers still edit the layer
+  EXPECT_EQ(messages.joined().find("should be in"), std::string::npos);
+  Messages old;
+  parse("#version 1.0;\n" + declares + "sphere { 0, 1 texture { P } }\n", &old);
+  EXPECT_NE(old.joined().find("Found 'pigment identifier' that should be in 'pigment' statement."), std::string::npos);
+  // After a pigment statement a bare identifier is an error, as in POV-Ray.
+  EXPECT_THROW(parse("#version 3.7;\n" + declares + "sphere { 0, 1 texture { pigment { P } F } }\n"), std::exception);
+}
+
 }  // namespace povtrace::test
 
