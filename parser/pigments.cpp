@@ -391,6 +391,13 @@ Pigment Interpreter::parse_pigment_contents(const Pigment& start, const SourceLo
       return uv_mapped_pigment(p, loc, closer);
     }
     if (try_pigment_item(t, p)) { t = next(); continue; }
+    if (t.is("quick_color") || t.is("quick_colour")) {
+      // POV-Ray shows the quick colour only in draft renders (+Q5 and below); povtrace always renders at full
+      // quality, where POV-Ray reads the colour and leaves it unused.
+      parse_colour();
+      t = next();
+      continue;
+    }
     if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(p.unsupported, skip_unsupported(t, "the pigment item '" + std::string(t.text) + "'"));
       t = next();

@@ -574,5 +574,15 @@ TEST(Textures, BarePigmentNormalAndFinishIdentifiers) {
   EXPECT_THROW(parse("#version 3.7;\n" + declares + "sphere { 0, 1 texture { pigment { P } F } }\n"), std::exception);
 }
 
+// quick_color is read and, at the full quality povtrace renders at, unused (POV-Ray uses it at +Q5 and below).
+TEST(Textures, QuickColourIsReadAndDoesNotChangeThePigment) {
+  const SceneDescription with = scene("sphere { 0, 1 pigment { rgb <0, 0, 1> quick_color rgb <1, 0, 0> } }\n");
+  const SceneDescription without = scene("sphere { 0, 1 pigment { rgb <0, 0, 1> } }\n");
+  expect_colour(top_layer(with.objects.at(0)).pigment.colour, {0, 0, 1, 0, 0});
+  EXPECT_FALSE(with.objects.at(0).texture->unsupported);
+  EXPECT_EQ(top_layer(with.objects.at(0)).pigment.pattern, top_layer(without.objects.at(0)).pigment.pattern);
+  EXPECT_THROW(scene("sphere { 0, 1 pigment { rgb 1 quick_colour } }\n"), std::exception);   // a colour must follow
+}
+
 }  // namespace povtrace::test
 
