@@ -98,8 +98,8 @@ enum class WaveType { ramp, triangle, sine, scallop, cubic, poly };
 struct Turbulence {
   Vec3 amount;
   int octaves = 6;         // clamped to 1..10 by the parser, as POV-Ray does
-  double omega = 0.5;
-  double lambda = 2.0;
+  float omega = 0.5f;      // single precision, as POV-Ray keeps them (TURB's SNGL Lambda, Omega): the octave
+  float lambda = 2.0f;     // sums then run in double from these rounded values
 };
 
 // `warp { turbulence … }` (POV-Ray's extra turbulence warp). `before` is the pattern transform written before

@@ -2,12 +2,12 @@
 // the extra parameters documented in functions.inc. The formulas are those POV-Ray 3.7 evaluates (its
 // source/backend/vm/fnintern.cpp was read for what each N computes), kept in the same order of operations so
 // that the values agree to the last bit — including its quirks (f_enneper's integer fractions 2/3, 1/4, …
-// that are 0, f_kampyle_of_eudoxus_2d's P1*P2). The ones built on POV-Ray's noise generator or on a pattern
-// are not evaluable here and are refused by name when evaluated.
+// that are 0, f_kampyle_of_eudoxus_2d's P1*P2). The ones built on POV-Ray's noise are in function_noise.cpp.
 #include <algorithm>
 #include <climits>
 #include <cmath>
 
+#include "parser/function_noise.hpp"
 #include "parser/function_value.hpp"
 
 namespace povtrace::sdl {
@@ -491,7 +491,7 @@ const InternalFunctionInfo kInfo[kInternalFunctionCount] = {
     {"f_enneper", 4, true}, {"f_flange_cover", 7, true}, {"f_folium_surface", 6, true},
     {"f_folium_surface_2d", 9, true}, {"f_glob", 4, true}, {"f_heart", 4, true},
     {"f_helical_torus", 13, true}, {"f_helix1", 10, true}, {"f_helix2", 10, true},
-    {"f_hex_x", 4, true}, {"f_hex_y", 4, true}, {"f_hetero_mf", 9, false},
+    {"f_hex_x", 4, true}, {"f_hex_y", 4, true}, {"f_hetero_mf", 9, true},
     {"f_hunt_surface", 4, true}, {"f_hyperbolic_torus", 6, true}, {"f_isect_ellipsoids", 7, true},
     {"f_kampyle_of_eudoxus", 6, true}, {"f_kampyle_of_eudoxus_2d", 9, true}, {"f_klein_bottle", 4, true},
     {"f_kummer_surface_v1", 4, true}, {"f_kummer_surface_v2", 7, true}, {"f_lemniscate_of_gerono", 4, true},
@@ -501,21 +501,21 @@ const InternalFunctionInfo kInfo[kInternalFunctionCount] = {
     {"f_pillow", 4, true}, {"f_piriform", 4, true}, {"f_piriform_2d", 10, true},
     {"f_poly4", 8, true}, {"f_polytubes", 9, true}, {"f_quantum", 4, true},
     {"f_quartic_paraboloid", 4, true}, {"f_quartic_saddle", 4, true}, {"f_quartic_cylinder", 6, true},
-    {"f_r", 3, true}, {"f_ridge", 9, false}, {"f_ridged_mf", 9, false},
+    {"f_r", 3, true}, {"f_ridge", 9, true}, {"f_ridged_mf", 9, true},
     {"f_rounded_box", 7, true}, {"f_sphere", 4, true}, {"f_spikes", 8, true},
     {"f_spikes_2d", 7, true}, {"f_spiral", 9, true}, {"f_steiners_roman", 4, true},
     {"f_strophoid", 7, true}, {"f_strophoid_2d", 10, true}, {"f_superellipsoid", 5, true},
     {"f_th", 3, true}, {"f_torus", 5, true}, {"f_torus2", 6, true},
     {"f_torus_gumdrop", 4, true}, {"f_umbrella", 4, true}, {"f_witch_of_agnesi", 5, true},
-    {"f_witch_of_agnesi_2d", 9, true}, {"f_noise3d", 3, false}, {"f_pattern", 3, true},
-    {"f_noise_generator", 4, false},
+    {"f_witch_of_agnesi_2d", 9, true}, {"f_noise3d", 3, true}, {"f_pattern", 3, true},
+    {"f_noise_generator", 4, true},
 };
 
 }  // namespace
 
 const InternalFunctionInfo& internal_function_info(int id) { return kInfo[id]; }
 
-double evaluate_internal_function(int id, double* p) {
+double evaluate_internal_function(int id, double* p, int scene_noise_generator) {
   const Point q{p};
   const double X = q.X(), Y = q.Y(), Z = q.Z();
   switch (id) {
@@ -601,6 +601,9 @@ double evaluate_internal_function(int id, double* p) {
     }
     case 56: return quartic_cylinder(q);
     case 57: return std::sqrt(X * X + Y * Y + Z * Z);
+    case 29: return hetero_mf(p);
+    case 58: return ridge(p);
+    case 59: return ridged_mf(p);
     case 60: return rounded_box(q);
     case 61: return -q.P(0) + std::sqrt(X * X + Y * Y + Z * Z);
     case 62: return spikes(q);
@@ -620,6 +623,8 @@ double evaluate_internal_function(int id, double* p) {
     case 73: return clip10(q.P(0), -(X * X - Y * Z * Z));
     case 74: return clip10(q.P(0), -(q.P(1) * (Y - 1) + (X * X + Z * Z) * Y));
     case 75: return witch_of_agnesi_2d(q);
+    case 76: return noise3d(p, scene_noise_generator);
+    case 78: return noise_with_generator(p);
     case 77: return 0.0;   // internal(77) without a pattern (a bare `function { internal(77) }`) is 0 in POV-Ray
     default: return 0.0;   // not evaluable: the caller checks InternalFunctionInfo::evaluable first
   }

@@ -165,6 +165,7 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
   auto f = std::make_shared<FunctionValue>();
   out_ = f.get();
   f->loc = keyword.loc;
+  f->scene_noise_generator = in_.noise_generator_cell();
   Token t = in_.next();
   const bool has_parameters = t.is("(");
   if (has_parameters) {

@@ -82,6 +82,9 @@ struct FunctionValue {
   int frame_size = 0;              // parameters, then the loop variables of sum()/prod()
   int max_stack = 0;               // operand stack the body needs beyond its frame
 
+  // The scene's noise generator when the function runs (f_noise3d and its like read it), shared with the parse.
+  std::shared_ptr<const int> scene_noise_generator;
+
   Matrix transform;                // Kind::transform
   std::optional<Colour> colour;    // Kind::pigment when the pigment is a plain colour
 
@@ -113,10 +116,11 @@ constexpr int kInternalFunctionCount = 79;
 struct InternalFunctionInfo {
   const char* name;       // functions.inc's name, e.g. "f_sphere"
   int parameter_count;    // x, y, z plus the extra parameters
-  bool evaluable;         // false: needs POV-Ray's noise generator or a pattern
+  bool evaluable;         // false: needs a pattern
 };
 const InternalFunctionInfo& internal_function_info(int id);
-// Evaluates internal function `id` (evaluable) on p[0…parameter_count-1]; may modify p.
-double evaluate_internal_function(int id, double* p);
+// Evaluates internal function `id` (evaluable) on p[0…parameter_count-1]; may modify p. `scene_noise_generator`
+// is the scene's noise_generator (1, 2 or 3), which f_noise3d uses.
+double evaluate_internal_function(int id, double* p, int scene_noise_generator);
 
 }  // namespace povtrace::sdl

@@ -98,6 +98,9 @@ std::string unsupported_message(const FunctionValue& f) {
   return "unsupported: " + f.description() + " is a POV-Ray feature that povtrace does not render yet";
 }
 
+// The scene's noise generator for a function (2, POV-Ray's default, for functions made outside a parse).
+int scene_noise_generator(const FunctionValue& f) { return f.scene_noise_generator ? *f.scene_noise_generator : 2; }
+
 // Values the vector kinds produce; float kinds return through `out[0]`.
 void evaluate_native(const FunctionValue& f, const double* args, double* out) {
   switch (f.kind) {
@@ -106,7 +109,7 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
       if (!info.evaluable) throw FunctionError(unsupported_message(f));
       double p[16];
       std::copy(args, args + info.parameter_count, p);
-      out[0] = evaluate_internal_function(f.internal_id, p);
+      out[0] = evaluate_internal_function(f.internal_id, p, scene_noise_generator(f));
       return;
     }
     case FunctionValue::Kind::transform: {
@@ -218,7 +221,7 @@ class Machine {
           const std::size_t n = in.b;
           sp -= n;
           std::copy(s + sp, s + sp + n, p);
-          s[sp++] = evaluate_internal_function(in.a, p);
+          s[sp++] = evaluate_internal_function(in.a, p, scene_noise_generator(*fn));
           break;
         }
         case FnOp::vector_call: {
@@ -284,9 +287,7 @@ std::string FunctionValue::description() const {
     case Kind::expression: what = "the function"; break;
     case Kind::internal: {
       const InternalFunctionInfo& info = internal_function_info(internal_id);
-      // Only the ones built on POV-Ray's noise generator cannot be evaluated.
-      return "the internal function " + std::string(info.name) + " (internal(" + std::to_string(internal_id) +
-             "), POV-Ray's noise generator)";
+      return "the internal function " + std::string(info.name) + " (internal(" + std::to_string(internal_id) + "))";
     }
     case Kind::transform: what = "the transform function"; break;
     case Kind::pigment: what = "the pigment function"; break;

@@ -6,6 +6,7 @@
 
 #include "parser/int_cast.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/noise.hpp"
 #include "parser/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -161,6 +162,21 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     const double c = std::cos(angle), s = std::sin(angle);
     return Numeric::vector(v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c)));
   }
+  if (n == "vturbulence") {
+    // vturbulence(lambda, omega, octaves, V): POV-Ray's DTurbulence at V, octaves truncated and kept in 1…10.
+    expect("(", "");
+    Turbulence t;
+    t.lambda = static_cast<float>(parse_float());
+    accept(",");
+    t.omega = static_cast<float>(parse_float());
+    accept(",");
+    const double octaves = parse_float();
+    t.octaves = std::isnan(octaves) ? 1 : static_cast<int>(std::clamp(std::trunc(octaves), 1.0, 10.0));
+    const Vec3 v = vector_arg(false);
+    accept(",");
+    expect(")", "");
+    return Numeric::vector(vector_turbulence(v, t));
+  }
   if (n == "strlen" || n == "asc" || n == "val" || n == "file_exists") {
     expect("(", "");
     std::string s = parse_string();
@@ -191,8 +207,8 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     constexpr double kY2kSeconds = 946684800.0;
     return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
   }
-  // Built-ins that need the renderer or noise functions: refused by name.
-  if (n == "trace" || n == "vturbulence") fail_unsupported(name, "the function '" + std::string(n) + "'");
+  // trace() needs the renderer's scene: refused by name.
+  if (n == "trace") fail_unsupported(name, "the function '" + std::string(n) + "'");
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
     rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));

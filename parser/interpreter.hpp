@@ -131,6 +131,11 @@ class Interpreter {
   std::string expect_identifier_raw(std::string_view context);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
+  // The cell a function keeps to read the scene's noise generator (noise_generator_cell_), kept up to date.
+  std::shared_ptr<const int> noise_generator_cell() const { return noise_generator_cell_; }
+  void update_noise_generator_cell() {
+    *noise_generator_cell_ = scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
+  }
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
@@ -438,6 +443,10 @@ class Interpreter {
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
   bool camera_seen_ = false;
   bool statement_seen_ = false;
+  // The scene's noise generator as functions see it when they run (POV-Ray's f_noise3d reads the scene's current
+  // setting): updated at #version, at global_settings and once more when the parse ends, so that functions
+  // evaluated while rendering see the final one.
+  std::shared_ptr<int> noise_generator_cell_ = std::make_shared<int>(2);
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by

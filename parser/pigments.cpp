@@ -257,8 +257,8 @@ void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
   while (true) {
     Token t = next();
     if (t.is("octaves")) w.turbulence.octaves = clamped_octaves(parse_float());
-    else if (t.is("omega")) w.turbulence.omega = parse_float();
-    else if (t.is("lambda")) w.turbulence.lambda = parse_float();
+    else if (t.is("omega")) w.turbulence.omega = static_cast<float>(parse_float());
+    else if (t.is("lambda")) w.turbulence.lambda = static_cast<float>(parse_float());
     else if (t.is("}")) break;
     else fail_expected(t, "octaves, omega, lambda or '}' in warp { turbulence … }");
   }
@@ -310,8 +310,8 @@ bool Interpreter::try_pattern_modifier(const Token& t, Pigment& p) {
   if (t.is("phase")) { p.phase = single(parse_float()); return true; }
   if (t.is("turbulence")) { classic_turbulence(p).amount = parse_vector(); return true; }
   if (t.is("octaves")) { classic_turbulence(p).octaves = clamped_octaves(parse_float()); return true; }
-  if (t.is("omega")) { classic_turbulence(p).omega = parse_float(); return true; }
-  if (t.is("lambda")) { classic_turbulence(p).lambda = parse_float(); return true; }
+  if (t.is("omega")) { classic_turbulence(p).omega = static_cast<float>(parse_float()); return true; }
+  if (t.is("lambda")) { classic_turbulence(p).lambda = static_cast<float>(parse_float()); return true; }
   if (t.is("warp")) { parse_warp(t, p); return true; }
   return try_pattern_parameter(t, p);
 }

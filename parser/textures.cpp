@@ -261,9 +261,9 @@ Fog Interpreter::parse_fog(const Token& keyword) {
     } else if (t.is("octaves")) {
       turbulence().octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
     } else if (t.is("omega")) {
-      turbulence().omega = parse_float();
+      turbulence().omega = static_cast<float>(parse_float());
     } else if (t.is("lambda")) {
-      turbulence().lambda = parse_float();
+      turbulence().lambda = static_cast<float>(parse_float());
     } else if (t.is("translate")) {
       parse_vector();
       warn(t.loc, "a fog's up vector cannot be translated: the translate does nothing");

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/pattern/noise.hpp"
+#include "parser/noise.hpp"
 #include "renderer/tracer.hpp"
 
 namespace povtrace::render {

@@ -26,7 +26,7 @@ double granite(Vec3 p, NoiseGenerator generator) {
 // x plus the turbulence's x amount times the scalar turbulence; the default triangle wave makes the veins.
 double marble(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerator generator) {
   if (!turbulence) return p.x;
-  return p.x + turbulence->amount.x * render::turbulence(p, *turbulence, generator);
+  return p.x + turbulence->amount.x * povtrace::turbulence(p, *turbulence, generator);
 }
 
 // Rings around the z axis: the distance from it, with x and y each pushed by a sine of the turbulence-displaced
@@ -43,7 +43,7 @@ double wood(Vec3 p, const std::optional<Turbulence>& turbulence) {
 
 // Layers along z bent by turbulence: ½(sin(2π(1.3·agate_turb·turbulence + 1.1·z)) + 1), raised to the 0.77th power.
 double agate(Vec3 p, const Turbulence& turbulence, double agate_turb, NoiseGenerator generator) {
-  const double turb = agate_turb * render::turbulence(p, turbulence, generator);
+  const double turb = agate_turb * povtrace::turbulence(p, turbulence, generator);
   const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
   if (v < 0.0) return 0.0;
   return std::pow(std::min(1.0, v), 0.77);

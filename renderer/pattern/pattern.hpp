@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "parser/description.hpp"
-#include "renderer/pattern/noise.hpp"
+#include "parser/noise.hpp"
 
 namespace povtrace::render {
 

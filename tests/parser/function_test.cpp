@@ -237,11 +237,6 @@ INSTANTIATE_TEST_SUITE_P(
                   "redeclaring the function 'F' is not allowed"},
         ErrorCase{"RedefiningAFloatAsAFunction", "#declare F = 1;\n#declare F = function { y }\n", 2, 10,
                   "cannot redefine the float identifier 'F' as a function: #undef it first"},
-        ErrorCase{"NoiseEvaluatedIsUnsupported",
-                  "#include \"functions.inc\"\n#declare F = function { f_noise3d(x, y, z) * 2 }\n#declare V = F(1, 2, 3);\n",
-                  3, 14,
-                  "unsupported: the internal function f_noise3d (internal(76), POV-Ray's noise generator) is a "
-                  "POV-Ray feature that povtrace does not render yet"},
         ErrorCase{"PatternEvaluatedIsUnsupported", "#declare P = function { pattern { agate } }\n#declare V = P(1, 2, 3);\n",
                   2, 14, "unsupported: the pattern function (written at test.pov:2:14)"},
         ErrorCase{"TexturedPigmentEvaluatedIsUnsupported",
@@ -443,4 +438,39 @@ TEST(Functions, StandardIncludesGivePovRayValues) {
 }
 
 }  // namespace
+// The noise-based internal functions and vturbulence against the values POV-Ray 3.7.0.10 printed with
+// #debug str(…, 0, 17) for the same calls (nine digits compared here: eval_float prints nine).
+TEST(NoiseFunctions, MatchPovRayValues) {
+  const std::string inc = "#include \"functions.inc\"\n";
+  const std::string p0 = "0.3, 1.7, -2.2", p1 = "-5.25, 0.125, 3.9";
+  EXPECT_NEAR(eval_float("f_noise3d(" + p0 + ")", inc), 0.52885147806171373, 1e-9);
+  EXPECT_NEAR(eval_float("f_noise_generator(" + p0 + ", 3)", inc), 0.67029632432102426, 1e-9);
+  EXPECT_NEAR(eval_float("f_noise_generator(" + p0 + ", 0)", inc), 0.52718639941302281, 1e-9);   // 0 is 1
+  EXPECT_NEAR(eval_float("f_hetero_mf(" + p0 + ", 0.5, 2.1, 5.5, 0.3, 1, 2)", inc), 0.65986461946882957, 1e-9);
+  EXPECT_NEAR(eval_float("f_hetero_mf(" + p0 + ", 0.8, 1.9, 4, 0.1, 2, 1)", inc), 0.16062175905264550, 1e-9);
+  EXPECT_NEAR(eval_float("f_ridge(" + p0 + ", 2.2, 4.5, 0.6, 0.2, 0.3, 2)", inc), 0.20752287796509511, 1e-9);
+  EXPECT_NEAR(eval_float("f_ridge(" + p0 + ", 2, 3, 0.5, 0.7, 0.6, 3)", inc), -0.81242254176999007, 1e-9);
+  EXPECT_NEAR(eval_float("f_ridged_mf(" + p0 + ", 0.7, 2.3, 6, 1.1, 2, 2)", inc), 2.04255644207579712, 1e-9);
+  EXPECT_NEAR(eval_float("f_ridged_mf(" + p1 + ", 0.7, 2.3, 6, 1.1, 2, 2)", inc), 2.28641764389861857, 1e-9);
+  const std::vector<double> v = eval_terms("vturbulence(2.3, 0.6, 4, <" + p0 + ">)");
+  ASSERT_GE(v.size(), 3u);
+  EXPECT_NEAR(v[0], 0.19754441186730495, 1e-9);   // lambda and omega in single precision, as POV-Ray keeps them
+  EXPECT_NEAR(v[1], 0.21260987601758943, 1e-9);
+  EXPECT_NEAR(v[2], 0.26598910350948129, 1e-9);
+  const std::vector<double> w = eval_terms("vturbulence(2, 0.5 7.9 <" + p1 + ">)");   // commas optional, 7.9 → 7
+  ASSERT_GE(w.size(), 3u);
+  EXPECT_NEAR(w[0], -0.01564808008513919, 1e-9);
+  EXPECT_NEAR(w[1], -0.04631359294260360, 1e-9);
+  EXPECT_NEAR(w[2], 0.11116873188239138, 1e-9);
+}
+
+// f_noise3d follows the scene's noise generator, including one set after the function was declared.
+TEST(NoiseFunctions, NoiseThreeDReadsTheScenesGenerator) {
+  const std::string inc = "#include \"functions.inc\"\n";
+  EXPECT_NEAR(eval_float("f_noise3d(0.3, 1.7, -2.2)", inc + "global_settings { noise_generator 3 }\n"),
+              0.67029632432102426, 1e-9);
+  EXPECT_NEAR(eval_float("f_noise3d(0.3, 1.7, -2.2)", inc + "global_settings { noise_generator 1 }\n"),
+              0.52718639941302281, 1e-9);
+}
+
 }  // namespace povtrace::test

@@ -638,9 +638,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "unsupported: min_extent() of a CSG 'intersection' is a POV-Ray feature that povtrace does not "
                   "render yet"},
         ErrorCase{"Trace", "#declare S = sphere { 0, 1 }\n#declare P = trace(S, <0,0,-5>, z);\n", 3, 14,
-                  "unsupported: the function 'trace' is a POV-Ray feature that povtrace does not render yet"},
-        ErrorCase{"Vturbulence", "#declare P = vturbulence(2, 0.5, 6, <1,2,3>);\n", 2, 14,
-                  "unsupported: the function 'vturbulence' is a POV-Ray feature that povtrace does not render yet"}),
+                  "unsupported: the function 'trace' is a POV-Ray feature that povtrace does not render yet"}),
     [](const auto& p) { return p.param.name; });
 
 // ---- Camera angle ----------------------------------------------------------------------------------------------

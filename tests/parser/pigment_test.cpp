@@ -51,7 +51,7 @@ TEST(PigmentParse, ModifiersAndDefaults) {
   ASSERT_TRUE(p.turbulence);
   EXPECT_EQ(p.turbulence->amount.y, 0.5);
   EXPECT_EQ(p.turbulence->octaves, 10);   // clamped as POV-Ray does
-  EXPECT_EQ(p.turbulence->omega, 0.3);
+  EXPECT_EQ(p.turbulence->omega, 0.3f);   // single precision, as POV-Ray keeps omega and lambda
   EXPECT_EQ(p.turbulence->lambda, 2.0);
   EXPECT_EQ(p.phase, single(0.1));
   EXPECT_EQ(p.wave, WaveType::poly);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "renderer/pattern/noise.hpp"
+#include "parser/noise.hpp"
 #include "renderer/pattern/pattern.hpp"
 
 namespace povtrace::render {

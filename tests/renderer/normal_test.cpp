@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/pattern/noise.hpp"
+#include "parser/noise.hpp"
 #include "renderer/pattern/normal_perturbation.hpp"
 
 namespace povtrace::render {

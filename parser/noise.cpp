@@ -1,7 +1,7 @@
 // See noise.hpp. The lattice, the hashing of lattice points, the S-curve blend, the coefficients and the order of
 // the sums follow POV-Ray 3.7's Noise(), DNoise() and SolidNoise() (texture.cpp), so values agree with POV-Ray's
 // to the last bit on the same machine arithmetic (no fused multiply-add).
-#include "renderer/pattern/noise.hpp"
+#include "parser/noise.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace povtrace::render {
+namespace povtrace {
 
 namespace {
 // Lattice coordinates are offset by POV-Ray's MINX (−10000) and wrapped to 12 bits before hashing.
@@ -287,4 +287,4 @@ Vec3 vector_turbulence(Vec3 p, const Turbulence& t) {
   return value;
 }
 
-}  // namespace povtrace::render
+}  // namespace povtrace

@@ -4,7 +4,7 @@
 
 #include "parser/description.hpp"
 
-namespace povtrace::render {
+namespace povtrace {
 
 // POV-Ray's noise generators: 1 is the original clipped noise, 2 the range-corrected one (the default for
 // #version 3.5 and later), 3 Perlin's gradient noise.
@@ -28,4 +28,4 @@ double turbulence(Vec3 p, const Turbulence& t, NoiseGenerator generator);
 // The same sum of vector noise (DTurbulence()): the displacement turbulence applies to a point.
 Vec3 vector_turbulence(Vec3 p, const Turbulence& t);
 
-}  // namespace povtrace::render
+}  // namespace povtrace
