@@ -80,6 +80,10 @@ struct ImageMap {
 
 // ---- Textures -------------------------------------------------------------------------------------------
 // Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
+namespace sdl {
+struct FunctionValue;   // a compiled `function { … }` (function_value.hpp; evaluated by sdl::evaluate_function)
+}
+
 enum class PatternKind {
   solid, checker, hexagon, brick,                                   // list patterns: entries 0, 1 (, 2)
   gradient, radial, onion, planar, boxed, spherical, cylindrical, leopard,
@@ -88,6 +92,7 @@ enum class PatternKind {
   bumps, dents, wrinkles, ripples, waves,                           // the normal patterns used as pigments
   average,                                                          // mean of its pigment_map's pigments
   image_map,                                                        // the colour of an image (Pigment::image)
+  function,                                                         // a user function of x, y, z (Pigment::function)
   uv_mapping                                                        // its one entry at the hit's <u, v, 0>
 };
 
@@ -151,6 +156,7 @@ struct Pigment {
   double mortar = 0.5;           // brick: float(mortar − 2e-10), as POV-Ray stores it
   double agate_turb = 1.0;
   CrackleParams crackle;
+  std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern: a float function of x, y, z
   double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
   double phase = 0.0;
   WaveType wave = WaveType::ramp;
@@ -332,10 +338,6 @@ struct Blob {
   bool sturm = false;
   std::shared_ptr<const std::vector<BlobComponent>> components;
 };
-
-namespace sdl {
-struct FunctionValue;   // a compiled `function { … }` (function_value.hpp; evaluated by sdl::evaluate_function)
-}
 
 // isosurface { function { F } [contained_by { box { C1, C2 } | sphere { C, R } }] [threshold T] [accuracy A]
 // [max_gradient G] [max_trace N | all_intersections] [open] }: the surface F(x, y, z) = T inside its container, with

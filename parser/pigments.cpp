@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parser/function_value.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/reserved_words.hpp"
 
@@ -138,6 +139,17 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
   if (t.is("marble") || t.is("wood")) {
     p.pattern = t.is("marble") ? PatternKind::marble : PatternKind::wood;
     p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
+  if (t.is("function")) {
+    // function { EXPRESSION } of x, y, z (POV-Ray's Parse_Function: the body only, no parameter list).
+    if (peek().is("(")) fail_expected(peek(), "'{' after 'function' in a pattern");
+    auto fn = parse_function_definition(t);
+    if (fn->return_size != 0 || fn->parameter_count != 3)
+      fail_at(t, "a function pattern needs a float function of x, y and z");
+    if (auto part = unevaluable_part(*fn)) taint(p.unsupported, UnsupportedFeature{"a pattern of " + *part, t.loc});
+    p.pattern = PatternKind::function;
+    p.function = std::move(fn);
     return true;
   }
   if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)

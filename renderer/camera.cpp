@@ -65,8 +65,8 @@ std::optional<Ray> omnimax(const RenderCamera& c, double x0, double y0) {
   return along(c.location, c.right * (cx * sy) + c.up * (sx * sy) + c.direction * cy);
 }
 
-std::optional<Ray> panoramic(const RenderCamera& c, double u, double y0) {
-  const double x0 = (1.0 - (u + 0.5)) * M_PI;
+std::optional<Ray> panoramic(const RenderCamera& c, double across, double y0) {
+  const double x0 = (1.0 - across) * M_PI;
   const double lat = M_PI / 2 * y0;
   double ty;
   if (std::fabs(M_PI / 2 - std::fabs(lat)) < tolerance::epsilon) ty = lat > 0.0 ? tolerance::bound_huge : -tolerance::bound_huge;
@@ -83,15 +83,20 @@ std::optional<Ray> spherical(const RenderCamera& c, double u, double v) {
 }  // namespace
 
 std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int width, int height) {
-  const double u = (x + 0.5) / width - 0.5;
-  const double v = 0.5 - (y + 0.5) / height;
+  // POV-Ray's CreateCameraRay: the pixel centre is (x + 0.5, y − 0.5) and rows count from the bottom; the screen
+  // coordinates are formed in its order of operations, so that rays agree to the last bit (a pattern with a jump,
+  // such as a function pattern wrapping at 1, shows any difference).
+  const double px = x + 0.5, py = y - 0.5;
+  const double u = px / width - 0.5;
+  const double v = ((height - 1) - py) / height - 0.5;
+  const double u2 = 2.0 * px / width - 1.0, v2 = 2.0 * ((height - 1) - py) / height - 1.0;
   const double half_angle = c.angle * kDegree;
   switch (c.projection) {
     case Projection::perspective: return along(c.location, c.direction + c.right * u + c.up * v);
     case Projection::orthographic: return Ray{c.location + c.right * u + c.up * v, normalize(c.direction)};
-    case Projection::fisheye: return fisheye(c, 2 * u, 2 * v);
-    case Projection::omnimax: return omnimax(c, 2 * u, 2 * v);
-    case Projection::panoramic: return panoramic(c, u, 2 * v);
+    case Projection::fisheye: return fisheye(c, u2, v2);
+    case Projection::omnimax: return omnimax(c, u2, v2);
+    case Projection::panoramic: return panoramic(c, px / width, v2);
     case Projection::spherical: return spherical(c, u, v);
     case Projection::ultra_wide_angle: {
       const double a = u * half_angle, b = v * half_angle * c.aspect;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "parser/function_value.hpp"
+
 #include "renderer/pattern/pattern_functions.hpp"
 
 namespace povtrace::render {
@@ -48,6 +50,18 @@ double cycloidal(double v) {
   return -std::sin((f * kSteps) / kSteps * two_pi);
 }
 
+// POV-Ray's function pattern: the function's value, values above 1 wrapped by fmod (negative ones go on to the
+// wave step, which wraps them). A value that is not a number (0/0 in the function) is taken as 0: POV-Ray's map
+// lookup then depends on how NaN compares.
+namespace {
+double function_pattern(const sdl::FunctionValue& f, Vec3 p) {
+  const double args[3] = {p.x, p.y, p.z};
+  const double v = sdl::evaluate_function(f, args, nullptr);
+  if (std::isnan(v)) return 0.0;
+  return v > 1.0 ? std::fmod(v, 1.0) : v;
+}
+}  // namespace
+
 double pattern_value(const PatternParams& params, Vec3 p) {
   switch (params.kind) {
     case PatternKind::checker: return patterns::checker(p);
@@ -76,6 +90,7 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     // POV-Ray applies frequency and phase inside these two and once more in the wave step.
     case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
     case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
+    case PatternKind::function: return function_pattern(*params.function, p);
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:

@@ -20,6 +20,7 @@ struct PatternParams {
   std::optional<Turbulence> turbulence;   // the classic turbulence: marble, wood and agate use it inside
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
   double frequency = 1.0, phase = 0.0;    // ripples and waves use them inside too (as well as in the wave step)
+  std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern
 };
 
 // The frequency/phase/wave step every pattern value goes through.

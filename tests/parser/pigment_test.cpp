@@ -99,6 +99,25 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("unsupported: the pigment item 'spiral1'"), std::string::npos);
 }
 
+// function { EXPRESSION } as a pattern (POV-Ray's Parse_Function): a float function of x, y, z.
+TEST(PigmentParse, FunctionPattern) {
+  const SceneDescription s = scene("#declare F = function(a, b, c) { a + b }\n"
+                                   "sphere { 0, 1 pigment { function { F(x, y, z) * 2 } } }\n"
+                                   "sphere { 0, 1 normal { function { x } 0.5 } }\n");
+  const Pigment& p = pigment_of(s, 0);
+  EXPECT_EQ(p.pattern, PatternKind::function);
+  ASSERT_TRUE(p.function);
+  EXPECT_FALSE(p.unsupported);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { function(a) { a } } }\n")
+                .bare_message().find("'{' after 'function'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { function { transform { scale 2 } } } }\n")
+                .bare_message().find("a float function of x, y and z"), std::string::npos);
+  // What povtrace cannot evaluate (a pattern function inside) is refused by name when the object is placed.
+  EXPECT_NE(parse_error("#version 3.7;\n#declare G = function { pattern { agate } }\n"
+                        "sphere { 0, 1 pigment { function { G(x, y, z) } } }\n")
+                .bare_message().find("unsupported: a pattern of the pattern function"), std::string::npos);
+}
+
 TEST(PigmentParse, GlobalNoiseGenerator) {
   EXPECT_EQ(scene("global_settings { noise_generator 1 }\n").settings.noise_generator, 1);
   EXPECT_FALSE(scene("global_settings { }\n").settings.noise_generator);

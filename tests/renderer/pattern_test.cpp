@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "parser/noise.hpp"
+#include "parser/parse_scene.hpp"
 #include "renderer/pattern/pattern.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"
@@ -331,6 +332,25 @@ TEST(Pattern, RepeatWarpMapsEverySlabOntoTheFirst) {
   const Vec3 negative = to_pattern_space(p, {-0.5, 0, 0});   // slab −1 is odd too
   EXPECT_DOUBLE_EQ(negative.x, 0.5);
   EXPECT_DOUBLE_EQ(negative.y, -1.0);
+}
+
+// The function pattern: the function's value, above 1 wrapped by fmod, below 0 left for the wave step; a value
+// that is not a number counts as 0.
+TEST(Pattern, FunctionPatternWrapsValuesAboveOne) {
+  const SceneDescription scene = parse_scene_text(
+      "#version 3.7;\nsphere { 0, 1 pigment { function { x * 3 } } }\nsphere { 0, 1 pigment { function { x / x } } }\n",
+      "test.pov", {});
+  PatternParams params;
+  params.kind = PatternKind::function;
+  params.function = scene.objects.at(0).texture->layers.back().pigment.function;
+  ASSERT_TRUE(params.function);
+  EXPECT_EQ(pattern_value(params, {0.5, 0, 0}), std::fmod(1.5, 1.0));
+  EXPECT_EQ(pattern_value(params, {0.2, 0, 0}), 0.2 * 3);
+  EXPECT_EQ(pattern_value(params, {-0.5, 0, 0}), -1.5);
+  EXPECT_EQ(pattern_value(params, {1.0 / 3.0, 0, 0}), (1.0 / 3.0) * 3);   // exactly 1 stays 1
+  params.function = scene.objects.at(1).texture->layers.back().pigment.function;
+  EXPECT_EQ(pattern_value(params, {0, 0, 0}), 0.0);
+  EXPECT_EQ(pattern_value(params, {2, 0, 0}), 1.0);
 }
 
 }  // namespace
