@@ -93,6 +93,7 @@ enum class PatternKind {
   average,                                                          // mean of its pigment_map's pigments
   image_map,                                                        // the colour of an image (Pigment::image)
   function,                                                         // a user function of x, y, z (Pigment::function)
+  spiral1, spiral2,                                                 // spirals around z with Pigment::arms arms
   uv_mapping                                                        // its one entry at the hit's <u, v, 0>
 };
 
@@ -157,6 +158,7 @@ struct Pigment {
   double agate_turb = 1.0;
   CrackleParams crackle;
   std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern: a float function of x, y, z
+  int arms = 0;                                         // spiral1/spiral2: the number of arms (a short in POV-Ray)
   double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
   double phase = 0.0;
   WaveType wave = WaveType::ramp;

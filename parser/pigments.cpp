@@ -152,6 +152,13 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
     p.function = std::move(fn);
     return true;
   }
+  if (t.is("spiral1") || t.is("spiral2")) {
+    p.pattern = t.is("spiral1") ? PatternKind::spiral1 : PatternKind::spiral2;
+    // POV-Ray keeps the arm count as a short, converted from the float as written.
+    p.arms = static_cast<short>(std::clamp(std::trunc(parse_float()), -32768.0, 32767.0));
+    p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
   if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)
     p.pattern = PatternKind::crackle;
     p.crackle = CrackleParams{};

@@ -29,6 +29,33 @@ double marble(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerato
   return p.x + turbulence->amount.x * povtrace::turbulence(p, *turbulence, generator);
 }
 
+// The spirals (POV-Ray's spiral1_pattern, spiral2_pattern): around the z axis, the angle measured with asin from
+// −y through +x (π/2 + asin(y/r), or 3π/2 − asin(y/r) for x < 0). The classic turbulence, which also warps the point
+// as for other patterns, is added once more inside, scaled by its x amount.
+namespace {
+double spiral_angle(double x, double y, double radius) {
+  if (radius == 0.0) return 0.0;
+  return x < 0.0 ? 3.0 * (M_PI / 2) - std::asin(y / radius) : M_PI / 2 + std::asin(y / radius);
+}
+double inner_turbulence(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerator generator) {
+  return turbulence ? turbulence->amount.x * povtrace::turbulence(p, *turbulence, generator) : 0.0;
+}
+}  // namespace
+
+double spiral1(Vec3 p, int arms, const std::optional<Turbulence>& turbulence, NoiseGenerator generator) {
+  const double turb = inner_turbulence(p, turbulence, generator);
+  const double radius = std::sqrt(p.x * p.x + p.y * p.y);
+  return p.z + radius + static_cast<double>(arms) * spiral_angle(p.x, p.y, radius) / (2.0 * M_PI) + turb;
+}
+
+double spiral2(Vec3 p, int arms, const std::optional<Turbulence>& turbulence, NoiseGenerator generator) {
+  const double turb = inner_turbulence(p, turbulence, generator);
+  const double radius = std::sqrt(p.x * p.x + p.y * p.y);
+  const double along =
+      triangle_wave(p.z + radius + static_cast<double>(arms) * spiral_angle(p.x, p.y, radius) / (2.0 * M_PI) + turb);
+  return triangle_wave(radius) + along;
+}
+
 // Rings around the z axis: the distance from it, with x and y each pushed by a sine of the turbulence-displaced
 // coordinate when there is turbulence (z is not used).
 double wood(Vec3 p, const std::optional<Turbulence>& turbulence) {

@@ -35,11 +35,13 @@ double leopard(Vec3 p) {
   return mean * mean;
 }
 
-double triangle_wave(double v) {
-  const double offset = v - std::floor(v);
+}  // namespace
+
+double patterns::triangle_wave(double v) {
+  // POV-Ray's Triangle_Wave forms a negative value's offset as v + 1 + floor(|v|), which rounds differently.
+  const double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
   return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
 }
-}  // namespace
 
 double cycloidal(double v) {
   // POV-Ray scales the fractional part by 50000 and back before the sine; kept for identical rounding.
@@ -91,6 +93,8 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
     case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
     case PatternKind::function: return function_pattern(*params.function, p);
+    case PatternKind::spiral1: return patterns::spiral1(p, params.arms, params.turbulence, params.noise_generator);
+    case PatternKind::spiral2: return patterns::spiral2(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:
@@ -108,7 +112,7 @@ double apply_wave(double value, const WaveParams& w) {
   switch (w.wave) {
     case WaveType::ramp: return value;
     case WaveType::sine: return (1.0 + cycloidal(value)) * 0.5;
-    case WaveType::triangle: return triangle_wave(value);
+    case WaveType::triangle: return patterns::triangle_wave(value);
     case WaveType::scallop: return std::fabs(cycloidal(value * 0.5));
     case WaveType::cubic: return value * value * (3.0 - 2.0 * value);
     case WaveType::poly: return std::pow(value, w.exponent);

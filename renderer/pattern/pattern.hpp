@@ -21,6 +21,7 @@ struct PatternParams {
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
   double frequency = 1.0, phase = 0.0;    // ripples and waves use them inside too (as well as in the wave step)
   std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern
+  int arms = 0;                                          // spiral1, spiral2
 };
 
 // The frequency/phase/wave step every pattern value goes through.

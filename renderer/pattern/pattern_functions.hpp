@@ -1,5 +1,6 @@
 // The pattern functions behind pattern_value(), grouped by file: tilings.cpp (checker, hexagon, brick) and
-// noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate, dents, wrinkles, ripples, waves), cell_patterns.cpp (crackle, cells). Internal to renderer/pattern.
+// noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate, spiral1, spiral2, dents, wrinkles, ripples, waves),
+// cell_patterns.cpp (crackle, cells). Internal to renderer/pattern.
 #pragma once
 
 #include "renderer/pattern/pattern.hpp"
@@ -14,6 +15,11 @@ double granite(Vec3 p, NoiseGenerator generator);
 double marble(Vec3 p, const std::optional<Turbulence>& turbulence, NoiseGenerator generator);
 double wood(Vec3 p, const std::optional<Turbulence>& turbulence);
 double agate(Vec3 p, const Turbulence& turbulence, double agate_turb, NoiseGenerator generator);
+double spiral1(Vec3 p, int arms, const std::optional<Turbulence>& turbulence, NoiseGenerator generator);
+double spiral2(Vec3 p, int arms, const std::optional<Turbulence>& turbulence, NoiseGenerator generator);
+
+// POV-Ray's Triangle_Wave: 0 → 1 → 0 over each unit.
+double triangle_wave(double v);
 
 double dents(Vec3 p, NoiseGenerator generator);
 double wrinkles(Vec3 p, NoiseGenerator generator);

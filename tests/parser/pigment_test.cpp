@@ -95,8 +95,8 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("pigment_map"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n")
                 .bare_message().find("unsupported: the warp 'black_hole'"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 spiral1 2] [1 rgb 1] } } }\n")
-                .bare_message().find("unsupported: the pigment item 'spiral1'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 quilted] [1 rgb 1] } } }\n")
+                .bare_message().find("unsupported: the pigment item 'quilted'"), std::string::npos);
 }
 
 // function { EXPRESSION } as a pattern (POV-Ray's Parse_Function): a float function of x, y, z.
@@ -116,6 +116,17 @@ TEST(PigmentParse, FunctionPattern) {
   EXPECT_NE(parse_error("#version 3.7;\n#declare G = function { pattern { agate } }\n"
                         "sphere { 0, 1 pigment { function { G(x, y, z) } } }\n")
                 .bare_message().find("unsupported: a pattern of the pattern function"), std::string::npos);
+}
+
+// spiral1/spiral2 N: the arm count truncated to a short, and the triangle wave by default.
+TEST(PigmentParse, Spirals) {
+  const SceneDescription s = scene("sphere { 0, 1 pigment { spiral1 3.7 } }\nsphere { 0, 1 pigment { spiral2 -2 sine_wave } }\n");
+  EXPECT_EQ(pigment_of(s, 0).pattern, PatternKind::spiral1);
+  EXPECT_EQ(pigment_of(s, 0).arms, 3);
+  EXPECT_EQ(pigment_of(s, 0).wave, WaveType::triangle);
+  EXPECT_EQ(pigment_of(s, 1).pattern, PatternKind::spiral2);
+  EXPECT_EQ(pigment_of(s, 1).arms, -2);
+  EXPECT_EQ(pigment_of(s, 1).wave, WaveType::sine);
 }
 
 TEST(PigmentParse, GlobalNoiseGenerator) {
