@@ -367,6 +367,15 @@ struct Object {
   std::optional<Interior> interior;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
+  // no_image [bool], no_reflection [bool] (POV-Ray's NO_IMAGE_FLAG, NO_REFLECTION_FLAG): the object is left out by
+  // rays that see the image (camera rays, and rays refracted without a reflection in their history), or by rays
+  // with a reflection in their history. Shadow rays see it either way. A CSG parent's flags reach its children
+  // (post_process); the renderer decides per ray kind (renderer/geometry.hpp, ray_kind).
+  bool no_image = false;
+  bool no_reflection = false;
+  // no_radiosity [bool]: POV-Ray leaves the object out of radiosity rays only. povtrace refuses radiosity by name,
+  // so for every scene it renders this flag changes nothing; it is kept (and inherited) for completeness.
+  bool no_radiosity = false;
   // uv_mapping (before any texture): textures are evaluated at the hit's <u, v, 0> and later transforms of the
   // object no longer move them (POV-Ray's UV_FLAG). CSG children that inherit the texture inherit the flag.
   bool uv_mapping = false;

@@ -89,8 +89,7 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (o.unsupported) {
     const std::string& n = o.unsupported->name;
     static const char* const harmless[] = {
-        "'normal { }' perturbation", "the object modifier 'no_image'", "the object modifier 'no_reflection'",
-        "the object modifier 'no_radiosity'", "the object modifier 'double_illuminate'",
+        "'normal { }' perturbation", "the object modifier 'double_illuminate'",
         "the object modifier 'sturm'", "the object modifier 'interior_texture'", "the object modifier 'uv_mapping'",
         "the object modifier 'photons'", "the object modifier 'radiosity'", "the object modifier 'split_union'",
         "the object modifier 'cutaway_textures'", "the object modifier 'hierarchy'", "the material item"};

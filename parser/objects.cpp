@@ -80,6 +80,11 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "no_shadow") { object.no_shadow = true; return true; }
+  // no_image, no_reflection, no_radiosity [bool]: POV-Ray's Bool_Flag, so an explicit false (<= 0) clears a flag
+  // the object already had (from a declared object it copies).
+  if (k == "no_image") { object.no_image = optional_float(1.0) > 0.0; return true; }
+  if (k == "no_reflection") { object.no_reflection = optional_float(1.0) > 0.0; return true; }
+  if (k == "no_radiosity") { object.no_radiosity = optional_float(1.0) > 0.0; return true; }
   if (k == "inverse") { invert_object(object); return true; }
   if (k == "clipped_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "bounded_by") { parse_clip_or_bound(t, object); return true; }
@@ -94,8 +99,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
                "modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "no_image", "no_reflection", "no_radiosity", "double_illuminate",
-      "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
+      "double_illuminate", "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {

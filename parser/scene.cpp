@@ -292,8 +292,8 @@ void Interpreter::add_light(Light light) {
 }
 
 // Post_Process when a finished top-level object is placed (§10 "Texture inheritance"): CSG children without a
-// texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow
-// is forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
+// texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow,
+// no_image, no_reflection and no_radiosity are forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
 // current #default texture.
 void Interpreter::post_process(Object& object) {
   // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
@@ -316,6 +316,11 @@ void Interpreter::post_process(Object& object) {
       if (!child.interior) child.interior = object.interior;
       if (!child.hollow) child.hollow = object.hollow;   // hollow reaches the children that did not set it
       if (object.no_shadow) child.no_shadow = true;
+      // POV-Ray's Post_Process sets the parent's no_image, no_reflection and no_radiosity on every child too
+      // (never clearing one a child set itself).
+      if (object.no_image) child.no_image = true;
+      if (object.no_reflection) child.no_reflection = true;
+      if (object.no_radiosity) child.no_radiosity = true;
       post_process(child);
     }
     for (auto& light : csg->lights) add_light(std::move(light));

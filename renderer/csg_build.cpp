@@ -54,6 +54,7 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
   for (Primitive& removed : primitives_for(o.removed_bounds, false, add_leaf)) bounds.push_back(std::move(removed));
   if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
   p.casts_shadow = !o.no_shadow;
+  set_ray_flags(p, o);
   return p;
 }
 
@@ -65,6 +66,12 @@ bool all_children_without_shadow(const Csg& csg) {
 }
 
 }  // namespace
+
+void set_ray_flags(Primitive& p, const Object& o) {
+  p.ray_flags = static_cast<std::uint8_t>((o.no_image ? ray_flag::no_image : 0) |
+                                          (o.no_reflection ? ray_flag::no_reflection : 0));
+  p.hidden_from = ray_flag::hidden_from(p.ray_flags, false);
+}
 
 bool splits_into_children(const Object& o) {
   const auto* csg = std::get_if<Csg>(&o.shape);

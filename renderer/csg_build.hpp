@@ -20,6 +20,11 @@ using LeafBuilder = std::function<void(const Object& leaf, bool shaded, std::vec
 // becomes a scene object of its own; a bounded union stays whole since Split_Unions is off by default).
 bool splits_into_children(const Object& o);
 
+// Gives `p` the object's no_image / no_reflection (Primitive::ray_flags) and the top-level test of them
+// (Primitive::hidden_from). A split union's children are top-level objects in POV-Ray (Link_To_Frame), each tested
+// with its own flags, which already include the union's (the parser's post_process).
+void set_ray_flags(Primitive& p, const Object& o);
+
 // Whether the object needs a CSG node: it is CSG (and not split) or has clip or bounding objects.
 bool needs_csg_node(const Object& o);
 

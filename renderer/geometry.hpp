@@ -26,9 +26,54 @@ inline constexpr double plane_depth = 1e-6;
 inline constexpr double box_depth = 1e-6;
 }  // namespace tolerance
 
+// What a ray is, for the object modifiers no_image and no_reflection (POV-Ray 3.7, source/backend/frame.h and
+// render/ray.cpp): a ray carries a primary, a reflection and a refraction flag. A camera ray is primary; a
+// reflected ray is reflection-flagged and keeps the refraction flag of the ray it came from, a refracted (or
+// continued, ior 1) ray is refraction-flagged and keeps the reflection flag, so the two flags say whether a
+// reflection or a refraction happened anywhere in the ray's history. An "image" ray is a primary ray or a
+// refraction-flagged one without the reflection flag. Shadow rays carry no flag and see every object.
+// Exactly one bit is set for a flagged ray (one per combination), so that what an object hides from is a mask.
+// Scenes without these modifiers trace every ray as `other`, which no object hides from.
+namespace ray_kind {
+inline constexpr std::uint8_t other = 0;                    // shadow rays, and every ray of a scene without flags
+inline constexpr std::uint8_t primary = 1;                  // camera rays
+inline constexpr std::uint8_t reflected = 2;                // reflection flag only
+inline constexpr std::uint8_t refracted = 4;                // refraction flag only (an image ray)
+inline constexpr std::uint8_t reflected_refracted = 8;      // both flags
+inline constexpr std::uint8_t image = primary | refracted;  // Ray::IsImageRay
+inline constexpr std::uint8_t reflection = reflected | reflected_refracted;   // Ray::IsReflectionRay
+
+// The kind of a ray reflected (SetFlags(ReflectionRay, ray)) or refracted (SetFlags(RefractionRay, ray)) from a
+// ray of kind k; `other` stays `other` (the scene has no flags).
+constexpr std::uint8_t after_reflection(std::uint8_t k) {
+  return k == other ? other : (k & (refracted | reflected_refracted)) ? reflected_refracted : reflected;
+}
+constexpr std::uint8_t after_refraction(std::uint8_t k) {
+  return k == other ? other : (k & reflection) ? reflected_refracted : refracted;
+}
+}  // namespace ray_kind
+
+// An object's no_image / no_reflection modifiers (Primitive::ray_flags).
+namespace ray_flag {
+inline constexpr std::uint8_t no_image = 1;
+inline constexpr std::uint8_t no_reflection = 2;
+
+// The ray kinds that skip an object with `flags`, as POV-Ray tests it: at the top level and for merge children
+// (NoSomethingFlagRayObjectCondition, csg.cpp Test_Ray_Flags_Shadow) no_image hides from every image ray; for
+// union children (Test_Ray_Flags) primary rays still see a no_image child, only refracted image rays skip it.
+// Intersection children are never tested.
+constexpr std::uint8_t hidden_from(std::uint8_t flags, bool union_child) {
+  std::uint8_t kinds = 0;
+  if (flags & no_image) kinds |= union_child ? ray_kind::refracted : ray_kind::image;
+  if (flags & no_reflection) kinds |= ray_kind::reflection;
+  return kinds;
+}
+}  // namespace ray_flag
+
 struct Ray {
   Vec3 origin;
   Vec3 direction;  // unit length: every depth is a world distance
+  std::uint8_t kind = ray_kind::other;   // for no_image / no_reflection (ray_kind above)
 };
 
 struct Bounds {
@@ -68,6 +113,11 @@ struct Primitive {
   std::uint32_t material = 0;    // index into the render scene's material table (owned by the shading side)
   std::uint32_t object = 0;      // index of the top-level scene object this primitive belongs to
   bool casts_shadow = true;      // false for no_shadow objects
+  // The object's own no_image / no_reflection (ray_flag), which a CSG parent tests its children against, and the
+  // ray kinds that skip this primitive as a top-level object (the BVH's test): ray_flag::hidden_from of its flags,
+  // and for a union split into its children also what the union's own test and the children's tests add.
+  std::uint8_t ray_flags = 0;
+  std::uint8_t hidden_from = 0;
   bool inverse = false;          // inside/outside flipped
   std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
   std::uint32_t element_materials = 0;     // meshes: material of texture k of the mesh's list is this + k

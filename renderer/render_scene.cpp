@@ -57,6 +57,7 @@ void add_primitives(const Object& o, std::uint32_t material, std::uint32_t objec
   p.material = material;
   p.object = object_index;
   p.casts_shadow = !o.no_shadow;
+  set_ray_flags(p, o);
   p.inverse = o.inverse;
   p.transformed = !(o.world_from_object == Matrix::identity());
   p.world_from_object = o.world_from_object;
@@ -172,6 +173,16 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
   if (const auto* mesh = std::get_if<Mesh>(&o.shape))
     out.back().element_materials = materials.append(mesh->textures, o);
 }
+
+
+// Whether some object (a CSG child included) has no_image or no_reflection.
+bool any_ray_flags(const std::vector<Object>& objects) {
+  for (const Object& o : objects) {
+    if (o.no_image || o.no_reflection) return true;
+    if (const auto* csg = std::get_if<Csg>(&o.shape); csg && any_ray_flags(csg->children)) return true;
+  }
+  return false;
+}
 }  // namespace
 
 // Every object has an interior in POV-Ray; a camera ray starts inside those whose object contains its origin
@@ -204,6 +215,7 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
     }
   }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
+  r.any_ray_flags = any_ray_flags(scene.objects);
   for (const auto& p : primitives) {
     const Material& m = r.materials[p.material];
     const Interior& in = m.interior;

@@ -174,6 +174,9 @@ struct RenderScene {
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;
   bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
+  // Some object has no_image or no_reflection: rays carry their kind (geometry.hpp ray_kind); otherwise every ray
+  // is traced as ray_kind::other and no object is skipped.
+  bool any_ray_flags = false;
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
   std::vector<Fog> fogs;             // as POV-Ray lists them (the last written first)
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;   // for turbulent fog

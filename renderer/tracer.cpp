@@ -48,6 +48,11 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
   } else {
     for (const InteriorRef& r : scene_.camera_interiors) state.interiors.append(r);
   }
+  if (scene_.any_ray_flags) {   // no_image / no_reflection: a camera ray is POV-Ray's primary ray
+    Ray primary = ray;
+    primary.kind = ray_kind::primary;
+    return trace(primary, 1, 1.0, state);
+  }
   return trace(ray, 1, 1.0, state);
 }
 
@@ -328,7 +333,7 @@ Radiance Tracer::trace_reflection(const Ray& ray, Vec3 point, Vec3 normal, Vec3 
   ++counts_.secondary;
   RayState reflected = state;
   reflected.alpha_background = false;
-  return trace(Ray{point, normalize(r)}, level + 1, weight, reflected);
+  return trace(Ray{point, normalize(r), ray_kind::after_reflection(ray.kind)}, level + 1, weight, reflected);
 }
 
 // Transmission (§4 "Transmission/refraction"): the relative ior comes from the interiors the ray is in.
@@ -371,7 +376,8 @@ bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 no
   Radiance behind;
   if (std::fabs(eta - 1.0) < tolerance::epsilon) {
     // An ior-1 surface continues the ray without using up a trace level.
-    behind = trace(Ray{point, ray.direction}, level, next_weight, next);
+    // POV-Ray flags it as refracted too (ComputeRefraction sets the flags before this case).
+    behind = trace(Ray{point, ray.direction, ray_kind::after_refraction(ray.kind)}, level, next_weight, next);
   } else {
     double m = dot(ray.direction, normal);
     const Vec3 facing = m <= 0 ? normal : -normal;
@@ -384,7 +390,8 @@ bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 no
       return true;
     }
     const Vec3 refracted = ray.direction * eta + facing * (eta * m - std::sqrt(k));
-    behind = trace(Ray{point, normalize(refracted)}, level + 1, next_weight, next);
+    behind = trace(Ray{point, normalize(refracted), ray_kind::after_refraction(ray.kind)}, level + 1, next_weight,
+                   next);
   }
   out.colour += mul(mul(attenuation, filter), behind.colour);
   out.transmit = grey(attenuation) * behind.transmit * trans;

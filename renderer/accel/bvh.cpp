@@ -82,6 +82,7 @@ struct Nearest {
 // Considers the nearest root of primitive i above t_min; keeps it if nearer than the current best (ties: lower
 // index wins).
 inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double t_min, Nearest& best) {
+  if (p.hidden_from & ray.kind) return;   // no_image / no_reflection (always 0 for scenes without them)
   // A hit at exactly the best depth may still win the tie, so the search interval ends just above it.
   const double t_max = best.primitive != ~0u && i < best.primitive ? std::nextafter(best.t, tolerance::bound_huge)
                                                                    : best.t;
@@ -279,7 +280,7 @@ void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, Sh
   thread_local HitBuffer hits;
   auto report = [&](std::uint32_t i) {
     const Primitive& p = primitives_[i];
-    if (!p.casts_shadow) return true;
+    if (!p.casts_shadow || (p.hidden_from & ray.kind)) return true;
     if (!p.data) {   // few roots: no buffer needed
       const Intersections xs = intersect_all(p, ray);
       for (int k = 0; k < xs.count; ++k)

@@ -21,6 +21,9 @@
 // - bounded_by: before any child is tested, for each bounding object the ray must hit it (any root at depth
 //   >= MIN_ISECT_DEPTH, as Find_Intersection) or start inside it (Ray_In_Bound); otherwise the node has no hits
 //   for this ray. It never changes the inside test.
+// - no_image / no_reflection: a union skips the children a ray's kind does not see (Test_Ray_Flags, under which
+//   camera rays still see no_image children); a merge skips them (Test_Ray_Flags_Shadow, the top-level test) both
+//   for their hits and for the inside tests that remove the other children's hits; an intersection tests none.
 // - Each hit keeps the child primitive it came from as `leaf`, so the child's texture and normal are used: a
 //   difference's cut faces are the subtracted objects' surfaces and carry their textures.
 //
@@ -97,13 +100,23 @@ bool inside_all(const std::vector<Primitive>& objects, Vec3 point) {
   return true;
 }
 
-// Whether a hit of child `hit_child` at `point` is part of the node's surface.
-bool survives(const CsgData& d, std::size_t hit_child, Vec3 point) {
+// Whether a ray of this kind skips `child` of a node of this operation (no_image / no_reflection): POV-Ray tests
+// union children with Test_Ray_Flags (primary rays still see no_image children), merge children with
+// Test_Ray_Flags_Shadow (as at the top level), and intersection children not at all.
+bool skipped_child(CsgOperation operation, const Primitive& child, std::uint8_t kind) {
+  if (!(child.ray_flags && kind) || operation == CsgOperation::intersection) return false;
+  return ray_flag::hidden_from(child.ray_flags, operation == CsgOperation::union_) & kind;
+}
+
+// Whether a hit of child `hit_child` at `point` is part of the node's surface, for a ray of kind `kind`.
+bool survives(const CsgData& d, std::size_t hit_child, Vec3 point, std::uint8_t kind) {
   if (!inside_all(d.clips, point)) return false;
   if (d.operation == CsgOperation::union_) return true;
   const bool keep_if_inside = d.operation == CsgOperation::intersection;
   for (std::size_t j = 0; j < d.children.size(); ++j) {
     if (j == hit_child) continue;
+    // A merge child the ray skips does not hide the others' surfaces inside it (CSGMerge::All_Intersections).
+    if (skipped_child(d.operation, d.children[j], kind)) continue;
     if (inside(d.children[j], point) != keep_if_inside) return false;
   }
   return true;
@@ -118,6 +131,7 @@ void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (d.bounding_box.finite() && !ray_meets(d.bounding_box, ray)) return;
   if (!d.bounds.empty() && !ray_in_bounds(d, ray, out)) return;
   for (std::size_t i = 0; i < d.children.size(); ++i) {
+    if (skipped_child(d.operation, d.children[i], ray.kind)) continue;
     const Bounds& cull = d.child_cull[i];
     if (is_empty(cull) || (cull.finite() && !ray_meets(cull, ray))) continue;
     // The child appends its roots; they are filtered in place (indices, since nested nodes may grow `out`).
@@ -125,7 +139,7 @@ void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
     collect_hits(d.children[i], ray, out);
     std::size_t kept = begin;
     for (std::size_t k = begin; k < out.size(); ++k)
-      if (survives(d, i, ray.origin + ray.direction * out[k].t)) out[kept++] = out[k];
+      if (survives(d, i, ray.origin + ray.direction * out[k].t, ray.kind)) out[kept++] = out[k];
     out.resize(kept);
   }
 }
@@ -248,6 +262,8 @@ Primitive inverted(const Primitive& p) {
   q.material = p.material;
   q.object = p.object;
   q.casts_shadow = p.casts_shadow;
+  q.ray_flags = p.ray_flags;
+  q.hidden_from = p.hidden_from;
   return q;
 }
 

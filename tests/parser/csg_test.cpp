@@ -156,6 +156,37 @@ TEST(Csg, NoShadowAndLightsPropagate) {
   EXPECT_EQ(s.lights[0].location.x, 1.0);   // moved with the CSG
 }
 
+// Post_Process: a CSG parent's no_image, no_reflection and no_radiosity are set on every child, nested CSG
+// included; a child's own flags stay; nothing is cleared.
+TEST(Csg, RayFlagsPropagateToChildren) {
+  const SceneDescription s = scene(
+      "union { sphere { 0, 1 no_reflection } merge { box { -1, 1 } sphere { x, 1 } } no_image }\n"
+      "merge { sphere { 0, 1 no_image } sphere { x, 1 } no_reflection no_radiosity }\n"
+      "intersection { sphere { 0, 1 no_image } sphere { x, 1 } }\n");
+  const Csg& u = csg_of(s.objects.at(0));
+  EXPECT_TRUE(s.objects[0].no_image);
+  EXPECT_FALSE(s.objects[0].no_reflection);
+  EXPECT_TRUE(u.children[0].no_image);
+  EXPECT_TRUE(u.children[0].no_reflection);   // its own
+  EXPECT_TRUE(u.children[1].no_image);
+  for (const Object& c : csg_of(u.children[1]).children) {
+    EXPECT_TRUE(c.no_image);
+    EXPECT_FALSE(c.no_reflection);
+  }
+  const Csg& m = csg_of(s.objects.at(1));
+  EXPECT_TRUE(m.children[0].no_image);
+  EXPECT_FALSE(m.children[1].no_image);
+  for (const Object& c : m.children) {
+    EXPECT_TRUE(c.no_reflection);
+    EXPECT_TRUE(c.no_radiosity);
+  }
+  const Csg& i = csg_of(s.objects.at(2));
+  EXPECT_FALSE(s.objects[2].no_image);   // a child's flag does not reach its parent
+  EXPECT_TRUE(i.children[0].no_image);
+  EXPECT_FALSE(i.children[1].no_image);
+  for (const Object& o : s.objects) EXPECT_FALSE(o.unsupported);
+}
+
 TEST(ClipAndBound, PovRaysErrors) {
   auto message = [](const std::string& text) { return std::string(parse_error("#version 3.7;\n" + text).what()); };
   EXPECT_NE(message("sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } clipped_by { box { 0, 1 } "

@@ -1,6 +1,7 @@
 // What the parser puts in the SceneDescription for small scenes: camera (POV-Ray's fixed order of application,
 // povray-pixel-pipeline.md §1), lights (§3), shapes and transforms (povray-sdl-and-geometry.md §8–§9), textures
 // and finishes (§11, pipeline §2), #default, object copies, global settings and background.
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -232,6 +233,39 @@ TEST(Shapes, SpherePlaneBox) {
     expect_matrix_near(o.world_from_object, Matrix::identity());
   }
   EXPECT_EQ(s.objects[3].loc.line, 5);
+}
+
+// no_image, no_reflection, no_radiosity [bool] (POV-Ray's Bool_Flag): on by default, a value > 0 sets, <= 0 clears
+// (also a flag the declared object had).
+TEST(Shapes, RayFlagsTakeAnOptionalBool) {
+  const SceneDescription s = scene(
+      "#declare S = sphere { 0, 1 no_image no_reflection no_radiosity }\n"
+      "sphere { 0, 1 no_image no_reflection no_radiosity }\n"
+      "sphere { 0, 1 no_image 0 no_reflection off no_radiosity false }\n"
+      "object { S no_image 0 }\n"
+      "object { S no_reflection -1 no_radiosity 0 }\n"
+      "sphere { 0, 1 no_image on no_reflection 0.5 }\n"
+      "sphere { 0, 1 }\n");
+  ASSERT_EQ(s.objects.size(), 6u);
+  auto flags = [&](std::size_t i) {
+    const Object& o = s.objects[i];
+    EXPECT_FALSE(o.unsupported) << i;
+    return std::array<bool, 3>{o.no_image, o.no_reflection, o.no_radiosity};
+  };
+  EXPECT_EQ(flags(0), (std::array<bool, 3>{true, true, true}));
+  EXPECT_EQ(flags(1), (std::array<bool, 3>{false, false, false}));
+  EXPECT_EQ(flags(2), (std::array<bool, 3>{false, true, true}));
+  EXPECT_EQ(flags(3), (std::array<bool, 3>{true, false, false}));
+  EXPECT_EQ(flags(4), (std::array<bool, 3>{true, true, false}));
+  EXPECT_EQ(flags(5), (std::array<bool, 3>{false, false, false}));
+}
+
+// A disc's optional hole radius stops at these modifiers (they start no number).
+TEST(Shapes, RayFlagsAfterADisc) {
+  const SceneDescription s = scene("disc { 0, y, 1 no_image }\ndisc { 0, y, 1 no_reflection 0 }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_TRUE(s.objects[0].no_image);
+  EXPECT_FALSE(s.objects[1].no_reflection);
 }
 
 TEST(Shapes, ObjectFlagsAndInterior) {
