@@ -94,6 +94,7 @@ enum class PatternKind {
   image_map,                                                        // the colour of an image (Pigment::image)
   function,                                                         // a user function of x, y, z (Pigment::function)
   spiral1, spiral2,                                                 // spirals around z with Pigment::arms arms
+  quilted,                                                          // rounded cells (Pigment::control0/1)
   uv_mapping                                                        // its one entry at the hit's <u, v, 0>
 };
 
@@ -159,6 +160,7 @@ struct Pigment {
   CrackleParams crackle;
   std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern: a float function of x, y, z
   int arms = 0;                                         // spiral1/spiral2: the number of arms (a short in POV-Ray)
+  float control0 = 1.0f, control1 = 1.0f;               // quilted's curve controls (single precision, as POV-Ray)
   double frequency = 1.0;        // 0 for list patterns: no frequency/phase/wave step (pattern.cpp Evaluate_TPat)
   double phase = 0.0;
   WaveType wave = WaveType::ramp;
@@ -201,7 +203,7 @@ struct Finish {
 // normal { } (POV-Ray's TNORMAL, texture/normal.cpp Perturb_Normal). The normal-only patterns perturb the normal
 // with their own formula; any pigment pattern used as a normal (`pattern`) is sampled around the point and its
 // slope bends the normal.
-enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves,
+enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves, quilted,
                         bump_map,      // the slope of an image's grey (or palette indices): pattern.image
                         uv_mapping };  // uv_normal at the hit's <u, v, 0>
 

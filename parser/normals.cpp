@@ -31,6 +31,12 @@ bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
       n.has_type = true;
       return true;
     }
+  if (t.is("quilted")) {   // a normal of its own (POV-Ray's normal.cpp quilted), with the pattern's controls
+    try_pattern(t, n.pattern);
+    n.kind = NormalKind::quilted;
+    n.has_type = true;
+    return true;
+  }
   if (t.is("checker") || t.is("hexagon") || t.is("brick")) {
     const PatternKind kind = t.is("checker") ? PatternKind::checker
                              : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;

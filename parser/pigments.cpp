@@ -152,6 +152,12 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
     p.function = std::move(fn);
     return true;
   }
+  if (t.is("quilted")) {   // POV-Ray resets both controls and skips the wave step's frequency
+    p.pattern = PatternKind::quilted;
+    p.control0 = p.control1 = 1.0f;
+    p.frequency = 0.0;
+    return true;
+  }
   if (t.is("spiral1") || t.is("spiral2")) {
     p.pattern = t.is("spiral1") ? PatternKind::spiral1 : PatternKind::spiral2;
     // POV-Ray keeps the arm count as a short, converted from the float as written.
@@ -341,6 +347,12 @@ bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
     if (p.pattern != kind)
       fail_at(t, "'" + std::string(t.text) + "' cannot be used with a non-" + std::string(name) + " pattern");
   };
+  if (t.is("control0") || t.is("control1")) {
+    if (p.pattern != PatternKind::quilted)
+      fail_at(t, "Keyword '" + std::string(t.text) + "' cannot be used with this pattern (only with quilted).");
+    (t.is("control0") ? p.control0 : p.control1) = static_cast<float>(parse_float());
+    return true;
+  }
   if (t.is("agate_turb")) {
     require(PatternKind::agate, "agate");
     p.agate_turb = single(parse_float());

@@ -32,7 +32,7 @@ bool Interpreter::starts_texture_pattern(const Token& t) {
   if (t.is("uv_mapping") || t.is("tiles") || t.is("material_map") || t.is("image_map")) return true;
   static const std::string_view patterns[] = {
       "checker", "hexagon", "brick", "gradient", "radial", "onion", "planar", "boxed", "spherical", "cylindrical",
-      "leopard", "bozo", "spotted", "granite", "marble", "wood", "agate", "crackle", "cells", "average", "function", "spiral1", "spiral2",
+      "leopard", "bozo", "spotted", "granite", "marble", "wood", "agate", "crackle", "cells", "average", "function", "spiral1", "spiral2", "quilted",
       "bumps", "dents", "wrinkles", "ripples", "waves"};
   for (auto p : patterns)
     if (t.is(p)) return true;

@@ -69,6 +69,8 @@ Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& 
     case NormalKind::wrinkles: return wrinkles(p) * n.amount;
     case NormalKind::ripples: return ripples(n, p, waves, false);
     case NormalKind::waves: return ripples(n, p, waves, true);
+    case NormalKind::quilted:
+      return quilted_offset(p, n.pattern.params.control0, n.pattern.params.control1) * n.amount;
     case NormalKind::bump_map:
     case NormalKind::uv_mapping: break;   // perturb_normal handles them
   }

@@ -30,6 +30,14 @@ double radial(Vec3 p) {
   return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / (2.0 * std::numbers::pi);
 }
 
+// POV-Ray's FLOOR macro: floor, except that an exact negative integer n gives n − 1.
+double pov_floor(double x) { return x >= 0.0 ? std::floor(x) : 0.0 - std::floor(0.0 - x) - 1.0; }
+
+double quilted(Vec3 p, double control0, double control1) {
+  const Vec3 v = quilted_offset(p, control0, control1);
+  return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
+}
+
 double leopard(Vec3 p) {
   const double mean = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
   return mean * mean;
@@ -41,6 +49,17 @@ double patterns::triangle_wave(double v) {
   // POV-Ray's Triangle_Wave forms a negative value's offset as v + 1 + floor(|v|), which rounds differently.
   const double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
   return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// The offset from the unit cell's centre (cells split by POV-Ray's FLOOR), scaled by a cubic Bézier of its length
+// (ends 0 and 1, inner controls control0 and control1, times POV-Ray's 1.154700538 ≈ 2/√3): quilt_cubic.
+Vec3 quilted_offset(Vec3 p, double control0, double control1) {
+  constexpr double kScale = 1.154700538;
+  const Vec3 v{p.x - pov_floor(p.x) - 0.5, p.y - pov_floor(p.y) - 0.5, p.z - pov_floor(p.z) - 0.5};
+  const double t = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+  const double it = 1 - t, it2 = it * it, t2 = t * t, t3 = t * t2;
+  const double s = (t3 + 3.0 * t * it2 * control0 + 3.0 * t2 * it * control1) * kScale;
+  return {v.x * s, v.y * s, v.z * s};
 }
 
 double cycloidal(double v) {
@@ -93,6 +112,7 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
     case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
     case PatternKind::function: return function_pattern(*params.function, p);
+    case PatternKind::quilted: return quilted(p, params.control0, params.control1);
     case PatternKind::spiral1: return patterns::spiral1(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::spiral2: return patterns::spiral2(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::solid:

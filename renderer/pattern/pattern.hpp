@@ -22,6 +22,7 @@ struct PatternParams {
   double frequency = 1.0, phase = 0.0;    // ripples and waves use them inside too (as well as in the wave step)
   std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern
   int arms = 0;                                          // spiral1, spiral2
+  double control0 = 1.0, control1 = 1.0;                 // quilted
 };
 
 // The frequency/phase/wave step every pattern value goes through.
@@ -38,6 +39,9 @@ double pattern_value(const PatternParams& params, Vec3 p);
 
 // Frequency, phase and the wave shape (Evaluate_TPat after the pattern switch).
 double apply_wave(double value, const WaveParams& wave);
+
+// quilted's vector (the pattern is the mean of its absolute components; the normal adds it times the amount).
+Vec3 quilted_offset(Vec3 p, double control0, double control1);
 
 // POV-Ray's cycloidal(): sin(2π·v) computed on the fractional part of v.
 double cycloidal(double v);

@@ -104,8 +104,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { facets } }\n", 2, 1,
                   "unsupported: the normal item 'facets'"},
-        ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { quilted 1 } } }\n", 2, 1,
-                  "unsupported: the normal item 'quilted'"},
+        ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { facets 0.5 } } }\n", 2, 1,
+                  "unsupported: the normal item 'facets'"},
         ErrorCase{"Irid", "#version 3.7;\nsphere { 0, 1 finish { irid { 0.3 } } }\n", 2, 1,
                   "unsupported: the finish item 'irid'"},
         ErrorCase{"ProjectedThrough",

@@ -95,8 +95,8 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("pigment_map"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n")
                 .bare_message().find("unsupported: the warp 'black_hole'"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 quilted] [1 rgb 1] } } }\n")
-                .bare_message().find("unsupported: the pigment item 'quilted'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 slope y] [1 rgb 1] } } }\n")
+                .bare_message().find("unsupported: the pigment item 'slope'"), std::string::npos);
 }
 
 // function { EXPRESSION } as a pattern (POV-Ray's Parse_Function): a float function of x, y, z.
@@ -127,6 +127,24 @@ TEST(PigmentParse, Spirals) {
   EXPECT_EQ(pigment_of(s, 1).pattern, PatternKind::spiral2);
   EXPECT_EQ(pigment_of(s, 1).arms, -2);
   EXPECT_EQ(pigment_of(s, 1).wave, WaveType::sine);
+}
+
+// quilted resets control0/control1 to 1 and the frequency to 0; the controls belong to quilted only.
+TEST(PigmentParse, Quilted) {
+  const SceneDescription s = scene("sphere { 0, 1 pigment { quilted control0 0.25 control1 0.1 } }\n"
+                                   "sphere { 0, 1 normal { quilted 0.5 control1 2 } }\n");
+  const Pigment& p = pigment_of(s, 0);
+  EXPECT_EQ(p.pattern, PatternKind::quilted);
+  EXPECT_EQ(p.control0, 0.25f);
+  EXPECT_EQ(p.control1, 0.1f);
+  EXPECT_EQ(p.frequency, 0.0);
+  const Normal& n = *s.objects.at(1).texture->layers.back().normal;
+  EXPECT_EQ(n.kind, NormalKind::quilted);
+  EXPECT_EQ(n.pattern.control0, 1.0f);
+  EXPECT_EQ(n.pattern.control1, 2.0f);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo control0 1 } }\n").bare_message().find(
+                "cannot be used with this pattern"),
+            std::string::npos);
 }
 
 TEST(PigmentParse, GlobalNoiseGenerator) {
