@@ -116,6 +116,8 @@ std::vector<double> Interpreter::parse_call_arguments(const Token& name, std::si
   return args;
 }
 
+bool Interpreter::is_float_function(std::string_view name) { return float_functions().count(name) > 0; }
+
 Numeric Interpreter::parse_function_call(const Token& name) {
   const std::string_view n = name.text;
   auto it = float_functions().find(n);

@@ -255,6 +255,7 @@ class Interpreter {
   SkySphere parse_sky_sphere(const Token& keyword);
   Fog parse_fog(const Token& keyword);
   double optional_float(double fallback);
+  static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
   Interior parse_interior_block(const Token& keyword, const Interior& start);
   std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);
   bool try_pigment_item(const Token& t, Pigment& p);

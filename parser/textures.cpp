@@ -149,11 +149,9 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
       f.roughness = parse_float();
       if (f.roughness == 0) fail_at(t, "roughness must not be 0 (the highlight exponent is 1/roughness)");
     } else if (k == "metallic") {
-      // `metallic` alone means 1 (§2 defaults).
-      Token n = peek();
-      const bool has_value = n.kind == TokenKind::number || n.is("(") || n.is("-") ||
-                             (n.kind == TokenKind::identifier && !is_reserved_word(n.text));
-      f.metallic = has_value ? parse_float() : 1.0;
+      // `metallic` alone means 1 (§2 defaults); `metallic on` and any float expression give their value
+      // (POV-Ray's Allow_Float).
+      f.metallic = optional_float(1.0);
     } else if (k == "reflection") {
       parse_finish_reflection(f);
     } else if (k == "reflection_exponent") {
@@ -296,6 +294,7 @@ double Interpreter::optional_float(double fallback) {
       starts = v && std::holds_alternative<Numeric>(*v);
     } else {
       for (auto w : float_words) starts = starts || n.text == w;
+      starts = starts || is_float_function(n.text);
     }
   }
   return starts ? parse_float() : fallback;

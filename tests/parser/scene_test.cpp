@@ -355,6 +355,8 @@ INSTANTIATE_TEST_SUITE_P(
     Table, FinishValue,
     ::testing::Values(FinishCase{"metallic", &Finish::metallic, 1}, FinishCase{"metallic 0.3", &Finish::metallic, 0.3},
                       FinishCase{"metallic phong 1", &Finish::metallic, 1},
+                      FinishCase{"metallic off", &Finish::metallic, 0}, FinishCase{"metallic on", &Finish::metallic, 1},
+                      FinishCase{"metallic abs(-0.5)", &Finish::metallic, 0.5},
                       FinishCase{"metallic phong 1", &Finish::phong, 1},
                       FinishCase{"phong 0.5", &Finish::phong_size, 40},   // the rest keeps its default
                       FinishCase{"phong 1 phong_size 200", &Finish::phong_size, 200},
