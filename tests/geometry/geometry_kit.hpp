@@ -2,6 +2,8 @@
 // seeded random directions and transforms the randomised checks draw from.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <random>
 
 #include "renderer/geometry.hpp"
@@ -70,6 +72,27 @@ inline Matrix random_mirroring_transform(std::mt19937& rng, int mirror_axis) {
   if (coin(rng) < 0.2) scale[mirror_axis] = -scale[mirror_axis];
   return Matrix::scaling(scale) * Matrix::rotation({ang(rng), ang(rng), ang(rng)}) *
          Matrix::translation({tr(rng), tr(rng), tr(rng)});
+}
+
+// Traces `rays` seeded random rays (origin coordinates pos(rng)·1.5, random unit directions) through the BVH and by
+// brute force; each must give the same closest hit (depth and primitive). Returns how many hits `counted` accepts,
+// so that a test can check its own shapes were reached and not only the fillers around them.
+template <class Counted>
+int bvh_hits_equal_to_brute_force(const render::Accelerator& acc, std::mt19937& rng,
+                                  std::uniform_real_distribution<double>& pos, int rays, Counted counted) {
+  int count = 0;
+  for (int k = 0; k < rays; ++k) {
+    const render::Ray r{{pos(rng) * 1.5, pos(rng) * 1.5, pos(rng) * 1.5}, random_unit(rng)};
+    const render::Hit fast = acc.closest_hit(r, render::tolerance::min_isect_depth, render::tolerance::bound_huge);
+    const render::Hit slow =
+        acc.closest_hit_brute_force(r, render::tolerance::min_isect_depth, render::tolerance::bound_huge);
+    EXPECT_EQ(fast.found(), slow.found()) << "ray " << k;
+    if (!fast.found() || !slow.found()) continue;
+    EXPECT_EQ(fast.t, slow.t) << "ray " << k;
+    EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
+    count += counted(fast.primitive) ? 1 : 0;
+  }
+  return count;
 }
 
 }  // namespace povtrace::test

@@ -141,17 +141,9 @@ TEST(Isosurface, BvhEqualsBruteForce) {
     prims.push_back(p);
   }
   const Accelerator acc(prims);
-  int iso_hits = 0;
-  for (int k = 0; k < 1500; ++k) {
-    const Ray r{{pos(rng) * 1.5, pos(rng) * 1.5, pos(rng) * 1.5}, random_unit(rng)};
-    const Hit fast = acc.closest_hit(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    const Hit slow = acc.closest_hit_brute_force(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    ASSERT_EQ(fast.found(), slow.found()) << "ray " << k;
-    if (!fast.found()) continue;
-    EXPECT_EQ(fast.t, slow.t) << "ray " << k;
-    EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
-    iso_hits += fast.primitive % 3 != 2;
-  }
+  const int iso_hits = bvh_hits_equal_to_brute_force(acc, rng, pos, 1500, [](std::uint32_t primitive) {
+    return primitive % 3 != 2;
+  });
   EXPECT_GT(iso_hits, 30);
 }
 

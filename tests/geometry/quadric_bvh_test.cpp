@@ -33,17 +33,9 @@ TEST(QuadricBvh, ClosestHitEqualsBruteForce) {
   }
   prims.push_back(plane({0, 1, 0}, -40));
   const Accelerator acc(prims);
-  int hits = 0;
-  for (int k = 0; k < 4000; ++k) {
-    const Ray r{{pos(rng) * 1.5, pos(rng) * 1.5, pos(rng) * 1.5}, random_unit(rng)};
-    const Hit fast = acc.closest_hit(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    const Hit slow = acc.closest_hit_brute_force(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    ASSERT_EQ(fast.found(), slow.found()) << "ray " << k;
-    if (!fast.found()) continue;
-    EXPECT_EQ(fast.t, slow.t) << "ray " << k;
-    EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
-    hits += fast.primitive != prims.size() - 1;
-  }
+  const int hits = bvh_hits_equal_to_brute_force(acc, rng, pos, 4000, [&prims](std::uint32_t primitive) {
+    return primitive != prims.size() - 1;
+  });
   EXPECT_GT(hits, 500);
 }
 

@@ -47,17 +47,9 @@ TEST(SolidBvh, ClosestHitEqualsBruteForce) {
     prims.push_back(p);
   }
   const Accelerator acc(prims);
-  int solid_hits = 0;
-  for (int k = 0; k < 3000; ++k) {
-    const Ray r{{pos(rng) * 1.5, pos(rng) * 1.5, pos(rng) * 1.5}, random_unit(rng)};
-    const Hit fast = acc.closest_hit(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    const Hit slow = acc.closest_hit_brute_force(r, tolerance::min_isect_depth, tolerance::bound_huge);
-    ASSERT_EQ(fast.found(), slow.found()) << "ray " << k;
-    if (!fast.found()) continue;
-    EXPECT_EQ(fast.t, slow.t) << "ray " << k;
-    EXPECT_EQ(fast.primitive, slow.primitive) << "ray " << k;
-    solid_hits += fast.primitive % 5 == 0 || fast.primitive % 5 >= 3;
-  }
+  const int solid_hits = bvh_hits_equal_to_brute_force(acc, rng, pos, 3000, [](std::uint32_t primitive) {
+    return primitive % 5 == 0 || primitive % 5 >= 3;
+  });
   EXPECT_GT(solid_hits, 100);
 }
 
