@@ -22,9 +22,6 @@ NoiseGenerator generator_parameter(double value) {
   }
 }
 
-NoiseGenerator scene_generator(int g) {
-  return g == 1 ? NoiseGenerator::original : g == 3 ? NoiseGenerator::perlin : NoiseGenerator::range_corrected;
-}
 
 // Loop counts come from scene values; POV-Ray would run them as written. Past this many octaves every further
 // term is far below double precision (the point has been scaled beyond the lattice's range), so stopping there
@@ -114,7 +111,7 @@ double ridged_mf(const double* p) {
 
 // f_noise3d(x, y, z): the scene's noise generator.
 double noise3d(const double* p, int scene_noise_generator) {
-  return noise(point(p), scene_generator(scene_noise_generator));
+  return noise(point(p), static_cast<NoiseGenerator>(scene_noise_generator));   // the parser keeps it in 1…3
 }
 
 // f_noise_generator(x, y, z, generator).

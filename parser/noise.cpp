@@ -64,14 +64,13 @@ double lattice_coefficient(int i) {
   std::snprintf(six_digits, sizeof six_digits, "%g", unrounded);
   return std::strtod(six_digits, nullptr);
 }
-const std::array<double, kCoefficients>& coefficients() {
-  static const std::array<double, kCoefficients> table = [] {
-    std::array<double, kCoefficients> t{};
-    for (int i = 0; i < kCoefficients; ++i) t[static_cast<std::size_t>(i)] = lattice_coefficient(i);
-    return t;
-  }();
-  return table;
+std::array<double, kCoefficients> make_coefficients() {
+  std::array<double, kCoefficients> t{};
+  for (int i = 0; i < kCoefficients; ++i) t[static_cast<std::size_t>(i)] = lattice_coefficient(i);
+  return t;
 }
+// Built once at start-up, so that the lookups on the per-sample path carry no initialisation check.
+const std::array<double, kCoefficients> kLatticeCoefficients = make_coefficients();
 
 // POV-Ray's S-curve 3t² − 2t³: the blend weight is smooth across lattice cells.
 double s_curve(double t) { return t * t * (3.0 - 2.0 * t); }
@@ -121,7 +120,7 @@ struct Lattice {
 // (x, y+1), (x+1, y+1) — floating-point sums depend on the order.
 double lattice_sum(Vec3 p) {
   const Lattice l(p);
-  const double* c = coefficients().data();
+  const double* c = kLatticeCoefficients.data();
   const double x0 = l.x.offset, y0 = l.y.offset, z0 = l.z.offset, x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
   const double txty = l.tx * l.ty, sxty = l.sx * l.ty, txsy = l.tx * l.sy, sxsy = l.sx * l.sy;
   const long long iz = l.z.index;
@@ -140,7 +139,7 @@ double lattice_sum(Vec3 p) {
 // (x+1, y+1), (x, y+1); at z + 1 the reverse), the y and z components 4 and 8 entries further on.
 Vec3 lattice_vector_sum(Vec3 p) {
   const Lattice l(p);
-  const double* c = coefficients().data();
+  const double* c = kLatticeCoefficients.data();
   const double x0 = l.x.offset, y0 = l.y.offset, z0 = l.z.offset, x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
   const double txty = l.tx * l.ty, sxty = l.sx * l.ty, txsy = l.tx * l.sy, sxsy = l.sx * l.sy;
   const long long iz = l.z.index;
@@ -175,45 +174,43 @@ struct SolidTables {
   std::array<int, 2 * (kSolidEntries + 1)> permutation{};
   std::array<Vec3, 2 * (kSolidEntries + 1)> gradients{};
 };
-const SolidTables& solid_tables() {
-  static const SolidTables tables = [] {
-    SolidTables t;
-    std::uint32_t state = 1;
-    auto next = [&state] {
-      state = state * 1812433253u + 12345u;
-      return static_cast<int>((state >> 16) & 0x7FFFu);
-    };
-    for (int i = 0; i < kSolidEntries; ++i) {
-      double v[3];
-      double s = 0;
-      do {
-        for (double& component : v)
-          component = static_cast<double>(next() % (kSolidEntries << 1) - kSolidEntries) / kSolidEntries;
-        s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-      } while (s > 1.0 || s < 1.0e-5);
-      s = 1.0 / std::sqrt(s);
-      t.gradients[static_cast<std::size_t>(i)] = {v[0] * s, v[1] * s, v[2] * s};
-    }
-    for (int i = 0; i < kSolidEntries; ++i) t.permutation[static_cast<std::size_t>(i)] = i;
-    for (int i = kSolidEntries; i > 0; i -= 2) {
-      const int k = t.permutation[static_cast<std::size_t>(i)];
-      const int j = next() % kSolidEntries;
-      t.permutation[static_cast<std::size_t>(i)] = t.permutation[static_cast<std::size_t>(j)];
-      t.permutation[static_cast<std::size_t>(j)] = k;
-    }
-    for (std::size_t i = 0; i < kSolidEntries + 2; ++i) {
-      t.permutation[kSolidEntries + i] = t.permutation[i];
-      t.gradients[kSolidEntries + i] = t.gradients[i];
-    }
-    return t;
-  }();
-  return tables;
+SolidTables make_solid_tables() {
+  SolidTables t;
+  std::uint32_t state = 1;
+  auto next = [&state] {
+    state = state * 1812433253u + 12345u;
+    return static_cast<int>((state >> 16) & 0x7FFFu);
+  };
+  for (int i = 0; i < kSolidEntries; ++i) {
+    double v[3];
+    double s = 0;
+    do {
+      for (double& component : v)
+        component = static_cast<double>(next() % (kSolidEntries << 1) - kSolidEntries) / kSolidEntries;
+      s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    } while (s > 1.0 || s < 1.0e-5);
+    s = 1.0 / std::sqrt(s);
+    t.gradients[static_cast<std::size_t>(i)] = {v[0] * s, v[1] * s, v[2] * s};
+  }
+  for (int i = 0; i < kSolidEntries; ++i) t.permutation[static_cast<std::size_t>(i)] = i;
+  for (int i = kSolidEntries; i > 0; i -= 2) {
+    const int k = t.permutation[static_cast<std::size_t>(i)];
+    const int j = next() % kSolidEntries;
+    t.permutation[static_cast<std::size_t>(i)] = t.permutation[static_cast<std::size_t>(j)];
+    t.permutation[static_cast<std::size_t>(j)] = k;
+  }
+  for (std::size_t i = 0; i < kSolidEntries + 2; ++i) {
+    t.permutation[kSolidEntries + i] = t.permutation[i];
+    t.gradients[kSolidEntries + i] = t.gradients[i];
+  }
+  return t;
 }
+const SolidTables kSolidTables = make_solid_tables();
 
 double lerp(double t, double a, double b) { return a + t * (b - a); }
 
 double solid_noise(Vec3 p) {
-  const SolidTables& st = solid_tables();
+  const SolidTables& st = kSolidTables;
   int b0[3], b1[3];
   double r0[3], r1[3];
   for (int k = 0; k < 3; ++k) {
