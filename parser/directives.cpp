@@ -115,6 +115,9 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   } else if (Token eq = next(); !eq.is("=")) {
     fail_expected(eq, "'=' after #declare " + name);
   }
+  // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
+  // the current one; #declare's the one holding the visible entry, or the global table.
+  const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
   std::optional<Value> value;
   if (numeric_ahead()) {
     value = Value(parse_additive().stored());   // what try_parse_rvalue() makes of it, without a Token
@@ -129,7 +132,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
   check_function_redeclaration(name_token, local, *value);
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
-  if (local) symbols_.local(id, std::move(*value)); else symbols_.declare(id, std::move(*value));
+  symbols_.assign_at(id, target_level, std::move(*value));
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
   if (raw_ahead().is(";")) skip_ahead();
   else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);

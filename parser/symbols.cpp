@@ -113,9 +113,12 @@ void SymbolTable::add_entry(NameId id, std::size_t level, Value value) {
   e->level = level;
   e->value = std::move(value);
   auto& stack = bindings_[id];
-  // Levels increase along a name's entries: a new entry is global only when the name is bound nowhere, and is
-  // otherwise made in the innermost level.
-  stack.insert(level == 0 ? stack.begin() : stack.end(), e);
+  // Levels increase along a name's entries. A new entry is usually made in the innermost level, or global; an
+  // assignment whose target was fixed before a macro call in its value ran (assign_at) may add one below entries
+  // of deeper levels.
+  auto at = stack.end();
+  while (at != stack.begin() && (*(at - 1))->level > level) --at;
+  stack.insert(at, e);
   scopes_[level].push_back(id);
 }
 
@@ -159,6 +162,18 @@ void SymbolTable::local(NameId id, Value value) {
     return;
   }
   add_entry(id, depth() - 1, std::move(value));
+}
+
+void SymbolTable::assign_at(NameId id, std::size_t level, Value value) {
+  if (level >= depth()) return local(id, std::move(value));
+  if (id < bindings_.size())
+    for (Entry* e : bindings_[id])
+      if (e->level == level) {
+        if (Value* target = resolve_alias(&e->value)) *target = std::move(value);
+        else e->value = std::move(value);
+        return;
+      }
+  add_entry(id, level, std::move(value));
 }
 
 void SymbolTable::bind(NameId id, Value value) {

@@ -43,6 +43,11 @@ class SymbolTable {
   // #local: overwrite in the innermost table (through an alias there), else create there.
   void local(NameId id, Value value);
   void local(const std::string& name, Value value) { local(intern(name), std::move(value)); }
+  // The assignment of a #declare or #local whose target table was chosen before its value was parsed (POV-Ray's
+  // Parse_Declare adds the symbol first, so `#local R = M()` inside a macro assigns the caller's table even when
+  // M's body ends the value before M's #end): overwrite the name's entry in table `level` (through an alias),
+  // else create it there. A level that no longer exists falls back to local().
+  void assign_at(NameId id, std::size_t level, Value value);
   // Binds a name in the innermost table without following aliases (macro parameters, #for variables).
   void bind(NameId id, Value value);
   void bind(const std::string& name, Value value) { bind(intern(name), std::move(value)); }
