@@ -12,6 +12,7 @@
 
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
+#include "renderer/object_geometry.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -28,6 +29,7 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.image_width = o.width;
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
+  p.object_geometry = render::object_geometry();
   return p;
 }
 

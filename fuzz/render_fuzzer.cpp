@@ -10,6 +10,7 @@
 #include <string>
 
 #include "parser/parse_scene.hpp"
+#include "renderer/object_geometry.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -19,6 +20,7 @@ const povtrace::ParseOptions& fuzz_options() {
     povtrace::ParseOptions o;
     o.message_sink = [](const std::string&) {};   // #debug and warnings are dropped
     o.max_tokens = 200000;                          // every input ends (a runaway #while is legal SDL)
+    o.object_geometry = povtrace::render::object_geometry();   // trace() and inside() as povtrace runs them
     return o;
   }();
   return options;

@@ -209,8 +209,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     constexpr double kY2kSeconds = 946684800.0;
     return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
   }
-  // trace() needs the renderer's scene: refused by name.
-  if (n == "trace") fail_unsupported(name, "the function '" + std::string(n) + "'");
+  if (n == "trace") return parse_trace(name);
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
     rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));

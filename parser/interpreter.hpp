@@ -28,6 +28,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "parser/description_transforms.hpp"
@@ -235,6 +236,10 @@ class Interpreter {
 
   // ---- object queries (object_queries.cpp) ----
   Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
+  Numeric parse_trace(const Token& name);          // trace(O, Start, Dir [, Normal])
+  void store_trace_normal(Vec3 normal);
+  const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
+  const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
 
   // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
   friend class FunctionParser;
@@ -450,6 +455,12 @@ class Interpreter {
   std::shared_ptr<int> noise_generator_cell_ = std::make_shared<int>(2);
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
+  // Declared objects made ready for trace() and inside() by ParseOptions::object_geometry (object_queries.cpp).
+  struct PreparedEntry {
+    std::shared_ptr<const SceneItem> item;   // keeps the key's object alive
+    std::unique_ptr<const PreparedObject> prepared;
+  };
+  std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
   // global_settings { charset }.
   std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;

@@ -82,10 +82,10 @@ double similarity_scale(const Matrix& m) {
   return s;
 }
 
-// Features of an object that change what inside() or the bounding box would be, which povtrace does not model:
-// the first found is named. The harmless ones (appearance, flags) are ignored. (A parsed object records only its
-// first unsupported feature; a later clipped_by behind a harmless one goes unseen.)
-std::optional<std::string> unmodelled_geometry(const Object& o) {
+// Features of an object that change its geometry, which povtrace does not model (the first found is named): an
+// unsupported shape or object modifier anywhere in its tree. The harmless ones (appearance, flags) are ignored. (A
+// parsed object records only its first unsupported feature; a later clipped_by behind a harmless one goes unseen.)
+std::optional<std::string> unsupported_geometry(const Object& o) {
   if (o.unsupported) {
     const std::string& n = o.unsupported->name;
     static const char* const harmless[] = {
@@ -99,8 +99,22 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   }
   if (const auto* csg = std::get_if<Csg>(&o.shape))
     for (const auto& c : csg->children)
-      if (auto u = unmodelled_geometry(c)) return u;
-  // inside() and the bounding boxes of these shapes are not modelled here yet (the renderer has them).
+      if (auto u = unsupported_geometry(c)) return u;
+  for (const auto* list : {&o.clipped_by, &o.bounded_by})
+    for (const auto& c : *list)
+      if (auto u = unsupported_geometry(c)) return u;
+  return std::nullopt;
+}
+
+// The shapes whose inside test and bounding box the parser does not carry itself (the renderer has them): the
+// first one in the object's tree, or nothing.
+std::optional<std::string> shape_outside_parser(const Object& o) {
+  if (const auto* csg = std::get_if<Csg>(&o.shape))
+    for (const auto& c : csg->children)
+      if (auto u = shape_outside_parser(c)) return u;
+  for (const auto* list : {&o.clipped_by, &o.bounded_by})
+    for (const auto& c : *list)
+      if (auto u = shape_outside_parser(c)) return u;
   if (std::holds_alternative<Cylinder>(o.shape)) return std::string("the shape 'cylinder'");
   if (std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
   if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
@@ -110,9 +124,6 @@ std::optional<std::string> unmodelled_geometry(const Object& o) {
   if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
   if (std::holds_alternative<HeightField>(o.shape)) return std::string("the shape 'height_field'");
   if (std::holds_alternative<Blob>(o.shape)) return std::string("the shape 'blob'");
-  for (const auto* list : {&o.clipped_by, &o.bounded_by})
-    for (const auto& c : *list)
-      if (auto u = unmodelled_geometry(c)) return u;
   if (std::holds_alternative<Lathe>(o.shape)) return std::string("the shape 'lathe'");
   if (std::holds_alternative<Prism>(o.shape)) return std::string("the shape 'prism'");
   if (std::holds_alternative<Sor>(o.shape)) return std::string("the shape 'sor'");
@@ -176,7 +187,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
       }
       return all;
     }
-    // Refused by unmodelled_geometry before any visit.
+    // Refused (or handed to the renderer's geometry) by shape_outside_parser before any visit.
     bool operator()(const Cylinder&) const { throw std::logic_error("inside() of a cylinder"); }
     bool operator()(const Cone&) const { throw std::logic_error("inside() of a cone"); }
     bool operator()(const Disc&) const { throw std::logic_error("inside() of a disc"); }
@@ -288,7 +299,7 @@ BBox bounding_box(const Object& o) {
         if (u.lengths[i] > kCriticalLength) return BBox::huge();
       return u;
     }
-    // Refused by unmodelled_geometry before any visit.
+    // Refused (or handed to the renderer's geometry) by shape_outside_parser before any visit.
     BBox operator()(const Cylinder&) const { throw std::logic_error("extent of a cylinder"); }
     BBox operator()(const Cone&) const { throw std::logic_error("extent of a cone"); }
     BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
@@ -308,31 +319,107 @@ BBox bounding_box(const Object& o) {
 }
 }  // namespace
 
+// The object an identifier token names, for inside(), trace(), min_extent() and max_extent() (§5: they take an
+// object identifier).
+const std::shared_ptr<const SceneItem>& Interpreter::object_identifier(const Token& id, std::string_view function) {
+  const Value* v = lookup(id);
+  const auto* item = v ? std::get_if<std::shared_ptr<const SceneItem>>(v) : nullptr;
+  if (!item || !std::holds_alternative<Object>(**item))
+    fail_expected(id, "an object identifier in " + std::string(function) + "()");
+  return *item;
+}
+
+// The renderer's form of a declared object, made once per declared value: scenes trace the same object in loops.
+// The cache keeps the values it was made from alive, so an address is never reused for another object; it is
+// emptied when it grows past a few hundred objects (a loop declaring and tracing a new object each time).
+const PreparedObject& Interpreter::prepared_object(const std::shared_ptr<const SceneItem>& item) {
+  constexpr std::size_t kMaxPreparedObjects = 256;
+  if (auto found = prepared_objects_.find(item.get()); found != prepared_objects_.end()) return *found->second.prepared;
+  if (prepared_objects_.size() >= kMaxPreparedObjects) prepared_objects_.clear();
+  PreparedEntry entry{item, options_.object_geometry->prepare(std::get<Object>(*item))};
+  return *prepared_objects_.emplace(item.get(), std::move(entry)).first->second.prepared;
+}
+
 // inside(O, P) → 1 or 0; min_extent(O), max_extent(O) → the corners of O's bounding box. O must be an object
-// identifier (§5).
+// identifier (§5). inside() of shapes the parser does not test itself asks the renderer's geometry.
 Numeric Interpreter::parse_object_query(const Token& name) {
   const std::string n(name.text);
   expect("(", " after '" + n + "'");
   Token id = next();
-  const Value* v = lookup(id);
-  const auto* item = v ? std::get_if<std::shared_ptr<const SceneItem>>(v) : nullptr;
-  if (!item || !std::holds_alternative<Object>(**item))
-    fail_expected(id, "an object identifier in " + n + "()");
-  const Object& object = std::get<Object>(**item);
-  if (auto u = unmodelled_geometry(object)) fail_unsupported(id, n + "() of " + *u);
+  const std::shared_ptr<const SceneItem>& item = object_identifier(id, n);
+  const Object& object = std::get<Object>(*item);
+  if (auto u = unsupported_geometry(object)) fail_unsupported(id, n + "() of " + *u);
+  const std::optional<std::string> foreign_shape = shape_outside_parser(object);
   if (n == "inside") {
     accept(",");
     const Vec3 p = parse_vector();
     expect(")", " closing inside()");
-    return Numeric::scalar(inside(object, p, false) ? 1.0 : 0.0);
+    if (!foreign_shape) return Numeric::scalar(inside(object, p, false) ? 1.0 : 0.0);
+    if (!options_.object_geometry) fail_unsupported(id, n + "() of " + *foreign_shape);
+    return Numeric::scalar(prepared_object(item).inside(p) ? 1.0 : 0.0);
   }
   expect(")", " closing " + n + "()");
+  if (foreign_shape) fail_unsupported(id, n + "() of " + *foreign_shape);
   if (has_clip_or_bound(object)) fail_unsupported(id, n + "() of an object with clipped_by or bounded_by");
   if (const auto* csg = std::get_if<Csg>(&object.shape); csg && csg->kind != CsgKind::union_ &&
                                                           csg->kind != CsgKind::merge)
     fail_unsupported(id, n + "() of a CSG " + csg_name(csg->kind));
   const BBox box = bounding_box(object);
   return Numeric::vector(n == "min_extent" ? box.lo() : box.max_extent());
+}
+
+// trace(O, Start, Direction [, Normal]) (§5, POV-Ray's Parse_Trace): the first intersection of the ray from Start
+// along Direction (normalised by the reciprocal of its length, as VNormalizeEq does) with O, or <0, 0, 0> on a
+// miss. When a declared vector identifier follows, it receives the surface's raw normal there (reversed on an
+// inverted surface), or <0, 0, 0> on a miss; anything else there must be the closing ')'. A zero direction, for
+// which POV-Ray traces a NaN ray that meets nothing, gives the miss with a warning.
+Numeric Interpreter::parse_trace(const Token& name) {
+  expect("(", " after 'trace'");
+  Token id = next();
+  const std::shared_ptr<const SceneItem>& item = object_identifier(id, "trace");
+  const Object& object = std::get<Object>(*item);
+  if (auto u = unsupported_geometry(object)) fail_unsupported(id, "trace() of " + *u);
+  if (!options_.object_geometry) fail_unsupported(name, "the function 'trace'");   // a parser used without the renderer
+  accept(",");
+  const Vec3 origin = parse_vector();
+  accept(",");
+  const Token direction_at = peek();
+  const Vec3 direction = parse_vector();
+  accept(",");
+  std::optional<TracedHit> hit;
+  if (const double length2 = dot(direction, direction); length2 > 0 && std::isfinite(length2))
+    hit = prepared_object(item).trace(origin, direction * (1.0 / std::sqrt(length2)));
+  else
+    warn(direction_at.loc, "trace() with a zero or non-finite direction meets nothing (POV-Ray traces a NaN ray)");
+  const Vec3 normal = hit ? hit->normal : Vec3{0, 0, 0};
+  store_trace_normal(normal);
+  expect(")", " closing trace()");
+  return Numeric::vector(hit ? hit->point : Vec3{0, 0, 0});
+}
+
+// trace()'s optional fourth argument: a declared 3-D vector identifier (or array element) is assigned in place,
+// wherever it lives (through macro aliases); other tokens are left for the closing ')'.
+void Interpreter::store_trace_normal(Vec3 normal) {
+  const Token& ahead = peek_raw();
+  if (ahead.kind != TokenKind::identifier || is_reserved_word(ahead.text)) return;
+  const Value* v = symbols_.find(std::string(ahead.text));
+  if (!v) fail_expected(ahead, "a declared vector identifier to receive trace()'s normal, or ')'");
+  if (std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) {
+    const Token name = pop_pushed_back();   // the token peek_raw() looked at
+    const auto ref = parse_element_reference(name);
+    const auto& element = ref->array->elements[ref->index];
+    const auto* n = element ? std::get_if<Numeric>(&*element) : nullptr;
+    if (!n || n->terms != 3 || n->colour)
+      fail_expected(name, "an element holding a 3-D vector to receive trace()'s normal");
+    ref->array->elements[ref->index] = Value(Numeric::vector(normal));
+    return;
+  }
+  const auto* n = std::get_if<Numeric>(v);
+  if (!n || n->terms != 3 || n->colour)
+    fail_expected(ahead, "a declared 3-D vector identifier to receive trace()'s normal (" +
+                             std::string(ahead.text) + " holds a " + value_type_name(*v) + "), or ')'");
+  const Token name = pop_pushed_back();   // the token peek_raw() looked at
+  symbols_.declare(name.name ? name.name : symbols_.intern(name.text), Value(Numeric::vector(normal)));
 }
 
 }  // namespace povtrace::sdl

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "parser/description.hpp"
+#include "parser/object_geometry.hpp"
 #include "parser/source.hpp"
 
 namespace povtrace {
@@ -31,6 +32,9 @@ struct ParseOptions {
   // Stop with a ParseError after reading this many tokens (0: no limit). POV-Ray runs a runaway #while forever,
   // and so does povtrace by default; the fuzzer (fuzz/) needs every input to end.
   std::uint64_t max_tokens = 0;
+  // Ray-object geometry for trace() and for inside() of shapes the parser does not test itself; the program passes
+  // the renderer's (render::object_geometry()). Null: those are refused by name.
+  std::shared_ptr<const ObjectGeometry> object_geometry;
 };
 
 inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";

@@ -1,0 +1,71 @@
+#include "renderer/object_geometry.hpp"
+
+#include <vector>
+
+#include "renderer/csg_build.hpp"
+#include "renderer/object_primitives.hpp"
+
+namespace povtrace::render {
+
+namespace {
+
+// The object's primitives as build_render_scene makes them, without materials (trace() and inside() never shade):
+// a union POV-Ray splits becomes its children, other CSG and clipped or bounded objects one CSG node.
+void add_geometry(const Object& o, std::vector<Primitive>& out) {
+  if (splits_into_children(o)) {
+    for (const auto& child : std::get<Csg>(o.shape).children) add_geometry(child, out);
+    return;
+  }
+  if (needs_csg_node(o)) {
+    out.push_back(build_csg_node(o, [](const Object& leaf, bool, std::vector<Primitive>& dst) {
+      add_shape_primitives(leaf, 0, 0, dst);
+    }));
+    return;
+  }
+  add_shape_primitives(o, 0, 0, out);
+}
+
+class PreparedPrimitives final : public PreparedObject {
+ public:
+  explicit PreparedPrimitives(std::vector<Primitive> primitives) : accelerator_(std::move(primitives)) {}
+
+  // POV-Ray's Find_Intersection keeps the nearest intersection at a depth of at least MIN_ISECT_DEPTH; its
+  // Parse_Trace then takes the normal of the object hit (for CSG the child whose surface it is), reversed when
+  // that object is inverted.
+  std::optional<TracedHit> trace(Vec3 origin, Vec3 unit_direction) const override {
+    const Ray ray{origin, unit_direction, ray_kind::other};
+    const Hit hit = accelerator_.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
+    if (!hit.found()) return std::nullopt;
+    const Vec3 point = origin + unit_direction * hit.t;
+    const Vec3 normal = surface_normal(hit.surface, point);
+    return TracedHit{point, hit.surface.leaf->inverse ? -normal : normal};
+  }
+
+  // Inside_Object of a split union: inside any of its children.
+  bool inside(Vec3 point) const override {
+    bool found = false;
+    accelerator_.for_each_containing(point, [&](std::uint32_t) { found = true; });
+    return found;
+  }
+
+ private:
+  Accelerator accelerator_;
+};
+
+class RendererGeometry final : public ObjectGeometry {
+ public:
+  std::unique_ptr<const PreparedObject> prepare(const Object& object) const override {
+    std::vector<Primitive> primitives;
+    add_geometry(object, primitives);
+    return std::make_unique<PreparedPrimitives>(std::move(primitives));
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<const ObjectGeometry> object_geometry() {
+  static const std::shared_ptr<const ObjectGeometry> geometry = std::make_shared<RendererGeometry>();
+  return geometry;
+}
+
+}  // namespace povtrace::render

@@ -1,0 +1,14 @@
+// The renderer's side of the parse-time geometry queries (parser/object_geometry.hpp): trace() and inside() on a
+// declared object, answered by the same primitives, CSG nodes and intersection code that render the scene.
+#pragma once
+
+#include <memory>
+
+#include "parser/object_geometry.hpp"
+
+namespace povtrace::render {
+
+// The implementation to hand the parser in ParseOptions::object_geometry. Stateless and shareable.
+std::shared_ptr<const ObjectGeometry> object_geometry();
+
+}  // namespace povtrace::render
