@@ -96,6 +96,12 @@ def main():
     rows = [[(((x - 3.5) ** 2 + (y - 3.5) ** 2) * 65535) // 25 if (x - 3.5) ** 2 + (y - 3.5) ** 2 < 25 else 65535
              for x in range(8)] for y in range(8)]
     write_png("tex_grey16.png", 8, 8, 0, 16, [[int(v) for v in r] for r in rows])
+    # 24 x 18 palette image (8 bits per index) for a height field: POV-Ray takes the index as the height, so the
+    # palette's colours run against the indices (index 0 white, 255 black) and only the indices form the hill.
+    palette = [(255 - i, (i * 7) % 256, i) for i in range(256)]
+    rows = [[min(255, int(255 * max(0.0, 1.0 - ((x - 11.5) ** 2 + (y - 8.5) ** 2) / 110.0) + 20 * ((x + y) % 3)))
+             for x in range(24)] for y in range(18)]
+    write_png("height_field_palette.png", 24, 18, 3, 8, rows, palette=palette)
 
 
 if __name__ == "__main__":

@@ -7,7 +7,8 @@
 //   float, truncated to 8 bits, then · 65535 / 255 in float, truncated); a 16-bit grey PNG gives
 //   float(v) / 65535 · 65535 truncated; an 8-bit RGB PNG gives (r·256 + g)·255 with r, g = value / 255 (red the
 //   high byte, green the low one); a 16-bit RGB PNG gives the grey mix 0.297r + 0.589g + 0.114b · 65535.
-//   Palette images (POV-Ray: index · 256) and images with alpha are refused by name.
+//   A palette PNG gives its palette index · 256 (POV-Ray keeps 256, not 257, for compatibility: the top index
+//   gives 65280). Images with alpha are refused by name.
 // - The object space is the sample grid: x in [0, w − 1], z in [0, h − 1], y the raw 16-bit height; POV-Ray places
 //   it by the scaling <1/(w − 1), 1/65536, 1/(h − 1)> before the object's own transforms.
 // - The bounding box in y is [max(min height, 65536·water_level) − 0.001, max height + 0.001].
@@ -18,6 +19,7 @@
 
 #include "renderer/located_error.hpp"
 #include "renderer/image/png_io.hpp"
+#include "renderer/image/png_samples.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 
@@ -95,11 +97,35 @@ void smooth_normals(HeightFieldData& d) {
     }
 }
 
+// A palette PNG's heights: the index of each pixel, · 256 (image_height_at's indexed case).
+std::vector<std::uint16_t> palette_heights(const HeightField& h, int& width, int& height) {
+  image::PngSamples png;
+  try {
+    png = image::read_png_samples(h.file);
+  } catch (const image::ImageError& e) {
+    fail_at(h.file_loc, "cannot read the height_field image '" + h.file + "': " + e.what());
+  }
+  width = png.width;
+  height = png.height;
+  std::vector<std::uint16_t> heights(static_cast<std::size_t>(width) * height);
+  for (int z = 0; z < height; ++z)
+    for (int x = 0; x < width; ++x)
+      heights[static_cast<std::size_t>(z) * width + x] = static_cast<std::uint16_t>(png.sample(x, height - 1 - z, 0) * 256);
+  return heights;
+}
+
 std::shared_ptr<HeightFieldData> read_height_field(const HeightField& h) {
   const PngKind kind = png_kind(h.file, h.file_loc);
+  if (kind.colour_type == 3) {
+    int width = 0, height = 0;
+    std::vector<std::uint16_t> heights = palette_heights(h, width, height);
+    if (width < 2 || height < 2)
+      fail_at(h.file_loc, "the height_field image '" + h.file + "' needs at least 2 × 2 pixels");
+    return height_field_data(std::move(heights), width, height, h.water_level, h.smooth);
+  }
   if (kind.colour_type != 0 && kind.colour_type != 2)
-    fail_at(h.file_loc, "unsupported: the height_field image '" + h.file + "' is a palette PNG or has " +
-                                     "alpha; povtrace reads grey or RGB PNG height fields only");
+    fail_at(h.file_loc, "unsupported: a height_field image with an alpha channel ('" + h.file + "') is a POV-Ray " +
+                                     "feature that povtrace does not render yet (grey, RGB and palette PNGs are read)");
   image::Image img;
   try {
     img = image::read_png(h.file);

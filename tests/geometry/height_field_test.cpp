@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -183,6 +184,25 @@ TEST(HeightField, GreyPngHeights) {
     EXPECT_NE(e.bare_message().find("missing.png"), std::string::npos);
   }
   std::filesystem::remove_all(dir);
+}
+
+// A palette PNG: the height is the palette index · 256, whatever the colour (scenes/height_field_palette.png, whose
+// palette runs from white at index 0 to black at 255; scripts/make_texture_images.py gives the indices).
+TEST(HeightField, PalettePngHeightsAreTheIndicesTimes256) {
+  const char* source = std::getenv("POVTRACE_SOURCE_DIR");
+  ASSERT_NE(source, nullptr);
+  HeightField h;
+  h.file = (std::filesystem::path(source) / "scenes" / "height_field_palette.png").string();
+  const Primitive p = make_height_field(h, Matrix::identity());
+  const auto& f = static_cast<const HeightFieldData&>(*p.data);
+  ASSERT_EQ(f.width, 24);
+  ASSERT_EQ(f.depth, 18);
+  // Sample (x, z) is image pixel (x, 17 - z).
+  EXPECT_EQ(f.height(0, 0), 40 * 256);
+  EXPECT_EQ(f.height(5, 0), 20 * 256);
+  EXPECT_EQ(f.height(11, 9), 255 * 256);
+  EXPECT_EQ(f.height(12, 8), 253 * 256);
+  EXPECT_EQ(f.height(23, 17), 40 * 256);
 }
 
 }  // namespace
