@@ -26,6 +26,7 @@ Primitive primitive_for(const Object& o, bool shaded, const LeafBuilder& add_lea
   if (needs_csg_node(o)) return node_for(o, shaded, add_leaf);
   std::vector<Primitive> leaves;
   add_leaf(o, shaded, leaves);
+  for (Primitive& leaf : leaves) leaf.csg_child = true;
   if (leaves.size() == 1) return leaves.front();
   return make_csg(CsgOperation::union_, std::move(leaves));
 }
@@ -47,12 +48,22 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
       for (std::size_t i = 1; i < children.size(); ++i) children[i] = inverted(children[i]);
   } else {
     add_leaf(o, shaded, children);   // a clipped or bounded shape: a one-child union carrying the clip or bound
+    for (Primitive& leaf : children) leaf.csg_child = true;
   }
   std::vector<Primitive> bounds = primitives_for(o.bounded_by, false, add_leaf);
-  Primitive p = make_csg(operation, std::move(children), primitives_for(o.clipped_by, false, add_leaf), bounds);
+  const std::vector<Primitive> clips = primitives_for(o.clipped_by, false, add_leaf);
+  // The object's own box, before its clips: POV-Ray weighs the clips' box against it.
+  const Bounds own_box = clips.empty() ? Bounds{} : static_cast<const CsgData&>(*make_csg(operation, children).data).surface;
+  Primitive p = make_csg(operation, std::move(children), clips, bounds);
   // Bounds removed when the object was placed still gave it their bounding box (csg_modifiers.cpp).
   for (Primitive& removed : primitives_for(o.removed_bounds, false, add_leaf)) bounds.push_back(std::move(removed));
   if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
+  // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
+  // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
+  if (!clips.empty()) {
+    const auto& d = static_cast<const CsgData&>(*p.data);
+    p = with_clipping_box_from(p, clips, d.bounding_box.finite() ? d.bounding_box : own_box);
+  }
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
   return p;

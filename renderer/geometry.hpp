@@ -119,6 +119,10 @@ struct Primitive {
   std::uint8_t ray_flags = 0;
   std::uint8_t hidden_from = 0;
   bool inverse = false;          // inside/outside flipped
+  // Part of a CSG node (a child, or a clipped or bounded shape): the node filters the hits, so a shape whose walk
+  // otherwise ends at its first hit (a height field, as POV-Ray's block_traversal for IS_CHILD_OBJECT) reports
+  // every one.
+  bool csg_child = false;
   std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
   std::uint32_t element_materials = 0;     // meshes: material of texture k of the mesh's list is this + k
 };

@@ -41,11 +41,12 @@ class PreparedPrimitives final : public PreparedObject {
     return TracedHit{point, hit.surface.leaf->inverse ? -normal : normal};
   }
 
-  // Inside_Object of a split union: inside any of its children.
+  // Inside_Object of a split union: inside any of its children. Every primitive is asked, not only those whose
+  // bounds hold the point: some insides reach beyond the bounds (below a height field, an inverse object).
   bool inside(Vec3 point) const override {
-    bool found = false;
-    accelerator_.for_each_containing(point, [&](std::uint32_t) { found = true; });
-    return found;
+    for (const Primitive& p : accelerator_.primitives())
+      if (render::inside(p, point)) return true;
+    return false;
   }
 
  private:

@@ -187,7 +187,9 @@ Vec3 csg_normal(const Primitive&, Vec3) {
 
 Bounds solid_extent(const Primitive& p) {
   if (p.type == ShapeType::csg) return csg_data(p).extent;
-  if (p.inverse) return everywhere();
+  // A height field's inside goes on below its bottom (HField::Inside: under the water level is inside), so an
+  // object clipped by one keeps its surface there.
+  if (p.inverse || p.type == ShapeType::height_field) return everywhere();
   return padded_or_everywhere(world_bounds(p));
 }
 
@@ -229,7 +231,8 @@ double volume(const Bounds& b) {
 }
 
 // Parse_Object_Mods: the box of the bounding objects (inverted ones left out) replaces the object's box when its
-// volume is smaller; the node then lies in the BVH with that box and rays missing it miss the node.
+// volume is smaller; the node then lies in the BVH with that box and rays missing it miss the node. POV-Ray does
+// the same with the clipping objects next, on the box the bounds left.
 Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primitive>& bounding_objects) {
   Bounds box = everywhere();
   for (const Primitive& b : bounding_objects)
@@ -241,6 +244,19 @@ Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primit
   copy->bounding_box = box;
   copy->surface = intersect(d.surface, box);
   if (is_empty(copy->surface)) copy->surface = Bounds{};
+  Primitive p = node;
+  p.data = std::move(copy);
+  return p;
+}
+
+Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips, const Bounds& own_box) {
+  Bounds box = everywhere();
+  for (const Primitive& c : clips)
+    if (c.type == ShapeType::csg) box = intersect(box, csg_data(c).extent);
+    else if (!c.inverse) box = intersect(box, world_bounds(c));
+  if (!box.finite() || is_empty(box) || !(volume(box) < volume(own_box))) return node;
+  auto copy = std::make_shared<CsgData>(csg_data(node));
+  copy->bounding_box = box;
   Primitive p = node;
   p.data = std::move(copy);
   return p;

@@ -12,7 +12,10 @@
 //   (POV-Ray walks them with a Bresenham-style DDA in blocks and culls by height; both only skip cells and
 //   triangles the ray cannot meet.) The walk ends at the first cell with a hit, as POV-Ray's does for a height
 //   field that is no CSG child: the tolerances below let a triangle's plane be hit up to 1e-4 beyond its cell,
-//   and a nearer such hit in the next cell must not win over the cell the ray is in.
+//   and a nearer such hit in the next cell must not win over the cell the ray is in. Inside a CSG node (a child,
+//   or clipped or bounded) the walk goes on over every cell, as POV-Ray's does for IS_CHILD_OBJECT, and the node
+//   filters the hits (POV-Ray applies a height field's own clip inside the walk, cell by cell: the first cell
+//   with a hit that survives the clip ends it).
 // - Cell (x, z) with heights y1 = H(x, z), y2 = H(x + 1, z), y3 = H(x, z + 1), y4 = H(x + 1, z + 1) holds the lower
 //   triangle through (x, y1, z) with normal (y1 − y2, 1, y1 − y3) and the upper one through (x + 1, y4, z + 1) with
 //   normal (y3 − y4, 1, y2 − y4). A ray within 1e-10 of parallel to a triangle's plane misses it; a plane hit
@@ -109,7 +112,7 @@ void height_field_roots(const Primitive& p, const Ray& ray, RootList& out) {
   const std::size_t before = out.size();
   while (true) {
     triangle_hits(f, x, z, o, d, lo, hi, out);
-    if (out.size() != before) return;   // the first cell with a hit ends the walk (see the header)
+    if (out.size() != before && !p.csg_child) return;   // the first cell with a hit ends the walk (see the header)
     AxisWalk& w = wx.next < wz.next ? wx : wz;
     int& cell = &w == &wx ? x : z;
     if (w.next > hi) return;

@@ -125,6 +125,15 @@ TEST(TraceFunction, CsgClipsAndUnions) {
                 0.91651513899116821, -0.00000000000000011});
 }
 
+// A height field's inside goes on below its bottom, so a cylinder clipped by one keeps its wall there; POV-Ray's
+// box for the clipped cylinder is the height field's (its volume is the smaller), which this ray meets.
+TEST(TraceFunction, AShapeClippedByAHeightFieldKeepsItsSurfaceBelowTheBottom) {
+  expect_trace("#declare C = cylinder { -10*y, 10*y, 1 clipped_by { height_field { png \"plasma2.png\" "
+               "translate <-0.5,0,-0.5> scale <6,2,6> } } }\n"
+               "#declare P = trace(C, <0,6,-6>, <0,-6.5,5>, N); Show(P, N)\n",
+               {0, -0.5, -1, 0, 0, -1});
+}
+
 TEST(TraceFunction, SolidsAndSweeps) {
   expect_trace("#declare B = blob { threshold 0.5 sphere { 0, 1, 1 } sphere { <0.7,0,0>, 1, 1 } }\n"
                "#declare P = trace(B, <0.3,5,0.1>, -y, N); Show(P, N)\n",
