@@ -89,6 +89,9 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     if (v && std::holds_alternative<Boxed<Camera>>(*v)) {
       in.camera = *std::get<Boxed<Camera>>(*v);
       t = next();
+      // POV-Ray 3.5 and later (Parse_Camera's only_mods): a declared camera is final; only transforms may follow,
+      // applied to it as they are (its angle, look_at and orthographic resize are not applied a second time).
+      if (scene_.language_version >= 350) return parse_camera_transforms(in.camera, t);
     }
   }
   while (!t.is("}")) {
@@ -144,6 +147,23 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   if (in.angle && in.planar && *in.angle >= 180)
     fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
   return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
+}
+
+// The transforms after a declared camera's identifier, up to the closing '}' (`t` is the first token after the
+// identifier).
+Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
+  Matrix transform;
+  while (!t.is("}")) {
+    if (!try_transform(t, transform))
+      fail_expected(t, "a transform (translate, rotate, scale, matrix, transform) or '}': after a declared camera "
+                       "POV-Ray 3.5 and later take only transforms");
+    t = next();
+  }
+  camera.location = transform.point(camera.location);
+  camera.direction = transform.vector(camera.direction);
+  camera.up = transform.vector(camera.up);
+  camera.right = transform.vector(camera.right);
+  return camera;
 }
 
 void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_light(light, m); }

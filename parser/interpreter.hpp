@@ -406,6 +406,7 @@ class Interpreter {
 
   // ---- camera and lights (camera_lights.cpp) ----
   Camera parse_camera(const Token& keyword);
+  Camera parse_camera_transforms(Camera camera, Token t);
   std::optional<Projection> try_camera_type(const Token& t);
   Light parse_light(const Token& keyword);
   void parse_area_light(const Token& keyword, Light& light);

@@ -642,6 +642,26 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& p) { return p.param.name; });
 
 // ---- Camera angle ----------------------------------------------------------------------------------------------
+// POV-Ray 3.5+ (Parse_Camera, only_mods): a declared camera is final. `camera { C }` is C as it is (its angle,
+// look_at and orthographic resize are not applied again), and only transforms may follow the identifier. POV-Ray
+// renders templates/Basic_Scenes/Orthographic_isometric.pov's declared orthographic camera like the inline one.
+TEST(CameraIdentifier, IsFinalAndTakesOnlyTransforms) {
+  const std::string items = "orthographic angle 15 location <20,20,-20> right x*4/3 look_at <0,0.5,0>";
+  const Camera direct = parse("#version 3.7;\ncamera { " + items + " }\n").camera;
+  const std::string declared = "#version 3.7;\n#declare C = camera { " + items + " }\n";
+  const Camera used = parse(declared + "camera { C }\n").camera;
+  const Camera moved = parse(declared + "camera { C translate <1,2,3> }\n").camera;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(used.right[i], direct.right[i]);
+    EXPECT_EQ(used.up[i], direct.up[i]);
+    EXPECT_EQ(used.direction[i], direct.direction[i]);
+    EXPECT_EQ(used.location[i], direct.location[i]);
+    EXPECT_EQ(moved.right[i], direct.right[i]);
+    EXPECT_DOUBLE_EQ(moved.location[i], direct.location[i] + (i + 1.0));
+  }
+  EXPECT_EQ(failure(declared + "camera { C angle 30 }\n").column, 12);
+}
+
 TEST(CameraAngle, TheLimitOf180HoldsForPerspectiveAndOrthographicOnly) {
   // fisheye and the other projections take up to 360°.
   for (const std::string camera : {"camera { fisheye angle 360 }", "camera { ultra_wide_angle angle 270 }",
