@@ -205,11 +205,21 @@ struct Finish {
 // slope bends the normal.
 enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves, quilted,
                         bump_map,      // the slope of an image's grey (or palette indices): pattern.image
-                        uv_mapping };  // uv_normal at the hit's <u, v, 0>
+                        uv_mapping,    // uv_normal at the hit's <u, v, 0>
+                        average };     // the weighted mean of the map's normals
 
 // A slope_map entry `[value, <height, slope>]` (single precision, as POV-Ray's blend map entries).
 struct SlopeEntry {
   double value = 0, height = 0, slope = 0;
+};
+
+struct Normal;
+
+// An entry of a normal_map, of a list pattern's normals (checker, hexagon, brick: values 0, 1, 2) or of an average
+// (its weight): the value, single precision as POV-Ray's blend map entries, and its normal.
+struct NormalMapEntry {
+  double value = 0;
+  std::shared_ptr<const Normal> normal;
 };
 
 struct Normal {
@@ -223,6 +233,9 @@ struct Normal {
   bool no_bump_scale = false;
   std::vector<SlopeEntry> slope_map;
   std::shared_ptr<const Normal> uv_normal;   // uv_mapping: the normal evaluated at the hit's uv
+  // normal_map, list-pattern normals or average's entries, ascending (average: in written order). When set, the
+  // pattern picks or blends these normals and this normal's own amount is unused (POV-Ray's Perturb_Normal).
+  std::vector<NormalMapEntry> map;
   SourceLoc loc;
   Unsupported unsupported;
 };

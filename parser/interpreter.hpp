@@ -287,7 +287,10 @@ class Interpreter {
 
   // ---- normal { } (normals.cpp) ----
   Normal parse_normal_block(const Token& keyword, const Normal& start);
-  Normal parse_normal_contents(const Token& keyword, const Normal& start);
+  Normal parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing = "}");
+  void parse_normal_list(Normal& n, int count);
+  void parse_normal_map(const Token& keyword, Normal& n);
+  std::shared_ptr<const Normal> default_normal() const;
   bool try_normal_pattern(const Token& t, Normal& n);
   bool try_normal_modifier(const Token& t, Normal& n);
   std::vector<SlopeEntry> parse_slope_map(const Token& keyword);

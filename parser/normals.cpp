@@ -49,14 +49,14 @@ bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
     n.pattern.frequency = 0.0;
     n.accuracy = kDefaultAccuracy;
     n.has_type = true;
-    while (peek().is("normal")) {   // Parse_Blend_List with NORMAL_TYPE
-      const Token entry = next();
-      taint(n.unsupported, skip_unsupported(entry, "normal entries of a list pattern in normal { }"));
-      accept(",");
-    }
+    parse_normal_list(n, kind == PatternKind::hexagon ? 3 : 2);
     return true;
   }
-  if (t.is("average")) return false;   // an average of normals needs a normal_map: refused by name
+  if (t.is("average")) {   // the weighted mean of a normal_map's normals (Do_Average_Normals)
+    n.kind = NormalKind::average;
+    n.has_type = true;
+    return true;
+  }
   if (t.is("image_map")) fail_at(t, "image_map can only be used in a pigment (as in POV-Ray)");
   if (t.is("bump_map")) {
     parse_bump_map(t, n);
@@ -115,11 +115,54 @@ bool Interpreter::try_normal_modifier(const Token& t, Normal& n) {
   if (t.is("color_map") || t.is("colour_map") || t.is("pigment_map"))
     fail_at(t, "'" + std::string(t.text) + "' can only be used in a pigment");
   if (t.is("normal_map")) {
-    taint(n.unsupported, skip_unsupported(t, "'normal_map'"));
+    parse_normal_map(t, n);
     return true;
   }
   return try_pattern_modifier(t, n.pattern);
 }
+
+// The normals of a list pattern (Parse_Blend_List with NORMAL_TYPE): `checker normal { … }, normal { … }`. With none
+// written the pattern is an ordinary pattern normal; otherwise the entries take the values 0, 1, 2 and those not
+// written are the #default normal (none: the surface normal is left as it is).
+void Interpreter::parse_normal_list(Normal& n, int count) {
+  std::vector<NormalMapEntry> entries;
+  while (static_cast<int>(entries.size()) < count && peek().is("normal")) {
+    const Token entry = next();
+    entries.push_back({0, std::make_shared<const Normal>(parse_normal_block(entry, starting_normal(nullptr)))});
+    taint(n.unsupported, entries.back().normal->unsupported);
+    accept(",");
+  }
+  if (entries.empty()) return;
+  while (static_cast<int>(entries.size()) < count) entries.push_back({0, default_normal()});
+  for (std::size_t i = 0; i < entries.size(); ++i) entries[i].value = static_cast<double>(i);
+  n.map = std::move(entries);
+}
+
+// `normal_map { [value NORMAL_BODY] … }` (Parse_Blend_Map with NORMAL_TYPE): each entry's normal starts from the
+// #default normal. An average's entries take an optional weight (1 when left out) and keep their written order.
+void Interpreter::parse_normal_map(const Token& keyword, Normal& n) {
+  const NestingGuard guard(*this, keyword);
+  if (n.kind != NormalKind::pattern && n.kind != NormalKind::average)
+    fail_unsupported(keyword, "'normal_map' with a normal-only pattern");
+  expect("{", " after 'normal_map'");
+  std::vector<NormalMapEntry> entries;
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (!t.is("[")) fail_expected(t, "'[' starting a normal_map entry, or '}'");
+    if (entries.size() >= 256) fail_at(t, "too many entries in the map: POV-Ray allows at most 256");
+    NormalMapEntry e;
+    e.value = single(n.kind == NormalKind::average ? optional_float(1.0) : parse_float());
+    accept(",");
+    const Normal start = starting_normal(nullptr);
+    e.normal = std::make_shared<const Normal>(parse_normal_contents(t, start, "]"));
+    taint(n.unsupported, e.normal->unsupported);
+    entries.push_back(std::move(e));
+  }
+  if (entries.empty()) fail_at(keyword, "a map needs at least one entry");
+  n.map = std::move(entries);
+}
+
+// The #default normal as a map entry: null when there is none (the entry then leaves the normal as it is).
+std::shared_ptr<const Normal> Interpreter::default_normal() const { return default_texture().layers.back().normal; }
 
 Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start) {
   const NestingGuard guard(*this, keyword);
@@ -129,7 +172,7 @@ Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start
 
 // The inside of normal { … } up to its '}'. `uv_mapping NORMAL_BODY`: the rest of the block is a normal (from the
 // #default one) evaluated at the hit's <u, v, 0> (POV-Ray's UV_MAP_PATTERN in Parse_Pattern).
-Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& start) {
+Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing) {
   Normal n = start;
   n.loc = keyword.loc;
   Token t = next();
@@ -139,7 +182,7 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
   }
   if (t.is("uv_mapping")) {
     const NestingGuard guard(*this, t);   // `uv_mapping uv_mapping …` nests
-    auto inner = std::make_shared<const Normal>(parse_normal_contents(keyword, starting_normal(nullptr)));
+    auto inner = std::make_shared<const Normal>(parse_normal_contents(keyword, starting_normal(nullptr), closing));
     n.kind = NormalKind::uv_mapping;
     n.has_type = true;
     n.unsupported = inner->unsupported;
@@ -151,7 +194,7 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
     n.amount = optional_float(n.amount);
     t = next();
   }
-  while (!t.is("}")) {
+  while (!t.is(closing)) {
     if (try_normal_modifier(t, n)) { t = next(); continue; }
     if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
       taint(n.unsupported, skip_unsupported(t, "the normal item '" + std::string(t.text) + "'"));
@@ -160,8 +203,11 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
       t = next();
       continue;
     }
-    fail_expected(t, "a normal pattern, bump_size, accuracy, a transform or '}' in normal { }");
+    fail_expected(t, "a normal pattern, bump_size, accuracy, a transform or '" + std::string(closing) +
+                         (closing == "]" ? "' closing the normal_map entry" : "' in normal { }"));
   }
+  if (n.kind == NormalKind::average && n.map.empty())
+    fail_at(keyword, "an average normal needs a normal_map giving the normals it averages");
   taint(n.unsupported, n.pattern.unsupported);
   // A normal without a type is legal until an object uses it (POV-Ray's Post_Tnormal: `#default { normal {
   // bump_size 2 } }` is fine when every object names its pattern): see Interpreter::check_normal_types.

@@ -93,6 +93,12 @@ struct RenderNormal {
   std::shared_ptr<const RenderImageMap> bump;    // bump_map
   bool use_index = false;                        // bump_map: heights from palette indices
   std::shared_ptr<RenderNormal> uv_normal;       // uv_mapping: this normal at the hit's <u, v, 0>
+  // normal_map, list-pattern normals or average's weighted normals (a null normal leaves the normal as it is).
+  struct MapEntry {
+    double value = 0;
+    std::shared_ptr<const RenderNormal> normal;
+  };
+  std::vector<MapEntry> map;
 };
 
 // The wave sources that ripples and waves sum over (POV-Ray's Initialize_Waves, number_of_waves of them).

@@ -72,7 +72,8 @@ Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& 
     case NormalKind::quilted:
       return quilted_offset(p, n.pattern.params.control0, n.pattern.params.control1) * n.amount;
     case NormalKind::bump_map:
-    case NormalKind::uv_mapping: break;   // perturb_normal handles them
+    case NormalKind::uv_mapping:
+    case NormalKind::average: break;   // perturbed() handles them
   }
   return {0, 0, 0};
 }
@@ -105,6 +106,9 @@ double slope_value(const RenderNormal& n, Vec3 p) {
 RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
   RenderNormal r;
   r.kind = normal.kind;
+  for (const NormalMapEntry& e : normal.map)
+    r.map.push_back({e.value, e.normal ? std::make_shared<const RenderNormal>(build_render_normal(*e.normal, images))
+                                       : nullptr});
   if (normal.kind == NormalKind::uv_mapping) {
     r.uv_normal = std::make_shared<RenderNormal>(build_render_normal(*normal.uv_normal, images));
     return r;
@@ -114,8 +118,8 @@ RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
     r.use_index = normal.pattern.image->use_index;
   }
   Pigment carrier = normal.pattern;
-  // The normal-only patterns evaluate no pattern of their own; the carrier only moves the point (as a pattern
-  // with a value would: POV-Ray applies the classic turbulence to every pattern but marble and wood).
+  // The normal-only patterns (and average) evaluate no pattern of their own; the carrier only moves the point (as
+  // a pattern with a value would: POV-Ray applies the classic turbulence to every pattern but marble and wood).
   if (normal.kind != NormalKind::pattern) carrier.pattern = PatternKind::bozo;
   r.pattern = build_render_pigment(carrier);
   r.pattern.children.clear();
@@ -136,23 +140,82 @@ RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
 void set_normal_generator(RenderNormal& normal, NoiseGenerator generator) {
   set_generator(normal.pattern, generator);
   if (normal.uv_normal) set_normal_generator(*normal.uv_normal, generator);
+  for (RenderNormal::MapEntry& e : normal.map)
+    if (e.normal) {
+      auto copy = std::make_shared<RenderNormal>(*e.normal);
+      set_normal_generator(*copy, generator);
+      e.normal = std::move(copy);
+    }
 }
 
-// Warp_Normal, the perturbation, UnWarp_Normal: without no_bump_scale the normal is unit length in pattern space
-// when bent and is normalised again on the way back, so scaling a normal scales its bumps with it. A uv-mapped
-// normal is its own normal at the hit's <u, v, 0>, normalised.
-Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
+namespace {
+// Warp_Normal: into the normal's pattern space (its transforms), unit length there unless no_bump_scale.
+Vec3 warp_normal(const RenderNormal& n, Vec3 v) {
+  v = normalized_unless(n.no_bump_scale, v);
+  if (n.transformed) v = normalized_unless(n.no_bump_scale, n.world_from_pattern.normal_from_inverse(v));
+  return v;
+}
+
+// UnWarp_Normal: back out of the pattern space, unit length again unless no_bump_scale.
+Vec3 unwarp_normal(const RenderNormal& n, Vec3 v) {
+  v = normalized_unless(n.no_bump_scale, v);
+  if (n.transformed) v = n.pattern_from_world.normal_from_inverse(v);
+  return normalized_unless(n.no_bump_scale, v);
+}
+
+Vec3 perturbed(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves);
+
+// An entry's normal bends `v` at the pattern-space point of the map's normal; a null one leaves it.
+Vec3 entry_perturbed(const RenderNormal::MapEntry& e, Vec3 v, const TexturePoint& at,
+                     const std::vector<WaveSource>& waves) {
+  return e.normal ? perturbed(*e.normal, v, at, waves) : v;
+}
+
+// A normal_map (or list-pattern normals): the pattern's value picks the entries around it, both bend the warped
+// normal at the pattern-space point, and the results are blended by the value's position between them, then taken
+// back and normalised (Perturb_Normal's blend map branch).
+Vec3 mapped(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
+  const Vec3 p = to_pattern_space(n.pattern, at.point);
+  const MapChoice c = choose_entries(n.map, apply_wave(pattern_value(n.pattern.params, p), n.pattern.wave));
+  const Vec3 v = warp_normal(n, normal);
+  const TexturePoint inner(p, at.u, at.v);
+  Vec3 result = entry_perturbed(n.map[c.cur], v, inner, waves);
+  if (c.prev != c.cur) result = entry_perturbed(n.map[c.prev], v, inner, waves) * (1.0 - c.fraction) + result * c.fraction;
+  return normalize(unwarp_normal(n, result));
+}
+
+// average: the entries' normals, each bending the warped normal at the pattern-space point, weighted by their
+// values and divided by the weights' sum (in single precision, as Do_Average_Normals sums them).
+Vec3 averaged(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
+  const Vec3 v = warp_normal(n, normal);
+  const TexturePoint inner(to_pattern_space(n.pattern, at.point), at.u, at.v);
+  Vec3 sum{0, 0, 0};
+  float total = 0;
+  for (const RenderNormal::MapEntry& e : n.map) {
+    sum += entry_perturbed(e, v, inner, waves) * e.value;
+    total += static_cast<float>(e.value);
+  }
+  return unwarp_normal(n, sum * (1.0 / static_cast<double>(total)));
+}
+
+// POV-Ray's Perturb_Normal, before the caller's normalisation: Warp_Normal, the perturbation, UnWarp_Normal.
+// Without no_bump_scale the normal is unit length in pattern space when bent and is normalised again on the way
+// back, so scaling a normal scales its bumps with it. A uv-mapped normal is its own normal at the hit's <u, v, 0>.
+Vec3 perturbed(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
   if (n.uv_normal)
-    return normalize(perturb_normal(*n.uv_normal, normal, TexturePoint({at.u, at.v, 0.0}, at.u, at.v), waves));
-  const bool keep = n.no_bump_scale;
-  Vec3 v = normalized_unless(keep, normal);
-  if (n.transformed) v = normalized_unless(keep, n.world_from_pattern.normal_from_inverse(v));
+    return normalize(perturbed(*n.uv_normal, normal, TexturePoint({at.u, at.v, 0.0}, at.u, at.v), waves));
+  if (n.kind == NormalKind::average) return averaged(n, normal, at, waves);
+  if (!n.map.empty()) return mapped(n, normal, at, waves);
+  Vec3 v = warp_normal(n, normal);
   const Vec3 p = to_pattern_space(n.pattern, at.point);
   if (n.bump) v = bump_map_normal(*n.bump, n.use_index, n.amount, p, v);
   else v += displacement(n, p, waves);
-  v = normalized_unless(keep, v);
-  if (n.transformed) v = n.pattern_from_world.normal_from_inverse(v);
-  return normalize(v);
+  return unwarp_normal(n, v);
+}
+}  // namespace
+
+Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
+  return normalize(perturbed(n, normal, at, waves));
 }
 
 Vec3 bump_map_normal(const RenderImageMap& map, bool use_index, double amount, Vec3 pattern_point, Vec3 normal) {

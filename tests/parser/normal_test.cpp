@@ -112,12 +112,41 @@ TEST(NormalParse, ErrorsAndRefusals) {
                             .what())
                 .find("can only be used in a pigment"),
             std::string::npos);
-  const ParseError entries =
-      parse_error("#version 3.7;\nplane { y, 0 normal { checker normal { bumps }, normal { dents } } }\n");
-  EXPECT_NE(std::string(entries.what()).find("normal entries of a list pattern"), std::string::npos)
-      << entries.what();
-  const ParseError map = parse_error("#version 3.7;\nplane { y, 0 normal { bozo normal_map { [0 bumps] } } }\n");
-  EXPECT_NE(std::string(map.what()).find("'normal_map'"), std::string::npos) << map.what();
+  const ParseError average = parse_error("#version 3.7;\nplane { y, 0 normal { average } }\n");
+  EXPECT_NE(std::string(average.what()).find("an average normal needs a normal_map"), std::string::npos)
+      << average.what();
+  const ParseError only = parse_error("#version 3.7;\nplane { y, 0 normal { bumps normal_map { [0 dents] } } }\n");
+  EXPECT_NE(std::string(only.what()).find("unsupported: 'normal_map' with a normal-only pattern"), std::string::npos)
+      << only.what();
+  const ParseError bracket = parse_error("#version 3.7;\nplane { y, 0 normal { bozo normal_map { [0 bumps } } }\n");
+  EXPECT_EQ(bracket.location().column, 50);
+  EXPECT_NE(std::string(bracket.what()).find("closing the normal_map entry"), std::string::npos) << bracket.what();
+}
+
+// normal_map entries, list-pattern normals and an average's weights (Parse_Blend_Map / Parse_Blend_List with
+// NORMAL_TYPE): values in single precision; a list's unwritten entries are the #default normal (none here); an
+// average's weight defaults to 1; a declared normal may open an entry.
+TEST(NormalParse, MapsListsAndAverages) {
+  const auto normal_of = [](const std::string& body) {
+    const SceneDescription s = parse("#version 3.7;\n#declare R = normal { ripples 0.3 }\nplane { y, 0 normal { " + body + " } }\n");
+    return *s.objects.at(0).texture->layers.back().normal;
+  };
+  const Normal map = normal_of("gradient y normal_map { [0.1 bumps 0.5] [0.7 R scale 2] }");
+  ASSERT_EQ(map.map.size(), 2u);
+  EXPECT_EQ(map.map[0].value, static_cast<double>(0.1f));
+  EXPECT_EQ(map.map[0].normal->kind, NormalKind::bumps);
+  EXPECT_EQ(map.map[0].normal->amount, 0.5);
+  EXPECT_EQ(map.map[1].normal->kind, NormalKind::ripples);
+  EXPECT_EQ(map.map[1].normal->amount, 0.3);
+  const Normal list = normal_of("hexagon normal { bumps }, normal { dents }");
+  ASSERT_EQ(list.map.size(), 3u);
+  EXPECT_EQ(list.map[2].value, 2.0);
+  EXPECT_EQ(list.map[2].normal, nullptr);
+  EXPECT_TRUE(normal_of("checker").map.empty());   // no entries: the plain pattern normal
+  const Normal average = normal_of("average normal_map { [bumps] [3 dents] }");
+  EXPECT_EQ(average.kind, NormalKind::average);
+  EXPECT_EQ(average.map[0].value, 1.0);
+  EXPECT_EQ(average.map[1].value, 3.0);
 }
 
 }  // namespace
