@@ -28,6 +28,7 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.image_width = o.width;
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
+  p.povray_tolerances = o.povray_tolerances;
   return p;
 }
 

@@ -31,6 +31,10 @@ struct ParseOptions {
   // Stop with a ParseError after reading this many tokens (0: no limit). POV-Ray runs a runaway #while forever,
   // and so does povtrace by default; the fuzzer (fuzz/) needs every input to end.
   std::uint64_t max_tokens = 0;
+  // --povray-tolerances: the parser's own absolute tolerances as POV-Ray applies them, which matter only for
+  // scenes far below unit size (the renderer otherwise draws those as a rescaled twin, renderer/scene_scale.hpp):
+  // a camera whose look_at is closer than 1e-5 to its location is an error.
+  bool povray_tolerances = false;
 };
 
 inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";
