@@ -25,4 +25,9 @@ double normalizing_scale(double size);
 // lights carry (fade_distance, cylinder light radius and falloff).
 SceneDescription scaled_scene(const SceneDescription& scene, double k);
 
+// The scene as POV-Ray holds it (for --povray-tolerances): every sphere that only translations, rotations and
+// uniform scales reached (Sphere::ellipsoid false) has them folded into its centre and radius, so its EPSILON
+// grazing test and DEPTH_TOLERANCE act on world lengths, as POV-Ray's do. Ellipsoids keep their transform.
+SceneDescription with_world_space_spheres(const SceneDescription& scene);
+
 }  // namespace povtrace::render
