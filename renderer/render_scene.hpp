@@ -192,7 +192,8 @@ struct RenderScene {
 struct BuildOptions {
   bool output_alpha = false;
   // POV-Ray's absolute tolerances at any scale, artefacts included: no rescaling of very small or very large
-  // scenes (renderer/scene_scale.hpp).
+  // scenes (renderer/scene_scale.hpp), spheres kept in world units as POV-Ray keeps them
+  // (with_world_space_spheres), and POV-Ray's shadow cache (RenderScene::povray_shadow_cache).
   bool povray_tolerances = false;
 };
 

@@ -3,7 +3,8 @@
 // shadows, surfaces or its horizon. povtrace renders such a scene as its twin at an ordinary scale: the whole
 // scene is scaled by a power of two (exact in floating point) that brings its size into the range where those
 // tolerances are harmless. Scenes already in that range — every ordinary scene — are left exactly as they are,
-// so they still match POV-Ray pixel for pixel; `--povray-tolerances` turns the rescaling off.
+// so they still match POV-Ray pixel for pixel; `--povray-tolerances` turns the rescaling off (and reproduces
+// POV-Ray's own renders of such scenes, tests/stress/povray_tolerances.cmake).
 #pragma once
 
 #include <vector>
