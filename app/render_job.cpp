@@ -96,7 +96,9 @@ std::string stats_json(const RenderOptions& o, const JobResult& r) {
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
   JobResult r;
   const auto start = Clock::now();
-  const SceneDescription description = parse_scene(options.input, parse_options_from(options));
+  ParseOptions parse_options = parse_options_from(options);
+  parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
+  const SceneDescription description = parse_scene(options.input, parse_options);
   r.times.parse_s = seconds_since(start);
 
   const auto build_start = Clock::now();

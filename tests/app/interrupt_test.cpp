@@ -1,7 +1,7 @@
 // Ctrl-C (issue 7): SIGINT during a render stops povtrace promptly with exit status 1, leaves an existing output
 // file byte for byte as it was, creates none when there was none, and leaves no temporary file behind. The test
 // runs the real program (POVTRACE_EXE) on a scene that takes several seconds, and signals it once it reports
-// progress, i.e. once it is rendering.
+// progress, i.e. once it is rendering; and on a scene whose parse never ends, which Ctrl-C must stop too.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 extern char** environ;
@@ -165,6 +166,15 @@ class RunningRender {
   std::optional<int> status_;
 };
 
+// After SIGINT: povtrace exits by itself with status 1 within kStopLimit and says why (`message`).
+void expect_interrupted(RunningRender& render, const std::string& message) {
+  const std::optional<int> status = render.wait_for_exit(kStopLimit);
+  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after SIGINT:\n" << render.output();
+  ASSERT_TRUE(WIFEXITED(*status)) << "povtrace did not exit normally (killed by a signal?):\n" << render.output();
+  EXPECT_EQ(WEXITSTATUS(*status), 1) << render.output();
+  EXPECT_NE(render.output().find(message), std::string::npos) << render.output();
+}
+
 // Starts the slow render into `output`, waits until it reports progress, sends SIGINT and checks how it ends.
 void interrupt_render(const fs::path& folder, const fs::path& output) {
   const fs::path scene = folder / "slow.pov";
@@ -173,11 +183,7 @@ void interrupt_render(const fs::path& folder, const fs::path& output) {
   ASSERT_TRUE(render.wait_for_line("povtrace: rendering", kStartLimit))
       << "no progress line from povtrace:\n" << render.output();
   render.signal(SIGINT);
-  const std::optional<int> status = render.wait_for_exit(kStopLimit);
-  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after SIGINT:\n" << render.output();
-  ASSERT_TRUE(WIFEXITED(*status)) << "povtrace did not exit normally (killed by a signal?):\n" << render.output();
-  EXPECT_EQ(WEXITSTATUS(*status), 1) << render.output();
-  EXPECT_NE(render.output().find("povtrace: interrupted; no image written"), std::string::npos) << render.output();
+  expect_interrupted(render, "povtrace: interrupted; no image written");
 }
 
 TEST(Interrupt, SigintKeepsAnExistingOutputFileAsItWas) {
@@ -198,6 +204,29 @@ TEST(Interrupt, SigintCreatesNoOutputFile) {
   interrupt_render(folder.path(), output);
   EXPECT_FALSE(fs::exists(output));
   EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"slow.pov"})) << "a file was left behind";
+}
+
+}  // namespace
+
+namespace {
+
+// A parse that never ends (POV-Ray runs an endless #while forever, and so does povtrace) must still stop on Ctrl-C,
+// with a located error, and leave the existing output file alone.
+TEST(Interrupt, SigintStopsAnEndlessParse) {
+  const ScratchFolder folder;
+  const fs::path output = folder.path() / "out.exr";
+  const std::string old_bytes = "an image from an earlier render\n";
+  write_file(output, old_bytes);
+  const fs::path scene = folder.path() / "endless.pov";
+  write_file(scene, "#version 3.7;\n#declare I = 0;\n#while (1) #declare I = I + 1; #end\n");
+  RunningRender render({"-D", "+W64", "+H48", "+FE", "+O" + output.string(), scene.string()});
+  // Nothing is printed while parsing, so a fixed delay stands for "it is parsing": povtrace installs its handler
+  // within milliseconds of starting, and the loop never ends, so any delay lands inside the parse.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  render.signal(SIGINT);
+  expect_interrupted(render, "error: interrupted while parsing");
+  EXPECT_EQ(read_file(output), old_bytes);
+  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"endless.pov", "out.exr"})) << "a file was left behind";
 }
 
 }  // namespace
