@@ -30,6 +30,7 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
   p.object_geometry = render::object_geometry();
+  p.povray_tolerances = o.povray_tolerances;
   return p;
 }
 
@@ -97,7 +98,9 @@ std::string stats_json(const RenderOptions& o, const JobResult& r) {
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
   JobResult r;
   const auto start = Clock::now();
-  const SceneDescription description = parse_scene(options.input, parse_options_from(options));
+  ParseOptions parse_options = parse_options_from(options);
+  parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
+  const SceneDescription description = parse_scene(options.input, parse_options);
   r.times.parse_s = seconds_since(start);
 
   const auto build_start = Clock::now();

@@ -82,7 +82,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   expect("{", " after 'camera'");
   CameraInput in;
   in.camera.loc = keyword.loc;
-  std::optional<Token> angle_at;
+  std::optional<Token> angle_at, look_at_at;
   bool spherical = false;
   Token t = next();
   if (const Value* v = lookup(t)) {
@@ -106,7 +106,10 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     else if (k == "up") { in.camera.up = parse_vector(); in.up_given = true; }
     else if (k == "right") { in.camera.right = parse_vector(); in.right_given = true; }
     else if (k == "sky") in.sky = parse_vector();
-    else if (k == "look_at") in.look_at = parse_vector();
+    else if (k == "look_at") {
+      look_at_at = t;
+      in.look_at = parse_vector();
+    }
     else if (k == "angle") {
       // Negative angles are refused at once; the 180° limit only holds for perspective and orthographic cameras
       // (fisheye and the others take up to 360°), checked once the projection is known.
@@ -146,6 +149,12 @@ Camera Interpreter::parse_camera(const Token& keyword) {
   }
   if (in.angle && in.planar && *in.angle >= 180)
     fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
+  // POV-Ray's Parse_Camera refuses a look_at whose squared distance from the location is below EPSILON (1e-10),
+  // an absolute test: a camera 1e-6 times the usual size fails it.
+  if (options_.povray_tolerances && in.look_at) {
+    const Vec3 d = *in.look_at - in.camera.location;
+    if (dot(d, d) < 1e-10) fail_at(*look_at_at, "Camera location and look_at point must be different.");
+  }
   return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
 }
 

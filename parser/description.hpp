@@ -287,7 +287,10 @@ struct Interior {
 };
 
 // ---- Geometry -------------------------------------------------------------------------------------------
-struct Sphere { Vec3 centre; double radius = 1; };
+// `ellipsoid` is POV-Ray's Do_Ellipsoid (shape/spheres.cpp Sphere::Scale, Sphere::Transform): set once a
+// non-uniform scale, a matrix or a transform block reaches the sphere. Until then POV-Ray moves the centre and
+// scales the radius itself, so its tolerances apply in world units (what --povray-tolerances reproduces).
+struct Sphere { Vec3 centre; double radius = 1; bool ellipsoid = false; };
 struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; };   // normal as written (unit-normalised by parser)
 // Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
 // and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a

@@ -11,6 +11,13 @@ void fold_into_corners(Box& box, const Matrix& m) {
   box.corner1 = min(a, b);
   box.corner2 = max(a, b);
 }
+
+// Sphere::Translate, Sphere::Rotate and a uniform Sphere::Scale keep a sphere a sphere; anything else makes it
+// POV-Ray's ellipsoid.
+bool keeps_sphere(TransformKind kind, const Matrix& m) {
+  if (kind == TransformKind::translate || kind == TransformKind::rotate) return true;
+  return kind == TransformKind::scale && m.m[0][0] == m.m[1][1] && m.m[0][0] == m.m[2][2];
+}
 }  // namespace
 
 std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m) {
@@ -48,8 +55,9 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
   if (auto* text = std::get_if<Text>(&object.shape)) text->box_transforms.push_back(m);   // extents, as CSG::Transform
+  if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !keeps_sphere(kind, m)) sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {
-    if (!box->rotated && kind != TransformKind::other) {
+    if (!box->rotated && (kind == TransformKind::translate || kind == TransformKind::scale)) {
       fold_into_corners(*box, m);
       return;
     }

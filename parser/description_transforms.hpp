@@ -15,7 +15,7 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
 
 // How a transform was written: boxes fold translations and scalings into their corners until they are rotated
 // (POV-Ray's Box::Translate, Box::Scale).
-enum class TransformKind { translate, scale, other };
+enum class TransformKind { translate, rotate, scale, other };
 
 // A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
 // UV_FLAG —, clip and bounding objects), and for CSG every child and light inside (POV-Ray transforms a CSG by

@@ -446,6 +446,7 @@ class Interpreter {
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
+  std::uint32_t tokens_until_cancel_check_ = 0;   // ParseOptions::cancel is read once every kCancelCheckTokens
   std::vector<std::unique_ptr<FileTokens>> token_stores_;   // one per file read (files_ holds the texts)
   SymbolTable symbols_;
   SceneDescription scene_;

@@ -28,6 +28,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   Matrix m;
   if (try_transform(t, m)) {
     const TransformKind kind = t.is("translate") ? TransformKind::translate
+                               : t.is("rotate")  ? TransformKind::rotate
                                : t.is("scale")   ? TransformKind::scale
                                                  : TransformKind::other;
     apply_transform(object, m, kind);

@@ -6,6 +6,7 @@
 // when an object is placed. Throws ParseError (file:line:column, source line, caret, what was expected).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -35,6 +36,13 @@ struct ParseOptions {
   // Ray-object geometry for trace() and for inside() of shapes the parser does not test itself; the program passes
   // the renderer's (render::object_geometry()). Null: those are refused by name.
   std::shared_ptr<const ObjectGeometry> object_geometry;
+  // --povray-tolerances: the parser's own absolute tolerances as POV-Ray applies them, which matter only for
+  // scenes far below unit size (the renderer otherwise draws those as a rescaled twin, renderer/scene_scale.hpp):
+  // a camera whose look_at is closer than 1e-5 to its location is an error.
+  bool povray_tolerances = false;
+  // Set from elsewhere (povtrace's Ctrl-C handler) to stop the parse with a ParseError at the token it reached:
+  // a runaway #while, which POV-Ray and povtrace otherwise run forever, must still stop on Ctrl-C.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";

@@ -87,6 +87,13 @@ Token Interpreter::raw() {
       if (options_.max_tokens && ++tokens_read_ > options_.max_tokens)
         fail(make_token(*f.tokens, k).loc, "the parse read more than " + std::to_string(options_.max_tokens) +
                                                " tokens (the token limit of this run)");
+      if (options_.cancel && tokens_until_cancel_check_-- == 0) {
+        // Every directive of a #while loop passes here, so even a runaway loop reaches this check.
+        constexpr std::uint32_t kCancelCheckTokens = 4096;   // an atomic load per 4096 tokens costs nothing
+        tokens_until_cancel_check_ = kCancelCheckTokens;
+        if (options_.cancel->load(std::memory_order_relaxed))
+          fail(make_token(*f.tokens, k).loc, "interrupted while parsing");
+      }
       return make_token(*f.tokens, k);
     }
     const Token t = make_token(*f.tokens, k);

@@ -45,5 +45,8 @@ changing a scene; \`make_references.sh NAME...\` redoes only those).
 
 The regression tests (\`tests/regression\`) render every scene that has a reference here with povtrace using the same
 switches and compare with \`povdiff\` (PSNR ≥ 50 dB, at most 0.1 % of pixels off by more than 1/255).
+
+\`scale_twin/\` holds POV-Ray's renders of \`tests/stress/scale_twin.pov\` at scales 1e-5 … 1e6 for the
+\`--povray-tolerances\` tests, with their own script and README.
 README
 exit $failed

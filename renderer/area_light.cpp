@@ -105,7 +105,7 @@ Rgb Tracer::area_sample(AreaSampling& s, int u, int v) {
     distance *= dot(beam, direction);
     direction = beam;
   }
-  const Rgb f = shadow_filter(s.point, direction, distance, s.state);
+  const Rgb f = shadow_filter(s.light, s.point, direction, distance, s.state);
   cached = Rgb{s.colour.x * f.x, s.colour.y * f.y, s.colour.z * f.z};
   return cached;
 }

@@ -168,6 +168,7 @@ struct Hit {
 struct Intersections {
   static constexpr int capacity = 4;
   double t[capacity];
+  std::uint32_t element[capacity] = {};   // which part of the surface each root is on (a box's face), else 0
   int count = 0;
 };
 Intersections intersect_all(const Primitive& p, const Ray& ray);

@@ -42,6 +42,7 @@ class BlockRenderer {
       : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading) {}
 
   void render_block(int x0, int y0, int w, int h) {
+    tracer_.forget_shadow_cache();
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);

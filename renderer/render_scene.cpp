@@ -122,7 +122,17 @@ std::vector<InteriorRef> RenderScene::containing_interiors(Vec3 point) const {
   return out;
 }
 
+namespace {
+RenderScene build_scene(const SceneDescription& scene, const BuildOptions& options, bool may_rescale);
+}  // namespace
+
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
+  if (options.povray_tolerances) return build_scene(with_world_space_spheres(scene), options, false);
+  return build_scene(scene, options, true);
+}
+
+namespace {
+RenderScene build_scene(const SceneDescription& scene, const BuildOptions& options, bool may_rescale) {
   RenderScene r;
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
@@ -130,16 +140,15 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   MaterialTable materials(r.materials, images);
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
-  if (!options.povray_tolerances) {
+  if (may_rescale) {
     // A scene far from the ordinary scale is rendered as its rescaled twin (scene_scale.hpp).
     if (const double k = normalizing_scale(scene_size(primitives, scene.camera.location)); k != 1.0) {
-      BuildOptions twin = options;
-      twin.povray_tolerances = true;
-      RenderScene r2 = build_render_scene(scaled_scene(scene, k), twin);
-      r2.scale = k;
-      return r2;
+      RenderScene twin = build_scene(scaled_scene(scene, k), options, false);
+      twin.scale = k;
+      return twin;
     }
   }
+  r.povray_shadow_cache = options.povray_tolerances;
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   r.any_ray_flags = any_ray_flags(scene.objects);
   for (const auto& p : primitives) {
@@ -190,5 +199,6 @@ RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions
   }
   return r;
 }
+}  // namespace
 
 }  // namespace povtrace::render

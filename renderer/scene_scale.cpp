@@ -16,7 +16,28 @@ void scale_interiors(Object& o, double k) {
   if (auto* csg = std::get_if<Csg>(&o.shape))
     for (Object& child : csg->children) scale_interiors(child, k);
 }
+
+void fold_sphere_transforms(Object& o) {
+  if (auto* sphere = std::get_if<Sphere>(&o.shape); sphere && !sphere->ellipsoid) {
+    const Matrix& m = o.world_from_object;
+    sphere->centre = m.point(sphere->centre);
+    sphere->radius *= length(m.vector({1, 0, 0}));   // rotations and uniform scales only: |m·x| is the scale
+    o.world_from_object = Matrix::identity();
+  }
+  if (auto* csg = std::get_if<Csg>(&o.shape))
+    for (Object& child : csg->children) fold_sphere_transforms(child);
+  for (Object& clip : o.clipped_by) fold_sphere_transforms(clip);
+  for (Object& bound : o.bounded_by) fold_sphere_transforms(bound);
+}
 }  // namespace
+
+SceneDescription with_world_space_spheres(const SceneDescription& scene) {
+  SceneDescription s = scene;
+  for (Object& o : s.objects) fold_sphere_transforms(o);
+  for (Light& l : s.lights)
+    for (Object& o : l.looks_like) fold_sphere_transforms(o);
+  return s;
+}
 
 double scene_size(const std::vector<Primitive>& primitives, Vec3 camera_location) {
   Bounds box;

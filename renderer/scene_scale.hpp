@@ -3,7 +3,8 @@
 // shadows, surfaces or its horizon. povtrace renders such a scene as its twin at an ordinary scale: the whole
 // scene is scaled by a power of two (exact in floating point) that brings its size into the range where those
 // tolerances are harmless. Scenes already in that range — every ordinary scene — are left exactly as they are,
-// so they still match POV-Ray pixel for pixel; `--povray-tolerances` turns the rescaling off.
+// so they still match POV-Ray pixel for pixel; `--povray-tolerances` turns the rescaling off (and reproduces
+// POV-Ray's own renders of such scenes, tests/stress/povray_tolerances.cmake).
 #pragma once
 
 #include <vector>
@@ -24,5 +25,10 @@ double normalizing_scale(double size);
 // The scene with every length multiplied by k: objects, lights, camera, fog, and the distances interiors and
 // lights carry (fade_distance, cylinder light radius and falloff).
 SceneDescription scaled_scene(const SceneDescription& scene, double k);
+
+// The scene as POV-Ray holds it (for --povray-tolerances): every sphere that only translations, rotations and
+// uniform scales reached (Sphere::ellipsoid false) has them folded into its centre and radius, so its EPSILON
+// grazing test and DEPTH_TOLERANCE act on world lengths, as POV-Ray's do. Ellipsoids keep their transform.
+SceneDescription with_world_space_spheres(const SceneDescription& scene);
 
 }  // namespace povtrace::render

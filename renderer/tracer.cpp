@@ -180,6 +180,13 @@ TexturePoint material_point(const Material& m, const TexturePoint& at) {
 }  // namespace
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
+  // The shadow rays of this hit use the shadow-cache slot of its level; the rays it traces set their own.
+  struct LevelScope {
+    int& current;
+    int outer;
+    ~LevelScope() { current = outer; }
+  } scope{shading_level_, shading_level_};
+  shading_level_ = level;
   const MaterialBlend blend = materials_at(hit);
   const Vec3 point = ray.origin + ray.direction * hit.t;
   bool uv = false;
@@ -506,19 +513,20 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at)
 // POV-Ray walks a shadow ray from crossing to crossing (trace.cpp TracePointLightShadowRay): after a transparent
 // surface it starts again at that point and looks only beyond SMALL_TOLERANCE, so crossings closer than 1e-3 to
 // the previous one counted are passed over. The crossings are therefore sorted and filtered in order.
-Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state) {
+Rgb Tracer::shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance,
+                          const RayState& state) {
   if (!scene_.any_casts_shadow) return {1, 1, 1};
   ++counts_.shadow;
   Rgb f{1, 1, 1};
   // Hits count only with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE).
   const Ray ray{point, to_light};
+  if (scene_.povray_shadow_cache) return povray_shadow_filter(l, ray, distance, state);
   thread_local std::vector<SurfaceHit> hits;
   hits.clear();
   bool blocked = false;
   scene_.accelerator.for_each_shadow_hit(
       ray, tolerance::shadow, distance - tolerance::shadow, [&](std::uint32_t, const SurfaceHit& hit) {
-        const MaterialBlend blend = materials_at(hit);
-        blocked = blend.count == 1 && scene_.materials[blend.material[0]].opaque;
+        blocked = opaque_at(hit);
         if (!blocked) hits.push_back(hit);
         return !blocked;
       });
@@ -544,10 +552,73 @@ Rgb Tracer::shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayS
   return f;
 }
 
+bool Tracer::opaque_at(const SurfaceHit& hit) const {
+  const MaterialBlend blend = materials_at(hit);
+  return blend.count == 1 && scene_.materials[blend.material[0]].opaque;
+}
+
+namespace {
+constexpr std::uint32_t kNoOccluder = ~0u;
+}  // namespace
+
+std::uint32_t& Tracer::shadow_cache_slot(const RenderLight& l) {
+  if (shadow_cache_.empty()) shadow_cache_.assign(2 * scene_.lights.size(), kNoOccluder);
+  const auto light = static_cast<std::size_t>(&l - scene_.lights.data());
+  return shadow_cache_[2 * light + (shading_level_ == 1 ? 0 : 1)];
+}
+
+// POV-Ray tests the cached object with FindIntersection(object, …, light distance): any hit from MIN_ISECT_DEPTH
+// up to the light itself, with neither SHADOW_TOLERANCE limit of the ordinary walk.
+bool Tracer::cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const {
+  SurfaceHit hit;
+  return nearest_hit(scene_.accelerator.primitives()[primitive], ray, tolerance::min_isect_depth, distance, hit) &&
+         opaque_at(hit);
+}
+
+// POV-Ray's shadow ray exactly (trace.cpp TracePointLightShadowRay): first the object in the shadow cache; then
+// from crossing to crossing, each more than SMALL_TOLERANCE beyond the last one counted and short of the light by
+// more than SHADOW_TOLERANCE, until an opaque one. That one is cached when it is the first crossing counted. The
+// ordinary walk (shadow_filter) stops at any opaque crossing instead, which differs only when one lies within 1e-3
+// of a transparent crossing before it.
+Rgb Tracer::povray_shadow_filter(const RenderLight& l, const Ray& ray, double distance, const RayState& state) {
+  std::uint32_t& cached = shadow_cache_slot(l);
+  if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, distance)) return {0, 0, 0};
+  struct Crossing {
+    SurfaceHit hit;
+    std::uint32_t primitive;
+  };
+  thread_local std::vector<Crossing> crossings;
+  crossings.clear();
+  scene_.accelerator.for_each_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow,
+                                         [&](std::uint32_t i, const SurfaceHit& hit) { crossings.push_back({hit, i}); });
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
+  Rgb f{1, 1, 1};
+  InteriorList in;
+  if (scene_.any_shadow_fade) in = state.interiors;
+  double previous = 0;
+  for (const Crossing& c : crossings) {
+    if (previous > 0 && c.hit.t - previous <= tolerance::shadow) continue;
+    if (opaque_at(c.hit)) {
+      if (previous == 0) cached = c.primitive;
+      return {0, 0, 0};
+    }
+    bool opaque = false;
+    f = mul(f, filter_through(c.hit, ray.origin + ray.direction * c.hit.t, opaque));
+    if (scene_.any_shadow_fade) {
+      const InteriorRef self = interior_of(c.hit);
+      if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, c.hit.t - previous));
+      if (in.empty() || !in.remove(self)) in.append(self);
+    }
+    previous = c.hit.t;
+    if (all_below(f, tolerance::epsilon)) break;
+  }
+  return f;
+}
+
 Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
                            const RayState& state) {
   if (l.light.area) return area_light_shadow(l, point, to_light, colour, state);
-  return mul(colour, shadow_filter(point, to_light, distance, state));
+  return mul(colour, shadow_filter(l, point, to_light, distance, state));
 }
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with

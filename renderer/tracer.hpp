@@ -37,6 +37,9 @@ class Tracer {
   // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera.
   Radiance trace_camera_ray(const Ray& ray);
   const RayCounts& counts() const { return counts_; }
+  // Empties POV-Ray's shadow cache (see shadow_cache_): done at the start of every block, so that an image does
+  // not depend on which thread rendered which block before.
+  void forget_shadow_cache() { shadow_cache_.clear(); }
 
  private:
   // What a ray carries besides its geometry: the interiors it is in, and whether a miss may show the background's
@@ -91,9 +94,14 @@ class Tracer {
   // the distance used by the shadow test. Returns false when the light is cut off (below 1e-10).
   bool light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
   bool cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
-  // Shadow factor along the segment point → light: 0 when an opaque object blocks, a filter colour when
+  // Shadow factor along the segment point → light `l`: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
-  Rgb shadow_filter(Vec3 point, Vec3 to_light, double distance, const RayState& state);
+  Rgb shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, const RayState& state);
+  // The same as POV-Ray walks it under --povray-tolerances, with its shadow cache (RenderScene::povray_shadow_cache).
+  Rgb povray_shadow_filter(const RenderLight& l, const Ray& ray, double distance, const RayState& state);
+  std::uint32_t& shadow_cache_slot(const RenderLight& l);
+  bool cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const;
+  bool opaque_at(const SurfaceHit& hit) const;   // one material, and it lets no light through
   // The light colour `colour` (at the light's centre) after the shadow test: one ray for a point light, the
   // combined samples of an area light (area_light.cpp).
   Rgb shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
@@ -113,6 +121,12 @@ class Tracer {
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
   std::vector<const RenderTexture*> warps_;       // the patterned textures above the one being shaded
   std::vector<Rgb> area_grid_;                    // area light samples of the point being shaded
+  // POV-Ray's shadow cache (trace.cpp TracePointLightShadowRay), used only with RenderScene::povray_shadow_cache:
+  // per light, the last object that alone blocked a shadow ray, kept apart for the shadow rays of camera-ray hits
+  // (slot 2·light) and of deeper hits (2·light + 1); ~0u when empty. POV-Ray tests it first, with only
+  // MIN_ISECT_DEPTH as near limit instead of SHADOW_TOLERANCE, which is what shadows tiny scenes more.
+  std::vector<std::uint32_t> shadow_cache_;
+  int shading_level_ = 1;   // the trace level of the hit being shaded (which cache slot its shadow rays use)
 };
 
 // Pigment colour at a point (pattern evaluated in the pigment's own space). `found` (when given) is false where

@@ -93,7 +93,7 @@ inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double
       if (!(xs.t[k] < t_max)) return;
       best.t = xs.t[k];
       best.primitive = i;
-      best.surface = SurfaceHit{xs.t[k], &p, 0, 0, 0};
+      best.surface = SurfaceHit{xs.t[k], &p, xs.element[k], 0, 0};
       return;
     }
     return;
@@ -284,7 +284,8 @@ void Accelerator::shadow_traverse(const Ray& ray, double t_min, double t_max, Sh
     if (!p.data) {   // few roots: no buffer needed
       const Intersections xs = intersect_all(p, ray);
       for (int k = 0; k < xs.count; ++k)
-        if (xs.t[k] > t_min && xs.t[k] < t_max && !visit(context, i, SurfaceHit{xs.t[k], &p, 0, 0, 0})) return false;
+        if (xs.t[k] > t_min && xs.t[k] < t_max && !visit(context, i, SurfaceHit{xs.t[k], &p, xs.element[k], 0, 0}))
+          return false;
       return true;
     }
     hits.clear();

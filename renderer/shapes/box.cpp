@@ -16,9 +16,12 @@
 // - The ray misses if the exit depth is < DEPTH_TOLERANCE (1e-6). The entry depth is reported only when it is
 //   > DEPTH_TOLERANCE; the exit depth is always reported.
 // - Inside: the closed box (boundary inside); `inverse` negates the test exactly (boundary outside).
-// - Normal: POV-Ray remembers which face a root came from; our interface gets only the point, so we pick the face
-//   whose plane is nearest to the object-space point (same face everywhere except within ~1e-6 of an edge).
-//   Transformed boxes carry the axis normal to world space by the inverse transpose and normalise it.
+// - Normal: the face each root came from, as POV-Ray records it (Side1/Side2, kept in SurfaceHit::element). On a
+//   near-tie of two slabs (within CLOSE_TOLERANCE) the depth is the earlier slab's and the face is the one the
+//   ray runs more steeply into. Those ties lie within 1e-6 of an edge in depth, a sliver at ordinary scales but
+//   a whole pixel once the box is 1e-4 across. Transformed boxes carry the axis normal to world space by the
+//   inverse transpose and normalise it. box_normal, for callers that have only a point, picks the face whose
+//   plane is nearest to it.
 #include <cmath>
 
 #include "renderer/geometry.hpp"
@@ -35,6 +38,7 @@ Intersections intersect_box(const Primitive& p, const Ray& ray) {
   const Vec3 direction = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
   double t_enter = 0.0;
   double t_exit = tolerance::bound_huge;
+  std::uint32_t side_enter = 0, side_exit = 0;   // POV-Ray's smin, smax: 2·axis + 1 for the high face
   for (int axis = 0; axis < 3; ++axis) {
     const double d = direction[axis];
     const double o = origin[axis];
@@ -42,25 +46,51 @@ Intersections intersect_box(const Primitive& p, const Ray& ray) {
     const double hi = p.b[axis];
     if (d < -tolerance::epsilon || d > tolerance::epsilon) {
       // The x slab takes any strictly better depth; y and z need to beat the current one by the tie tolerance.
+      // On a near-tie the depth stays and the face becomes this axis' when the ray runs more along this axis
+      // than along the current face's (POV-Ray's "which side is most probably hit").
       const double tie = axis == 0 ? 0.0 : close_tolerance;
+      const auto steeper = [&](std::uint32_t side) { return std::fabs(d) > std::fabs(direction[side / 2]); };
+      const auto exit_side = static_cast<std::uint32_t>(2 * axis + (d < 0 ? 0 : 1));
+      const auto enter_side = static_cast<std::uint32_t>(2 * axis + (d < 0 ? 1 : 0));
       const double exit_plane = d < 0 ? lo : hi;
       const double enter_plane = d < 0 ? hi : lo;
       const double t_far = (exit_plane - o) / d;
       if (t_far < t_enter) return out;
-      if (t_far <= t_exit - tie) t_exit = t_far;
+      if (t_far <= t_exit - tie) {
+        t_exit = t_far;
+        side_exit = exit_side;
+      } else if (t_far <= t_exit + tie && steeper(side_exit)) {
+        side_exit = exit_side;
+      }
       const double t_near = (enter_plane - o) / d;
       if (t_near >= t_enter + tie) {
         if (t_near > t_exit) return out;
         t_enter = t_near;
+        side_enter = enter_side;
+      } else if (t_near >= t_enter - tie && axis > 0 && steeper(side_enter)) {
+        side_enter = enter_side;
       }
     } else if (o < lo || o > hi) {
       return out;  // parallel to this slab and outside it
     }
   }
   if (t_exit < tolerance::box_depth) return out;
-  if (t_enter > tolerance::box_depth) out.t[out.count++] = t_enter;
+  if (t_enter > tolerance::box_depth) {
+    out.element[out.count] = side_enter;
+    out.t[out.count++] = t_enter;
+  }
+  out.element[out.count] = side_exit;
   out.t[out.count++] = t_exit;
   return out;
+}
+
+// POV-Ray's Box::Normal: the axis normal of the face recorded with the root, carried to world space.
+Vec3 box_face_normal(const Primitive& p, std::uint32_t side) {
+  Vec3 n{};
+  n[static_cast<int>(side / 2)] = side % 2 == 1 ? 1.0 : -1.0;
+  if (!p.transformed) return n;
+  n = p.object_from_world.normal_from_inverse(n);
+  return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
 Vec3 box_normal(const Primitive& p, Vec3 world_point) {

@@ -26,6 +26,7 @@ Bounds plane_world_bounds(const Primitive& p);
 
 Intersections intersect_box(const Primitive& p, const Ray& ray);
 Vec3 box_normal(const Primitive& p, Vec3 world_point);
+Vec3 box_face_normal(const Primitive& p, std::uint32_t side);
 bool inside_box(const Primitive& p, Vec3 world_point);
 Bounds box_object_bounds(const Primitive& p);
 
@@ -151,7 +152,7 @@ void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   if (p.type == ShapeType::csg) return shapes::collect_csg_hits(p, ray, out);
   if (p.type == ShapeType::text) return shapes::collect_text_hits(p, ray, out);
   const Intersections xs = intersect_all(p, ray);
-  for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, 0, 0, 0});
+  for (int k = 0; k < xs.count; ++k) out.push_back(SurfaceHit{xs.t[k], &p, xs.element[k], 0, 0});
 }
 
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
@@ -163,7 +164,7 @@ bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max,
   for (int k = 0; k < xs.count; ++k) {
     if (!(xs.t[k] > t_min)) continue;
     if (!(xs.t[k] < t_max)) return false;   // roots are depth-sorted: the first one above t_min decides
-    hit = SurfaceHit{xs.t[k], &p, 0, 0, 0};
+    hit = SurfaceHit{xs.t[k], &p, xs.element[k], 0, 0};
     return true;
   }
   return false;
@@ -179,6 +180,8 @@ Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   if (hit.leaf->type == ShapeType::prism) return shapes::prism_hit_normal(*hit.leaf, hit.element, hit.u, world_point);
   if (hit.leaf->type == ShapeType::sor) return shapes::sor_hit_normal(*hit.leaf, hit.element, world_point);
   if (hit.leaf->type == ShapeType::isosurface) return shapes::isosurface_hit_normal(*hit.leaf, hit.element, world_point);
+  // A box: the face the slab test entered or left by (POV-Ray's Side1/Side2).
+  if (hit.leaf->type == ShapeType::box) return shapes::box_face_normal(*hit.leaf, hit.element);
   return surface_normal(*hit.leaf, world_point);
 }
 

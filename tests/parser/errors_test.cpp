@@ -2,6 +2,7 @@
 // what was expected (STYLE.md "Test error text and its position exactly"). Also: warnings that must not be
 // errors, unsupported features named as such, and hostile input (self-inclusion, runaway recursion, binary
 // garbage, very long lines) that must fail cleanly rather than crash.
+#include <atomic>
 #include <random>
 #include <string>
 #include <vector>
@@ -484,6 +485,19 @@ TEST(Limits, MacroCallsInsideIfsAndLoopsDoNotCountAsNesting) {
   const std::string text = "#version 3.7;\n#macro Count(N) #if (N > 0) #local I = 0; #while (I < 1) "
                            "#local I = I + 1; Count(N - 1) #end #else #debug \"bottom\" #end #end\nCount(200)\n";
   EXPECT_EQ(debug_output(text), "bottom");
+}
+
+// ParseOptions::cancel (povtrace's Ctrl-C): an endless #while stops with a located error once it is set; unset, the
+// same scene parses as far as it goes (a bounded loop here).
+TEST(Limits, CancelStopsAnEndlessLoop) {
+  std::atomic<bool> cancel{true};
+  ParseOptions o;
+  o.cancel = &cancel;
+  const ParseError e = parse_error("#version 3.7;\n#declare I = 0;\n#while (1) #declare I = I + 1; #end\n", o);
+  EXPECT_EQ(e.bare_message(), "interrupted while parsing");
+  cancel = false;
+  EXPECT_NO_THROW(parse_scene_text("#version 3.7;\n#declare I = 0;\n#while (I < 100000) #declare I = I + 1; #end\n",
+                                   "test.pov", o));
 }
 
 TEST(Robustness, DeeplyNestedCommentsAreFine) {

@@ -316,6 +316,39 @@ TEST(Transforms, RotateMatrixTransformBlockAndScaleZero) {
   EXPECT_NE(m.items[0].find("test.pov:5:15: warning: scale by 0"), std::string::npos) << m.items[0];
 }
 
+// POV-Ray's Sphere::Translate, Rotate and uniform Scale keep a sphere a sphere; a non-uniform scale, a matrix or a
+// transform block make it an ellipsoid for good (what --povray-tolerances folds, renderer/scene_scale.hpp).
+TEST(Transforms, SphereBecomesAnEllipsoidAsInPovray) {
+  const SceneDescription s = scene(
+      "sphere { 0, 1 translate x rotate y*30 scale 2 scale -3 }\n"
+      "sphere { 0, 1 scale <1,2,1> scale <1,0.5,1> }\n"
+      "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 0,0,0> }\n"
+      "sphere { 0, 1 transform { translate x } }\n"
+      "union { sphere { 0, 1 } sphere { x, 1 scale <1,2,1> } scale 2 }\n");
+  ASSERT_EQ(s.objects.size(), 5u);
+  EXPECT_FALSE(std::get<Sphere>(s.objects[0].shape).ellipsoid);
+  EXPECT_TRUE(std::get<Sphere>(s.objects[1].shape).ellipsoid);   // even though the scales cancel
+  EXPECT_TRUE(std::get<Sphere>(s.objects[2].shape).ellipsoid);
+  EXPECT_TRUE(std::get<Sphere>(s.objects[3].shape).ellipsoid);
+  const Csg& u = std::get<Csg>(s.objects[4].shape);
+  EXPECT_FALSE(std::get<Sphere>(u.children.at(0).shape).ellipsoid);
+  EXPECT_TRUE(std::get<Sphere>(u.children.at(1).shape).ellipsoid);
+}
+
+// POV-Ray's Parse_Camera: |look_at − location|² < 1e-10 is an error, an absolute test; with POV-Ray's tolerances
+// povtrace gives the same error (a camera 1e-6 times the usual size), without them it renders the scene.
+TEST(Camera, LookAtTooCloseToTheLocationIsPovraysErrorWithItsTolerances) {
+  const std::string text = "#version 3.7;\ncamera { location <0, 0, -7e-6> look_at <0, 1e-6, 0> }\n";
+  ParseOptions povray;
+  povray.povray_tolerances = true;
+  const ParseError e = parse_error(text, povray);
+  EXPECT_NE(std::string(e.what()).find("test.pov:2:33: error: Camera location and look_at point must be different."),
+            std::string::npos) << e.what();
+  EXPECT_NO_THROW(parse(text));
+  EXPECT_NO_THROW(parse_scene_text("#version 3.7;\ncamera { location <0, 0, -2e-5> look_at <0, 0, 0> }\n", "test.pov",
+                                   povray));   // 4e-10: allowed
+}
+
 // ---- Textures -------------------------------------------------------------------------------------------------
 TEST(Textures, DefaultTextureAndFinishDefaults) {
   const SceneDescription s = scene("sphere { 0, 1 }\n");
