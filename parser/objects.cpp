@@ -13,6 +13,7 @@ namespace {
 // The object's own top texture layer, created from the #default texture when the object has none yet
 // (object-level pigment/finish on an untextured object, §4 #default).
 TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
+  apply_deferred_texture_transforms(object);   // the layer edited is the one the transforms moved
   auto tex = std::make_shared<Texture>(object.texture ? *object.texture : defaults);
   object.texture = tex;
   return tex->layers.back();
@@ -41,6 +42,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     // layering (POV-Ray's Link_Textures).
     refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
+      apply_deferred_texture_transforms(object);   // the layers below were moved by them, the new ones are not
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
       object.texture = std::move(layered);
@@ -139,7 +141,10 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
     else fail_expected(t, "texture, interior, a transform or '}' in material { }");
     t = next();
   }
-  if (holder.texture) object.texture = holder.texture;
+  if (holder.texture) {
+    object.texture = holder.texture;
+    object.deferred_texture_transforms.clear();   // they belonged to the texture replaced
+  }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);
 }
