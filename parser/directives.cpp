@@ -98,7 +98,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
     }
   }
   if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
-  if (is_reserved_word(name_token.text))
+  if (reserved(name_token))   // by its NameId where the token has one
     fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
   const std::string name(name_token.text);
   if (deprecation && deprecation->message.empty())

@@ -98,7 +98,18 @@ class Interpreter {
              (text.empty() || text[0] == s[0]) && text == s;
     }
   };
-  Ahead raw_ahead();
+  // Inline for the frame's next plain token (asked after every operand, by every level of the expression grammar);
+  // out of line where a token was pushed back, a frame ends or a directive may follow.
+  Ahead raw_ahead() {
+    if (pushed_back_.empty()) {
+      const Frame& f = frames_.back();
+      const LexedToken& k = lexed(*f.tokens, f.index);
+      const std::string_view text(f.file->text.data() + k.offset, k.length());
+      if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
+    }
+    return raw_ahead_full();
+  }
+  Ahead raw_ahead_full();
   // Reading without making Tokens, where next() would return the frame's next kept token unchanged: nothing is
   // pushed back, and that token is neither '#', nor the end of a file, nor an identifier that runs something or
   // resolves to something else when read (a macro call, an array that subscripts may follow, a deprecated name).

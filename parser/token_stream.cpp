@@ -237,13 +237,7 @@ const Token& Interpreter::peek() {
   return pushed_back_.back();
 }
 
-Interpreter::Ahead Interpreter::raw_ahead() {
-  if (pushed_back_.empty()) {
-    const Frame& f = frames_.back();
-    const LexedToken& k = lexed(*f.tokens, f.index);
-    const std::string_view text(f.file->text.data() + k.offset, k.length());
-    if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
-  }
+Interpreter::Ahead Interpreter::raw_ahead_full() {
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
 }
