@@ -40,6 +40,18 @@
 
 namespace povtrace::sdl {
 
+// The float arguments of a built-in call, on the stack (expressions in loops call built-ins millions of times).
+struct CallArguments {
+  static constexpr std::size_t kMax = 64;   // the most any built-in takes (min, max, bitwise_*)
+  std::array<double, kMax> values;
+  std::size_t count = 0;
+  std::size_t size() const { return count; }
+  const double* begin() const { return values.data(); }
+  const double* end() const { return values.data() + count; }
+  double operator[](std::size_t i) const { return values[i]; }
+  void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
+};
+
 class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
@@ -216,7 +228,7 @@ class Interpreter {
   bool string_ahead();   // starts_string() of what comes next, made a Token only where needed
   class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
-  std::vector<double> parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+  CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
 
   // ---- arrays (arrays.cpp) ----
   Value parse_array_declaration(const Token& keyword);
