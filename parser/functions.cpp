@@ -94,8 +94,10 @@ std::string domain_error(std::string_view name, const Args& a) {
 }  // namespace
 
 CallArguments Interpreter::parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args) {
-  // Not expect(): its message would be built on every call of every built-in function.
-  if (const Token open = next(); !open.is("(")) fail_expected(open, "'(' after '" + std::string(name.text) + "'");
+  // Not expect(): its message would be built on every call of every built-in function. A plain '(' or ')' ahead is
+  // taken where it stands, without making its Token (what next() would return, unchanged).
+  if (plain_symbol(plain_ahead(), '(')) consume_plain();
+  else if (const Token open = next(); !open.is("(")) fail_expected(open, "'(' after '" + std::string(name.text) + "'");
   CallArguments args;
   // Single-argument functions take a full-level expression (§5 "Two levels").
   if (max_args == 1) {
@@ -109,8 +111,9 @@ CallArguments Interpreter::parse_call_arguments(const Token& name, std::size_t m
     }
     while (args.size() < max_args && accept(",")) args.push_back(parse_float());
   }
-  Token close = next();
-  if (!close.is(")")) fail_expected(close, "',' or ')' in the arguments of " + std::string(name.text));
+  if (plain_symbol(plain_ahead(), ')')) consume_plain();
+  else if (const Token close = next(); !close.is(")"))
+    fail_expected(close, "',' or ')' in the arguments of " + std::string(name.text));
   if (args.size() < min_args || args.size() > max_args)
     fail_at(name, std::string(name.text) + " takes " +
                       (min_args == max_args ? std::to_string(min_args) : "at least " + std::to_string(min_args)) +

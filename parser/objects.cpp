@@ -151,6 +151,10 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
 
 void Interpreter::parse_object_modifiers(Object& object) {
   while (true) {
+    if (plain_symbol(plain_ahead(), '}')) {   // the closing brace, without making its Token
+      consume_plain();
+      return;
+    }
     Token t = next();
     if (t.is("}")) return;
     if (try_object_modifier(t, object)) continue;
@@ -161,7 +165,7 @@ void Interpreter::parse_object_modifiers(Object& object) {
 }
 
 Object Interpreter::parse_sphere(const Token& keyword) {
-  expect("{", " after 'sphere'");
+  skip_expected('{', " after 'sphere'");
   Object o;
   o.loc = keyword.loc;
   Sphere s;
@@ -174,7 +178,7 @@ Object Interpreter::parse_sphere(const Token& keyword) {
 }
 
 Object Interpreter::parse_plane(const Token& keyword) {
-  expect("{", " after 'plane'");
+  skip_expected('{', " after 'plane'");
   Object o;
   o.loc = keyword.loc;
   Plane p;
@@ -191,7 +195,7 @@ Object Interpreter::parse_plane(const Token& keyword) {
 }
 
 Object Interpreter::parse_box(const Token& keyword) {
-  expect("{", " after 'box'");
+  skip_expected('{', " after 'box'");
   Object o;
   o.loc = keyword.loc;
   const Vec3 a = parse_vector();
@@ -247,7 +251,7 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
 // object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
 SceneItem Interpreter::parse_object_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
-  expect("{", " after 'object'");
+  skip_expected('{', " after 'object'");
   Token t = next();
   std::optional<SceneItem> item;
   if (const Value* v = lookup(t)) {
