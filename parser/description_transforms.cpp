@@ -42,8 +42,27 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
   if (texture) texture = transformed_texture(*texture, m);
 }
 
+bool texture_ignores_transforms(const Texture& texture) {
+  if (texture.pattern) return false;
+  for (const TextureLayer& layer : texture.layers)
+    if (layer.normal || layer.pigment.pattern != PatternKind::solid) return false;
+  return true;
+}
+
+void apply_deferred_texture_transforms(Object& object) {
+  for (const Matrix& m : object.deferred_texture_transforms) transform_texture(object.texture, m);
+  object.deferred_texture_transforms.clear();
+}
+
 void transform_object(Object& object, const Matrix& m, TransformKind kind) {
-  if (!object.uv_mapping) transform_texture(object.texture, m);
+  if (!object.uv_mapping && object.texture) {
+    if (texture_ignores_transforms(*object.texture)) {
+      object.deferred_texture_transforms.push_back(m);
+    } else {
+      apply_deferred_texture_transforms(object);
+      transform_texture(object.texture, m);
+    }
+  }
   for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
   for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
   for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);

@@ -30,6 +30,15 @@ bool opens_block(std::string_view word) {
 }  // namespace
 
 void Interpreter::directive(const Token& hash) {
+  // #declare and #local, the directives loops run most, are recognised from the kept token: no Token is made for
+  // the word (directive_declare reads on from after it). With a token limit, raw() counts the word.
+  if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
+    const std::string_view w = text_of(*k);
+    if (w == "declare" || w == "local") {
+      ++frames_.back().index;
+      return directive_declare(hash, w == "local");
+    }
+  }
   Token word = raw();
   // POV-Ray ignores a '#' that no directive name follows: the next token is read as if the '#' were not
   // there (a sample scene writes `look_at <0,2,0>#` before its closing brace).
@@ -78,7 +87,7 @@ void Interpreter::directive_version(const Token& at) {
   (void)at;
 }
 
-void Interpreter::directive_declare(const Token& at, bool local) {
+void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: the '#' or the directive word
   Token name_token = raw();
   // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
   std::optional<SymbolTable::Deprecation> deprecation;
@@ -98,7 +107,7 @@ void Interpreter::directive_declare(const Token& at, bool local) {
     }
   }
   if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
-  if (is_reserved_word(name_token.text))
+  if (reserved(name_token))   // by its NameId where the token has one
     fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
   const std::string name(name_token.text);
   if (deprecation && deprecation->message.empty())

@@ -385,21 +385,31 @@ Colour Interpreter::parse_colour() {
   return c.stored().as_colour();
 }
 
+namespace {
+bool is_string_function(std::string_view name) {
+  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr",
+                                         "datetime"};
+  for (auto f : fns)
+    if (name == f) return true;
+  return false;
+}
+}  // namespace
+
 bool Interpreter::string_ahead() {
   const LexedToken* k = plain_ahead();
   if (!k) return starts_string(peek());
   if (k->kind() != TokenKind::identifier) return k->kind() == TokenKind::string;
-  const FileTokens& tokens = *frames_.back().tokens;
-  return starts_string(make_token(tokens, *k));
+  // starts_string() of the token it would make, from its NameId (asked before every comparison operand).
+  if (is_string_function(text_of(*k))) return true;
+  if (symbols_.is_reserved(k->payload)) return false;
+  const Value* v = symbols_.find(k->payload);
+  return v && std::holds_alternative<std::string>(*v);
 }
 
 bool Interpreter::starts_string(const Token& t) const {
   if (t.kind == TokenKind::string) return true;
   if (t.kind != TokenKind::identifier) return false;
-  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr",
-                                         "datetime"};
-  for (auto f : fns)
-    if (t.text == f) return true;
+  if (is_string_function(t.text)) return true;
   if (reserved(t)) return false;
   const Value* v = lookup(t);
   return v && std::holds_alternative<std::string>(*v);

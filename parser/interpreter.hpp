@@ -41,6 +41,18 @@
 
 namespace povtrace::sdl {
 
+// The float arguments of a built-in call, on the stack (expressions in loops call built-ins millions of times).
+struct CallArguments {
+  static constexpr std::size_t kMax = 64;   // the most any built-in takes (min, max, bitwise_*)
+  std::array<double, kMax> values;
+  std::size_t count = 0;
+  std::size_t size() const { return count; }
+  const double* begin() const { return values.data(); }
+  const double* end() const { return values.data() + count; }
+  double operator[](std::size_t i) const { return values[i]; }
+  void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
+};
+
 class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
@@ -99,7 +111,18 @@ class Interpreter {
              (text.empty() || text[0] == s[0]) && text == s;
     }
   };
-  Ahead raw_ahead();
+  // Inline for the frame's next plain token (asked after every operand, by every level of the expression grammar);
+  // out of line where a token was pushed back, a frame ends or a directive may follow.
+  Ahead raw_ahead() {
+    if (pushed_back_.empty()) {
+      const Frame& f = frames_.back();
+      const LexedToken& k = lexed(*f.tokens, f.index);
+      const std::string_view text(f.file->text.data() + k.offset, k.length());
+      if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
+    }
+    return raw_ahead_full();
+  }
+  Ahead raw_ahead_full();
   // Reading without making Tokens, where next() would return the frame's next kept token unchanged: nothing is
   // pushed back, and that token is neither '#', nor the end of a file, nor an identifier that runs something or
   // resolves to something else when read (a macro call, an array that subscripts may follow, a deprecated name).
@@ -206,7 +229,7 @@ class Interpreter {
   bool string_ahead();   // starts_string() of what comes next, made a Token only where needed
   class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
-  std::vector<double> parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+  CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
 
   // ---- arrays (arrays.cpp) ----
   Value parse_array_declaration(const Token& keyword);

@@ -74,19 +74,22 @@ class FileTokens {
   const LexedToken& operator[](std::size_t i) const { return chunks_[i >> kChunkBits][i & kChunkMask]; }
   // Keeps a lexed token (its length at most LexedToken::kMaxLength, its offset below 4 GB).
   void push_back(const Token& t, std::uint32_t name) {
+    push_back(t.kind, t.begin, static_cast<std::uint32_t>(t.text.size()), name, t.number);
+  }
+  void push_back(TokenKind kind, const LexPosition& begin, std::uint32_t length, std::uint32_t name, double number) {
     if ((size_ >> kChunkBits) == chunks_.size()) chunks_.push_back(std::make_unique<LexedToken[]>(kChunkSize));
     LexedToken& k = chunks_[size_ >> kChunkBits][size_ & kChunkMask];
-    k.offset = static_cast<std::uint32_t>(t.begin.offset);
-    k.line = t.begin.line;
-    k.kind_length = static_cast<std::uint32_t>(t.text.size()) << 3 | static_cast<std::uint32_t>(t.kind);
+    k.offset = static_cast<std::uint32_t>(begin.offset);
+    k.line = begin.line;
+    k.kind_length = length << 3 | static_cast<std::uint32_t>(kind);
     k.payload = name;
-    if (t.kind == TokenKind::number) {
+    if (kind == TokenKind::number) {
       k.payload = static_cast<std::uint32_t>(numbers_.size());
-      numbers_.push_back(t.number);
+      numbers_.push_back(number);
     }
-    const auto line = static_cast<std::size_t>(t.begin.line);
+    const auto line = static_cast<std::size_t>(begin.line);
     if (line_starts_.size() <= line) line_starts_.resize(line + 1, 0);
-    line_starts_[line] = static_cast<std::uint32_t>(t.begin.offset) - static_cast<std::uint32_t>(t.begin.column - 1);
+    line_starts_[line] = static_cast<std::uint32_t>(begin.offset) - static_cast<std::uint32_t>(begin.column - 1);
     ++size_;
   }
   double number(const LexedToken& k) const { return numbers_[k.payload]; }
@@ -109,6 +112,21 @@ class FileTokens {
 // Skips white space and comments from `at`, then reads one token. Throws ParseError for an unterminated
 // comment or string, a malformed number or an illegal character.
 Token lex_token(const SourceFile& file, LexPosition at);
+
+// A token read by lex_quick: its kind, where it starts and how many bytes it has (it lies on one line), and a
+// number's value.
+struct QuickToken {
+  TokenKind kind = TokenKind::end_of_input;
+  LexPosition begin;
+  std::size_t length = 0;
+  double number = 0;
+};
+
+// The common tokens read by hand, as lex_token would read them but without building a Token or running the
+// grammar: an identifier, a number or a symbol after blanks (the first reading of a large scene is millions of
+// them). False, having read nothing, where anything else comes first — a comment, a string, the end of the file,
+// a number from_chars does not read exactly, an error — which lex_token then reads.
+bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out);
 
 // The decoded contents of a string token (escapes per §2: \a \b \f \n \r \t \v \\ \' \" \uXXXX).
 // `decode_escapes` is false for file names (#include), which POV-Ray takes verbatim.

@@ -13,6 +13,7 @@ namespace {
 // The object's own top texture layer, created from the #default texture when the object has none yet
 // (object-level pigment/finish on an untextured object, §4 #default).
 TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
+  apply_deferred_texture_transforms(object);   // the layer edited is the one the transforms moved
   auto tex = std::make_shared<Texture>(object.texture ? *object.texture : defaults);
   object.texture = tex;
   return tex->layers.back();
@@ -42,6 +43,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     // layering (POV-Ray's Link_Textures).
     refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
+      apply_deferred_texture_transforms(object);   // the layers below were moved by them, the new ones are not
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
       object.texture = std::move(layered);
@@ -140,13 +142,20 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
     else fail_expected(t, "texture, interior, a transform or '}' in material { }");
     t = next();
   }
-  if (holder.texture) object.texture = holder.texture;
+  if (holder.texture) {
+    object.texture = holder.texture;
+    object.deferred_texture_transforms.clear();   // they belonged to the texture replaced
+  }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);
 }
 
 void Interpreter::parse_object_modifiers(Object& object) {
   while (true) {
+    if (plain_symbol(plain_ahead(), '}')) {   // the closing brace, without making its Token
+      consume_plain();
+      return;
+    }
     Token t = next();
     if (t.is("}")) return;
     if (try_object_modifier(t, object)) continue;
@@ -157,7 +166,7 @@ void Interpreter::parse_object_modifiers(Object& object) {
 }
 
 Object Interpreter::parse_sphere(const Token& keyword) {
-  expect("{", " after 'sphere'");
+  skip_expected('{', " after 'sphere'");
   Object o;
   o.loc = keyword.loc;
   Sphere s;
@@ -170,7 +179,7 @@ Object Interpreter::parse_sphere(const Token& keyword) {
 }
 
 Object Interpreter::parse_plane(const Token& keyword) {
-  expect("{", " after 'plane'");
+  skip_expected('{', " after 'plane'");
   Object o;
   o.loc = keyword.loc;
   Plane p;
@@ -187,7 +196,7 @@ Object Interpreter::parse_plane(const Token& keyword) {
 }
 
 Object Interpreter::parse_box(const Token& keyword) {
-  expect("{", " after 'box'");
+  skip_expected('{', " after 'box'");
   Object o;
   o.loc = keyword.loc;
   const Vec3 a = parse_vector();
@@ -243,7 +252,7 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
 // object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
 SceneItem Interpreter::parse_object_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
-  expect("{", " after 'object'");
+  skip_expected('{', " after 'object'");
   Token t = next();
   std::optional<SceneItem> item;
   if (const Value* v = lookup(t)) {

@@ -273,6 +273,17 @@ Unsupported first_unsupported(const Object& o) {
       if (auto u = first_unsupported(c)) return u;
   return std::nullopt;
 }
+
+// A placed object is edited no more: transforms deferred for textures that ignore them are dropped (their light
+// sources' looks_like objects are settled when the lights are added).
+void settle_deferred_texture_transforms(Object& o) {
+  if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
+  o.deferred_texture_transforms.clear();
+  if (auto* csg = std::get_if<Csg>(&o.shape))
+    for (Object& child : csg->children) settle_deferred_texture_transforms(child);
+  for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})
+    for (Object& c : *list) settle_deferred_texture_transforms(c);
+}
 }  // namespace
 
 void Interpreter::place_light(Light light, const SourceLoc& at) {
@@ -284,6 +295,7 @@ void Interpreter::place_light(Light light, const SourceLoc& at) {
 // A light joins the scene's lights; its looks_like object joins the objects.
 void Interpreter::add_light(Light light) {
   for (Object& shown : light.looks_like) {
+    settle_deferred_texture_transforms(shown);
     post_process(shown);
     scene_.objects.push_back(std::move(shown));
   }
@@ -372,6 +384,7 @@ const Normal* first_untyped_normal(const Object& o) {
 void Interpreter::place_object(Object object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
   remove_unnecessary_bounds(object);
+  settle_deferred_texture_transforms(object);
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   scene_.objects.push_back(std::move(object));

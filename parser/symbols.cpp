@@ -140,11 +140,6 @@ Value* SymbolTable::resolve_alias(Value* v) const {
   return v;
 }
 
-const Value* SymbolTable::find(NameId id) const {
-  const Entry* e = top(id);
-  return e ? resolve_alias(const_cast<Value*>(&e->value)) : nullptr;
-}
-
 void SymbolTable::declare(NameId id, Value value) {
   if (Entry* e = top(id)) {
     if (Value* target = resolve_alias(&e->value)) *target = std::move(value);

@@ -31,7 +31,13 @@ class SymbolTable {
 
   // The value visible under `name`, following macro aliases; nullptr if undeclared. Takes the token's text as it
   // is: no string is made for a lookup.
-  const Value* find(NameId id) const;
+  // Inline, with the alias chain out of line: loops and macros look names up millions of times.
+  const Value* find(NameId id) const {
+    const Entry* e = top(id);
+    if (!e) return nullptr;
+    Value* v = const_cast<Value*>(&e->value);
+    return std::holds_alternative<Alias>(*v) ? resolve_alias(v) : v;
+  }
   const Value* find(std::string_view name) const { return find(id_of(name)); }
   // Level of the innermost table that holds `name` (aliases not followed).
   std::optional<std::size_t> level_of(NameId id) const;

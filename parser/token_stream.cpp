@@ -21,6 +21,16 @@ const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
   while (tokens.size() <= index) {
     if (tokens.size() > 0 && tokens[tokens.size() - 1].kind() == TokenKind::end_of_input)
       return tokens[tokens.size() - 1];   // the end of a file reads as the end however often it is asked for
+    if (QuickToken q; lex_quick(file, tokens.lexed_to, q)) {   // most tokens: no grammar run, no Token made
+      if (q.begin.offset + q.length > UINT32_MAX || q.length > LexedToken::kMaxLength)
+        fail(SourceLoc{file.name, q.begin.line, q.begin.column},
+             "the file is larger than 4 GB or has a token longer than 512 MB (the most povtrace reads)");
+      const std::string_view text(file.text.data() + q.begin.offset, q.length);
+      const auto length = static_cast<std::uint32_t>(q.length);
+      tokens.push_back(q.kind, q.begin, length, q.kind == TokenKind::identifier ? symbols_.intern(text) : 0, q.number);
+      tokens.lexed_to = LexPosition{q.begin.offset + q.length, q.begin.line, q.begin.column + static_cast<int>(length)};
+      continue;
+    }
     const Token t = lex_token(file, tokens.lexed_to);   // a lexical error throws before anything is kept
     if (t.end.offset > UINT32_MAX || t.text.size() > LexedToken::kMaxLength)
       fail(t.loc, "the file is larger than 4 GB or has a token longer than 512 MB (the most povtrace reads)");
@@ -244,13 +254,7 @@ const Token& Interpreter::peek() {
   return pushed_back_.back();
 }
 
-Interpreter::Ahead Interpreter::raw_ahead() {
-  if (pushed_back_.empty()) {
-    const Frame& f = frames_.back();
-    const LexedToken& k = lexed(*f.tokens, f.index);
-    const std::string_view text(f.file->text.data() + k.offset, k.length());
-    if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
-  }
+Interpreter::Ahead Interpreter::raw_ahead_full() {
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
 }

@@ -299,6 +299,46 @@ TEST_P(LexErrors, PositionAndMessage) {
   EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
 }
 
+// lex_quick, the hand-written reader of common tokens, reads what lex_token reads wherever it reads anything, and
+// leaves to it everything else (comments, strings, the end, errors, numbers from_chars does not take).
+TEST(LexQuick, AgreesWithTheGrammarOnEveryTokenItReads) {
+  const std::string text =
+      "#declare Value_12 = <1 * 0.5, 2. + .25, -3e2, 4E+1, 5e-1, 6e, 7e+, 8.e3> * 2;\n"
+      "  \t\r\v\f\x1a x<=y>=z!=w x<y>z!w a/b /* c */ d // e\n f \"s\" {}()[],;:?=+-*.&|#%^@$'~`\\ _a9 "
+      "1.5.x 9 1e-999 .x .";
+  const SourceFile file = make_file(std::string(text) + '\0' + " g");
+  LexPosition at;
+  int quick = 0;
+  while (true) {
+    const Token t = lex_token(file, at);
+    if (QuickToken q; lex_quick(file, at, q)) {
+      ++quick;
+      EXPECT_EQ(q.kind, t.kind) << t.text;
+      EXPECT_EQ(q.begin.offset, t.begin.offset) << t.text;
+      EXPECT_EQ(q.begin.line, t.begin.line) << t.text;
+      EXPECT_EQ(q.begin.column, t.begin.column) << t.text;
+      EXPECT_EQ(q.length, t.text.size()) << t.text;
+      if (t.kind == TokenKind::number) {
+        EXPECT_EQ(q.number, t.number) << t.text;
+      }
+    } else {
+      EXPECT_TRUE(t.kind == TokenKind::end_of_input || t.kind == TokenKind::string || t.text == "1e-999" ||
+                  t.text == "d" || t.text == "f")
+          << "left to lex_token: " << t.text;
+    }
+    if (t.kind == TokenKind::end_of_input) break;
+    at = t.end;
+  }
+  EXPECT_GT(quick, 60);
+}
+
+TEST(LexQuick, LeavesErrorsToTheGrammar) {
+  for (const char* text : {"1.2.3", "1e999", "\x01", "\"open"}) {
+    QuickToken q;
+    EXPECT_FALSE(lex_quick(make_file(text), {}, q)) << text;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Table, LexErrors,
     ::testing::Values(

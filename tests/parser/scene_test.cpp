@@ -549,6 +549,29 @@ TEST(Objects, ObjectIdentifierIsADeepCopy) {
   EXPECT_EQ(std::get<Sphere>(s.objects[4].shape).centre, (Vec3{1, 0, 0}));
 }
 
+// A solid-coloured texture renders the same however it is moved: copies moved by transforms share the declared
+// object's texture, yet a pigment edited after the transforms starts from the moved one, as when it is copied.
+TEST(Objects, MovedCopiesOfASolidTexturedObjectShareItsTexture) {
+  const SceneDescription s = scene(
+      "#declare S = sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 0.5 } } }\n"
+      "object { S translate x }\n"
+      "object { S translate y rotate z*30 }\n"
+      "object { S translate x scale 2 pigment { checker } }\n"
+      "object { S translate x normal { bumps } pigment { checker } }\n"
+      "object { S translate x texture { pigment { checker } } }\n"
+      "object { S translate x material { texture { pigment { checker } } } }\n");
+  ASSERT_EQ(s.objects.size(), 6u);
+  EXPECT_EQ(s.objects[0].texture, s.objects[1].texture);
+  for (const Object& o : s.objects) EXPECT_TRUE(o.deferred_texture_transforms.empty());
+  expect_matrix_near(top_layer(s.objects[2]).pigment.world_from_pattern,
+                     Matrix::translation({1, 0, 0}) * Matrix::scaling({2, 2, 2}));
+  expect_matrix_near(top_layer(s.objects[3]).pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
+  ASSERT_EQ(s.objects[4].texture->layers.size(), 2u);
+  expect_matrix_near(s.objects[4].texture->layers[0].pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
+  expect_matrix_near(top_layer(s.objects[4]).pigment.world_from_pattern, Matrix::identity());
+  expect_matrix_near(top_layer(s.objects[5]).pigment.world_from_pattern, Matrix::identity());
+}
+
 TEST(Objects, NestedObjectCopiesCompose) {
   const SceneDescription s = scene(
       "#declare A = sphere { 0, 1 translate x }\n"
