@@ -185,11 +185,12 @@ class ParetoTests(unittest.TestCase):
                              "psnr_db": pareto.psnr(e), "setting": "x"})
         lines, verdict = pareto.scene_summary("s", rows)
         self.assertEqual(verdict, "povtrace's front dominates POV-Ray's")
-        self.assertIn("2.00–2.00×", "\n".join(lines))
+        self.assertIn("Speed at equal or lower error: 2.00–2.00", "\n".join(lines))
 
     def test_aa_switches(self):
         self.assertEqual(pareto.aa_switches((0, 0.0, 0)), ["-A"])
         self.assertEqual(pareto.aa_switches((2, 0.05, 4)), ["+AM2", "+A0.05", "+R4", "-J"])
+        self.assertEqual(pareto.aa_switches((1, 0, 3)), ["+AM1", "+A0.0", "+R3", "-J"])   # POV-Ray rejects +A0
 
 
 if __name__ == "__main__":
