@@ -71,8 +71,8 @@ def run_gnuplot(gnuplot, script_path, cwd):
 
 
 def gnuplot_string(text):
-    """A gnuplot double-quoted string literal."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """A gnuplot double-quoted string literal (a newline in `text` becomes gnuplot's \\n line break)."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
 
 
 # ---------------------------------------------------------------------------------------------------------------

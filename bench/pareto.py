@@ -380,7 +380,8 @@ def write_plot(rows, scenes, args, work):
            "set logscale x", "set grid", "set key bottom right font ',8'",
            "set xlabel 'render time, s (log; POV-Ray Trace Time, povtrace render_s)'",
            "set ylabel 'PSNR against ground truth, dB (higher is better)'", "set offsets graph 0.03, graph 0.03",
-           f"set multiplot layout 1,{len(panels)} title {gnuplot_string('Antialiasing: time against error, ' + subtitle)}"]
+           f"set multiplot layout 1,{len(panels)} title "
+           f"{gnuplot_string('Antialiasing: render time against error' + chr(10) + subtitle)}"]
     for name, curves in panels:
         out += [f"set title {gnuplot_string(name)}", "plot " + ", ".join(curves)]
     out.append("unset multiplot")

@@ -9,7 +9,7 @@
 Options: --reps N (5), --width/--height (640x480), --threads N (2), --only NAME..., --quick, --full, --list,
 --povtrace PATH (build/povtrace), --povdiff PATH (next to povtrace), --povray PATH (povray), --timeout S per run
 (900), --results DIR (bench/results), --keep DIR, --embree, --embree-src DIR, --embree-build DIR, --label TEXT,
---no-plots.
+--no-plots, --replot (redraw the plots from an existing latest.csv).
 
 Render suite (each also as NAME_aa, rendered with `+A0.3 +R3 -J` instead of `-A` by both renderers; no jitter, so the
 images are comparable pixel for pixel):
@@ -408,6 +408,15 @@ def has_values(rows, key):
     return any(isinstance(r.get(key), (int, float)) and math.isfinite(r[key]) and r[key] > 0 for r in rows)
 
 
+# POV-Ray reports its parse time in milliseconds: below this, a parse ratio is rounding, not a measurement.
+MIN_PARSE_FOR_RATIO_S = 0.02
+
+
+def meaningful_parse(row):
+    times = [row.get("povtrace_parse_s_median"), row.get("povray_parse_s_median")]
+    return all(isinstance(t, (int, float)) for t in times) and max(times) >= MIN_PARSE_FOR_RATIO_S
+
+
 PT_COLOUR, PR_COLOUR, EM_COLOUR = "#d9622b", "#2b6cd9", "#3a9a3a"
 
 # Per-scene bar panels: (title, y label, [(row key, legend, colour)]). Series without a value are left out, and a
@@ -422,7 +431,7 @@ SCENE_PANELS = {
     "latest_ratios.png": [
         ("POV-Ray ÷ povtrace (> 1: povtrace is faster)", "ratio (log)",
          [("ratio_render_median", "render", PT_COLOUR), ("ratio_wall_median", "wall", "#888888"),
-          ("ratio_parse_median", "parse", "#7a4fb0")]),
+          ("ratio_parse_median", f"parse (where a parse takes >= {MIN_PARSE_FOR_RATIO_S:g} s)", "#7a4fb0")]),
         ("Render time ÷ Embree ceiling (> 1: slower than Embree)", "ratio (log)",
          [("povtrace_over_embree_render_median", "povtrace ÷ Embree", PT_COLOUR),
           ("povray_over_embree_render_median", "POV-Ray ÷ Embree", PR_COLOUR)])],
@@ -460,7 +469,7 @@ def scene_bars_script(png, panels, rows, data, keys, subtitle):
             out.append("set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead lw 2 lc rgb 'black' front")
         else:
             out.append("unset arrow 1")
-        out.append(f"set title {gnuplot_string(title + ', ' + subtitle)}")
+        out.append(f"set title {gnuplot_string(title + chr(10) + subtitle)}")
         out.append(f"set ylabel '{ylabel}'")
         parts = []
         for i, (col, legend, colour) in enumerate(present):
@@ -502,10 +511,11 @@ def scaling_script(rows, work, subtitle):
             panels.append((title, ylabel, curves))
     if not panels:
         return None
-    out = [f"set terminal pngcairo size {500 * len(panels)},520", "set output 'latest_scaling.png'",
+    out = [f"set terminal pngcairo size {500 * len(panels)},660", "set output 'latest_scaling.png'",
            "set termoption noenhanced", "set datafile missing 'NaN'", "set logscale xy", "set grid",
-           "set key top left font ',8'", "set xlabel 'spheres or triangles (log)'", "set offsets graph 0.05, graph 0.05",
-           f"set multiplot layout 1,{len(panels)} title {gnuplot_string('Scaling with object count, no AA, ' + subtitle)}"]
+           "set key below maxrows 3 font ',8'", "set offsets graph 0.05, graph 0.05",
+           f"set multiplot layout 1,{len(panels)} title "
+           f"{gnuplot_string('Against the number of spheres or triangles (x, log), no AA' + chr(10) + subtitle)}"]
     for title, ylabel, curves in panels:
         out += [f"set title '{title}'", f"set ylabel '{ylabel}'", "plot " + ", ".join(curves)]
     out.append("unset multiplot")
@@ -528,7 +538,10 @@ def write_plots(rows, args, work):
     with open(data, "w") as f:
         f.write("# scene " + " ".join(keys) + "\n")
         for r in rows:
-            f.write(" ".join([r["scene"]] + [dat(r.get(k)) for k in keys]) + "\n")
+            values = {k: r.get(k) for k in keys}
+            if not meaningful_parse(r):
+                values["ratio_parse_median"] = None
+            f.write(" ".join([r["scene"]] + [dat(values[k]) for k in keys]) + "\n")
     scripts = {png: scene_bars_script(png, panels, rows, data, keys, subtitle) for png, panels in SCENE_PANELS.items()}
     scripts["latest_scaling.png"] = scaling_script(rows, work, subtitle)
     made, errors = [], []
@@ -577,6 +590,8 @@ def parse_args(argv=None):
                     help="where embree_bench is built (never inside --embree-src)")
     ap.add_argument("--label", default="", help="a note for the titles of the tables and plots, e.g. 'smoke run'")
     ap.add_argument("--no-plots", action="store_true")
+    ap.add_argument("--replot", action="store_true",
+                    help="only redraw the plots from the latest.csv in --results (pass the same --label)")
     args = ap.parse_args(argv)
     args.povtrace = os.path.abspath(args.povtrace)
     if args.povdiff is None:
@@ -597,8 +612,41 @@ def selected_names(args):
     return QUICK if args.quick else SUITE if args.full else DEFAULT
 
 
+def read_rows(path):
+    """latest.csv back as summary rows: numbers as int/float, empty cells as None."""
+    def value(text):
+        if text == "":
+            return None
+        for kind in (int, float):
+            try:
+                return kind(text)
+            except ValueError:
+                pass
+        return text
+    with open(path, newline="") as f:
+        rows = [{k: value(v) for k, v in row.items()} for row in csv.DictReader(f)]
+    for row in rows:
+        for key in ("scene", "povtrace_ok", "povray_ok", "errors", "embree_error"):
+            if key in row:
+                row[key] = "" if row[key] is None else str(row[key])
+    return rows
+
+
+def replot(args):
+    rows = read_rows(os.path.join(args.results, "latest.csv"))
+    if not rows:
+        return 1
+    args.width, args.height, args.threads, args.reps = (rows[0][k] for k in ("width", "height", "threads", "reps"))
+    with tempfile.TemporaryDirectory(prefix="povtrace-bench-plots-") as work:
+        plots, note = write_plots(rows, args, work)
+    print("plots: " + ", ".join(plots) + (f"; {note}" if note else ""))
+    return 0 if plots else 1
+
+
 def main(argv=None):
     args = parse_args(argv)
+    if args.replot:
+        return replot(args)
     if args.list:
         for title, names in (("default", DEFAULT), ("--quick", QUICK), ("--full", SUITE),
                              ("--only also", list(LEGACY_SCENES) + list(PARSE_SCENES))):
