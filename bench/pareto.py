@@ -20,7 +20,9 @@ truth made by POV-Ray (how far apart the renderers are before antialiasing enter
 at half the factor (how converged the ground truth is).
 
 Results in --results (bench/results/pareto): pareto.csv (one row per scene, renderer and setting), pareto.md
-(summary: the Pareto fronts and whether povtrace's front dominates POV-Ray's) and pareto.png (gnuplot).
+(summary: the Pareto fronts and whether povtrace's front dominates POV-Ray's), pareto.png (gnuplot) and
+pareto_run.json (header, ground-truth checks and settings, so that --resummarize can redo the summary and the plot
+from the CSV without rendering).
 """
 import argparse
 import csv
@@ -111,17 +113,28 @@ def pareto_front(points):
     return sorted(front, key=lambda i: points[i])
 
 
+# Between the two renderers, "as accurate" allows this relative RMSE difference (about 0.09 dB): at the same
+# setting their images differ by ~1e-5 (100+ dB apart), which must not count as one being less accurate.
+ERROR_TOLERANCE = 0.01
+
+
+def as_accurate(p, q):
+    """p's error is no worse than q's, within ERROR_TOLERANCE."""
+    return p[1] <= q[1] * (1 + ERROR_TOLERANCE)
+
+
 def front_coverage(ours, theirs):
-    """How many points of the front `theirs` are weakly dominated (time <= and error <=) by a point of `ours`."""
-    return sum(1 for q in theirs if any(p[0] <= q[0] and p[1] <= q[1] for p in ours))
+    """How many points of the front `theirs` are matched or beaten in both time and error (within
+    ERROR_TOLERANCE) by a point of `ours`."""
+    return sum(1 for q in theirs if any(p[0] <= q[0] and as_accurate(p, q) for p in ours))
 
 
 def speedup_at_equal_error(ours, theirs):
-    """For each point q of `theirs`: q's time ÷ the shortest time of a point of `ours` with error <= q's (None
-    when no point of ours is that accurate)."""
+    """For each point q of `theirs`: q's time ÷ the shortest time of a point of `ours` at least as accurate
+    (within ERROR_TOLERANCE); None when no point of ours is that accurate."""
     out = []
     for q in theirs:
-        times = [p[0] for p in ours if p[1] <= q[1]]
+        times = [p[0] for p in ours if as_accurate(p, q)]
         out.append(q[0] / min(times) if times and min(times) > 0 else None)
     return out
 
@@ -273,7 +286,8 @@ def scene_summary(name, rows):
     else:
         verdict = "neither front dominates the other"
     lines.append(f"**{verdict}**: {covered} of POV-Ray's {n_pr} front points are matched or beaten (time and error "
-                 f"both no worse) by a povtrace point; {reverse} of povtrace's {n_pt} by a POV-Ray point.")
+                 f"both no worse, error within {100 * ERROR_TOLERANCE:g} %) by a povtrace point; {reverse} of "
+                 f"povtrace's {n_pt} by a POV-Ray point.")
     speedups = [s for s in speedup_at_equal_error(pts["povtrace"], pts["povray"]) if s is not None]
     if speedups:
         lines.append(f"Speed at equal or lower error: {min(speedups):.2f}–{max(speedups):.2f} (the time of each "
@@ -413,6 +427,8 @@ def parse_args(argv=None):
     ap.add_argument("--keep", metavar="DIR", help="keep scenes and images in DIR instead of a temporary folder")
     ap.add_argument("--label", default="", help="a note for the titles, e.g. 'smoke run'")
     ap.add_argument("--no-plots", action="store_true")
+    ap.add_argument("--resummarize", action="store_true",
+                    help="no rendering: fronts, pareto.md and pareto.png again from pareto.csv and pareto_run.json")
     args = ap.parse_args(argv)
     args.povtrace = os.path.abspath(args.povtrace)
     if args.reps < 1:
@@ -424,8 +440,67 @@ def parse_args(argv=None):
     return args
 
 
+CSV_FIELDS = ["scene", "renderer", "method", "threshold", "depth", "setting", "switches", "width", "height", "reps",
+              "ok", "render_s_min", "render_s_median", "wall_s_min", "rmse", "psnr_db", "on_front", "error"]
+# What --resummarize needs besides pareto.csv: the header, the ground-truth checks and the settings of the run.
+RUN_KEYS = ("scenes", "width", "height", "reps", "threads", "gt_factor", "label")
+
+
+def read_csv_rows(path):
+    numbers = {"method": int, "depth": int, "width": int, "height": int, "reps": int, "threshold": float,
+               "render_s_min": float, "render_s_median": float, "wall_s_min": float, "rmse": float,
+               "psnr_db": float}
+    rows = []
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            for key, kind in numbers.items():
+                row[key] = kind(row[key]) if row[key] != "" else None
+            row["on_front"] = row["on_front"] == "True"
+            rows.append(row)
+    return rows
+
+
+def write_outputs(args, rows, notes, header, work):
+    """pareto.png, pareto.csv, pareto_run.json and pareto.md in args.results."""
+    plot, plot_note = write_plot(rows, args.scenes, args, work)
+    csv_path = os.path.join(args.results, "pareto.csv")
+    with open(csv_path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=CSV_FIELDS)
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(args.results, "pareto_run.json"), "w") as f:
+        json.dump({"header": header, "notes": notes, "run": {k: getattr(args, k) for k in RUN_KEYS}}, f, indent=1)
+    md_path = os.path.join(args.results, "pareto.md")
+    write_markdown(md_path, rows, notes, header, args, plot, plot_note)
+    with open(md_path) as f:
+        print(f.read())
+    print(f"wrote {csv_path}, {md_path}" + (f", {os.path.join(args.results, plot)}" if plot else ""))
+
+
+def resummarize(args):
+    """Fronts, verdicts, Markdown and plot again from pareto.csv and pareto_run.json (no rendering)."""
+    with open(os.path.join(args.results, "pareto_run.json")) as f:
+        saved = json.load(f)
+    for key, value in saved["run"].items():
+        setattr(args, key, value)
+    rows = read_csv_rows(os.path.join(args.results, "pareto.csv"))
+    for row in rows:
+        row["on_front"] = False
+    for name in args.scenes:
+        for tool in TOOLS:
+            mine = [r for r in rows if r["scene"] == name and r["renderer"] == tool and r["rmse"] is not None
+                    and r["render_s_min"] is not None]
+            for i in pareto_front([(r["render_s_min"], r["rmse"]) for r in mine]):
+                mine[i]["on_front"] = True
+    with tempfile.TemporaryDirectory(prefix="povtrace-pareto-") as work:
+        write_outputs(args, rows, saved["notes"], saved["header"], work)
+    return 0 if rows else 1
+
+
 def main(argv=None):
     args = parse_args(argv)
+    if args.resummarize:
+        return resummarize(args)
     work = os.path.abspath(args.keep) if args.keep else tempfile.mkdtemp(prefix="povtrace-pareto-")
     os.makedirs(work, exist_ok=True)
     os.makedirs(args.results, exist_ok=True)
@@ -443,22 +518,10 @@ def main(argv=None):
             scene_rows, scene_notes = measure_scene(args, name, work)
             rows += scene_rows
             notes.append(scene_notes)
-        plot, plot_note = write_plot(rows, args.scenes, args, work)
+        write_outputs(args, rows, notes, header, work)
     finally:
         if not args.keep:
             shutil.rmtree(work, ignore_errors=True)
-    csv_path = os.path.join(args.results, "pareto.csv")
-    fields = ["scene", "renderer", "method", "threshold", "depth", "setting", "switches", "width", "height", "reps",
-              "ok", "render_s_min", "render_s_median", "wall_s_min", "rmse", "psnr_db", "on_front", "error"]
-    with open(csv_path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields)
-        w.writeheader()
-        w.writerows(rows)
-    md_path = os.path.join(args.results, "pareto.md")
-    write_markdown(md_path, rows, notes, header, args, plot, plot_note)
-    with open(md_path) as f:
-        print(f.read())
-    print(f"wrote {csv_path}, {md_path}" + (f", {os.path.join(args.results, plot)}" if plot else ""))
     return 0 if rows else 1
 
 

@@ -177,6 +177,13 @@ class ParetoTests(unittest.TestCase):
         self.assertEqual(pareto.front_coverage(ours, theirs), 2)
         self.assertEqual(pareto.speedup_at_equal_error(ours, theirs), [2.0, 2.0, None])
 
+    def test_equal_error_allows_rounding_between_renderers(self):
+        ours = [(0.2, 0.0076167), (2.0, 0.003)]
+        theirs = [(0.4, 0.0076166)]
+        self.assertEqual(pareto.speedup_at_equal_error(ours, theirs), [2.0])
+        self.assertEqual(pareto.front_coverage(ours, theirs), 1)
+        self.assertEqual(pareto.front_coverage([(0.2, 0.0078)], theirs), 0)   # 2.4 % worse is worse
+
     def test_verdict(self):
         rows = []
         for tool, pts in (("povtrace", [(0.5, 0.5), (1.0, 0.2)]), ("povray", [(1.0, 0.5), (2.0, 0.2)])):
