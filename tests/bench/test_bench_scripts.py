@@ -119,6 +119,26 @@ class SuiteTests(unittest.TestCase):
         self.assertIn("| grid_100 | 0/2 | 2/2 |", text)
         self.assertIn("- grid_100: exit status 1: parse error", text)
 
+    def test_replot_reads_the_summary_back(self):
+        args = run_bench.parse_args(["--reps", "1"])
+        ok = {"tool": "povray", "ok": True, "rc": 0, "wall_s": 1.0, "peak_kb": 2048, "parse_s": 0.001,
+              "build_s": 0.0, "render_s": 0.5, "total_s": None, "rays": None, "error": None}
+        row = run_bench.summarize("mesh2_10000", [ok, dict(ok, tool="povtrace", rays=10)], 101.5, "pass", args)
+        run_bench.add_embree(row, {})
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "latest.csv")
+            with open(path, "w", newline="") as f:
+                w = run_bench.csv.DictWriter(f, fieldnames=list(row.keys()))
+                w.writeheader()
+                w.writerow(row)
+            back = run_bench.read_rows(path)[0]
+        self.assertEqual(back["scene"], "mesh2_10000")
+        self.assertEqual(back["primitives"], 10000)
+        self.assertEqual(back["povtrace_ok"], "1/1")
+        self.assertAlmostEqual(back["psnr_db"], 101.5)
+        self.assertIsNone(back["embree_render_s_median"])
+        self.assertFalse(run_bench.meaningful_parse(back), "1 ms parses give no parse ratio in the plot")
+
     def test_no_plot_panel_without_data(self):
         rows = [{"scene": "a", "povtrace_render_s_median": None}]
         self.assertIsNone(run_bench.scene_bars_script("x.png", run_bench.SCENE_PANELS["latest_times.png"], rows,
