@@ -200,9 +200,11 @@ def build_embree(args):
     if error:
         return None, error
     os.makedirs(args.embree_build, exist_ok=True)
+    # The Makefile sets CXX and CXXFLAGS with ?=: a CXXFLAGS=-O0 in the caller's environment would slow the ceiling.
+    env = {k: v for k, v in os.environ.items() if k not in ("CXX", "CXXFLAGS")}
     proc = subprocess.run(["make", "-C", args.embree_build, "-f", makefile, f"VPATH={args.embree_src}",
                            "embree_bench"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          errors="replace")
+                          errors="replace", env=env)
     binary = os.path.join(args.embree_build, "embree_bench")
     if proc.returncode != 0 or not os.access(binary, os.X_OK):
         return None, "building embree_bench failed: " + tail(proc.stdout, 6)
