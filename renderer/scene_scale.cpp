@@ -1,5 +1,6 @@
 #include "renderer/scene_scale.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "parser/description_transforms.hpp"
@@ -7,9 +8,9 @@
 namespace povtrace::render {
 
 namespace {
-// The ordinary range of scene sizes, where POV-Ray's absolute tolerances are small against the scene and its
-// maximum distance far beyond it; rescaled scenes land near the middle of it.
-constexpr double kSmallest = 1.0, kLargest = 16384, kTarget = 16;
+// The ordinary range of object sizes, where POV-Ray's absolute tolerances (1e-4, 1e-3) are small against the
+// objects and its maximum distance (1e7) far beyond them; rescaled scenes land near the middle of it, in log terms.
+constexpr double kSmallest = 0.05, kLargest = 1e4, kTarget = 2;
 
 void scale_interiors(Object& o, double k) {
   if (o.interior) o.interior->fade_distance *= k;
@@ -39,17 +40,21 @@ SceneDescription with_world_space_spheres(const SceneDescription& scene) {
   return s;
 }
 
-double scene_size(const std::vector<Primitive>& primitives, Vec3 camera_location) {
-  Bounds box;
-  box.extend(camera_location);
+ObjectSizes object_sizes(const std::vector<Primitive>& primitives) {
+  std::vector<double> sizes;
+  sizes.reserve(primitives.size());
   for (const Primitive& p : primitives)
-    if (const Bounds b = world_bounds(p); b.finite() && !b.empty()) box.extend(b);
-  return length(box.hi - box.lo);
+    if (const Bounds b = world_bounds(p); b.finite() && !b.empty()) sizes.push_back(length(b.hi - b.lo));
+  if (sizes.empty()) return {};
+  std::sort(sizes.begin(), sizes.end());
+  return ObjectSizes{sizes.front(), sizes[(sizes.size() - 1) / 2], sizes.back()};
 }
 
-double normalizing_scale(double size) {
-  if (!(size > 0) || !std::isfinite(size) || (size >= kSmallest && size <= kLargest)) return 1.0;
-  return std::exp2(std::round(std::log2(kTarget / size)));
+double normalizing_scale(const ObjectSizes& sizes) {
+  const bool all_tiny = sizes.largest > 0 && sizes.largest < kSmallest;
+  const bool all_huge = std::isfinite(sizes.smallest) && sizes.smallest > kLargest;
+  if (!all_tiny && !all_huge) return 1.0;
+  return std::exp2(std::round(std::log2(kTarget / sizes.median)));
 }
 
 SceneDescription scaled_scene(const SceneDescription& scene, double k) {

@@ -1,8 +1,10 @@
 // Scale invariance (issue 7). POV-Ray's tolerances are absolute (1e-4 minimum hit depth, 1e-3 shadow tolerance,
 // 1e7 maximum distance, and the shapes' own epsilons), so a scene built at a very small or very large scale loses
 // shadows, surfaces or its horizon. povtrace renders such a scene as its twin at an ordinary scale: the whole
-// scene is scaled by a power of two (exact in floating point) that brings its size into the range where those
-// tolerances are harmless. Scenes already in that range — every ordinary scene — are left exactly as they are,
+// scene is scaled by a power of two (exact in floating point) that brings the size of its objects into the range
+// where those tolerances are harmless, when all of them lie outside it. The objects decide, not the scene's
+// extent: a sky sphere of radius 1e5 around ordinary objects leaves the scene as it is (POV-Ray renders it well;
+// shrinking the scene would shrink the objects down to the tolerances). Every ordinary scene is left as it is,
 // so they still match POV-Ray pixel for pixel; `--povray-tolerances` turns the rescaling off (and reproduces
 // POV-Ray's own renders of such scenes, tests/stress/povray_tolerances.cmake).
 #pragma once
@@ -14,13 +16,18 @@
 
 namespace povtrace::render {
 
-// The scene's size: the diagonal of the box around the camera location and every finite primitive (planes and
-// other unbounded shapes left out). Lights are left out too: they are often placed far away on purpose.
-double scene_size(const std::vector<Primitive>& primitives, Vec3 camera_location);
+// The sizes of the scene's objects: the smallest, the (lower) median and the largest diagonal of the finite
+// primitives' bounds (planes and other unbounded shapes left out; a mesh or a CSG node counts once); all 0 when
+// there is none.
+struct ObjectSizes {
+  double smallest = 0, median = 0, largest = 0;
+};
+ObjectSizes object_sizes(const std::vector<Primitive>& primitives);
 
-// The factor (a power of two) that brings `size` into the ordinary range, or 1 when it is already there (or is
-// zero or not finite).
-double normalizing_scale(double size);
+// The factor (a power of two) that brings the median object to about 2 units when every object is below 0.05 or
+// every one above 1e4; otherwise 1. A scene mixing scales (a sky sphere of radius 1e5 around ordinary objects, or
+// around tiny ones) is left as written, as POV-Ray renders it: no single factor would help all its objects.
+double normalizing_scale(const ObjectSizes& sizes);
 
 // The scene with every length multiplied by k: objects, lights, camera, fog, and the distances interiors and
 // lights carry (fade_distance, cylinder light radius and falloff).

@@ -13,18 +13,40 @@ using namespace povtrace::render;
 using namespace povtrace::render::test;
 
 TEST(SceneScale, OrdinarySizesAreLeftAlone) {
-  for (double size : {1.0, 7.9, 26.0, 1000.0, 16384.0}) EXPECT_EQ(normalizing_scale(size), 1.0) << size;
-  EXPECT_EQ(normalizing_scale(0.0), 1.0);   // a single point (only unbounded shapes): nothing to go by
-  EXPECT_EQ(normalizing_scale(INFINITY), 1.0);
+  for (double size : {0.05, 0.09, 1.0, 26.0, 1000.0, 1e4})
+    EXPECT_EQ(normalizing_scale(ObjectSizes{size, size, size}), 1.0) << size;
+  EXPECT_EQ(normalizing_scale(ObjectSizes{}), 1.0);   // only unbounded shapes: nothing to go by
+  EXPECT_EQ(normalizing_scale(ObjectSizes{0.001, 1, 1e6}), 1.0);   // mixed scales: as written
 }
 
-TEST(SceneScale, TinyAndHugeScenesGetAPowerOfTwoTowardsSixteen) {
-  for (double size : {1.5e-5, 0.3, 2e5, 1.5e7}) {
-    const double k = normalizing_scale(size);
+TEST(SceneScale, TinyAndHugeObjectsGetAPowerOfTwoTowardsTwo) {
+  for (double size : {1.5e-5, 0.02, 2e5, 1.5e7}) {
+    const double k = normalizing_scale(ObjectSizes{size / 3, size, size * 2});
     EXPECT_EQ(std::exp2(std::round(std::log2(k))), k) << size;   // exact in floating point
-    EXPECT_GE(size * k, 16.0 / std::sqrt(2.0)) << size;
-    EXPECT_LE(size * k, 16.0 * std::sqrt(2.0)) << size;
+    EXPECT_GE(size * k, 2.0 / std::sqrt(2.0)) << size;
+    EXPECT_LE(size * k, 2.0 * std::sqrt(2.0)) << size;
   }
+}
+
+// The objects decide, not the scene's extent: a sky sphere of radius 1e5 (textures/finishes/cluster.pov,
+// advanced/quilt1.pov) around ordinary objects leaves the scene as written, as POV-Ray renders it; shrinking it to
+// an ordinary extent would have shrunk the objects to POV-Ray's tolerances and lost their shadows. Tiny objects
+// alone are rescaled; around a sky sphere they are left as written too (as POV-Ray renders them).
+TEST(SceneScale, ASkySphereAroundOrdinaryObjectsIsNoReasonToRescale) {
+  SceneDescription s = base_scene();
+  s.objects.push_back(sphere_object({0, 0, 0}, 1e5, texture(rgb(1, 1, 1))));
+  s.objects.push_back(sphere_object({0, 1, 0}, 1, texture(rgb(1, 0, 0))));
+  s.objects.push_back(sphere_object({2, 1, 0}, 0.5, texture(rgb(0, 1, 0))));
+  EXPECT_EQ(build_render_scene(s, BuildOptions{}).scale, 1.0);
+  SceneDescription tiny = base_scene();
+  tiny.objects.push_back(sphere_object({0, 0, 0}, 1e5, texture(rgb(1, 1, 1))));
+  tiny.objects.push_back(sphere_object({0, 1e-4, 0}, 1e-4, texture(rgb(1, 0, 0))));
+  tiny.objects.push_back(sphere_object({2e-4, 1e-4, 0}, 5e-5, texture(rgb(0, 1, 0))));
+  EXPECT_EQ(build_render_scene(tiny, BuildOptions{}).scale, 1.0);
+  SceneDescription alone = base_scene();
+  alone.objects.push_back(sphere_object({0, 1e-4, 0}, 1e-4, texture(rgb(1, 0, 0))));
+  alone.objects.push_back(sphere_object({2e-4, 1e-4, 0}, 5e-5, texture(rgb(0, 1, 0))));
+  EXPECT_NE(build_render_scene(alone, BuildOptions{}).scale, 1.0);
 }
 
 TEST(SceneScale, EveryLengthIsScaled) {
