@@ -148,7 +148,6 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
       return twin;
     }
   }
-  r.povray_shadow_cache = options.povray_tolerances;
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
   r.any_ray_flags = any_ray_flags(scene.objects);
   for (const auto& p : primitives) {

@@ -184,9 +184,6 @@ struct RenderScene {
   // is traced as ray_kind::other and no object is skipped.
   bool any_ray_flags = false;
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
-  // --povray-tolerances as asked by the user (not a rescaled twin): shadow rays also use POV-Ray's shadow cache,
-  // whose artefacts show only where scene lengths come near the absolute tolerances (tracer.cpp shadow_filter).
-  bool povray_shadow_cache = false;
   std::vector<Fog> fogs;             // as POV-Ray lists them (the last written first)
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;   // for turbulent fog
   std::vector<InteriorRef> camera_interiors;   // the interiors that contain the camera location
@@ -199,7 +196,7 @@ struct BuildOptions {
   bool output_alpha = false;
   // POV-Ray's absolute tolerances at any scale, artefacts included: no rescaling of very small or very large
   // scenes (renderer/scene_scale.hpp), spheres kept in world units as POV-Ray keeps them
-  // (with_world_space_spheres), and POV-Ray's shadow cache (RenderScene::povray_shadow_cache).
+  // (with_world_space_spheres). POV-Ray's shadow cache is used always (tracer.cpp povray_shadow_walk).
   bool povray_tolerances = false;
 };
 

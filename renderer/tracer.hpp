@@ -97,8 +97,8 @@ class Tracer {
   // Shadow factor along the segment point → light `l`: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
   Rgb shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, const RayState& state);
-  // The same as POV-Ray walks it under --povray-tolerances, with its shadow cache (RenderScene::povray_shadow_cache).
-  Rgb povray_shadow_filter(const RenderLight& l, const Ray& ray, double distance, const RayState& state);
+  // POV-Ray's walk along the shadow ray, with its shadow cache.
+  Rgb povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state);
   std::uint32_t& shadow_cache_slot(const RenderLight& l);
   bool cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const;
   bool opaque_at(const SurfaceHit& hit) const;   // one material, and it lets no light through
@@ -121,8 +121,7 @@ class Tracer {
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
   std::vector<const RenderTexture*> warps_;       // the patterned textures above the one being shaded
   std::vector<Rgb> area_grid_;                    // area light samples of the point being shaded
-  // POV-Ray's shadow cache (trace.cpp TracePointLightShadowRay), used only with RenderScene::povray_shadow_cache:
-  // per light, the last object that alone blocked a shadow ray, kept apart for the shadow rays of camera-ray hits
+  // POV-Ray's shadow cache (trace.cpp TracePointLightShadowRay): per light, the last object that alone blocked a shadow ray, kept apart for the shadow rays of camera-ray hits
   // (slot 2·light) and of deeper hits (2·light + 1); ~0u when empty. POV-Ray tests it first, with only
   // MIN_ISECT_DEPTH as near limit instead of SHADOW_TOLERANCE, which is what shadows tiny scenes more.
   std::vector<std::uint32_t> shadow_cache_;
