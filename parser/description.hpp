@@ -495,6 +495,7 @@ struct GlobalSettings {
   int max_trace_level = 5;
   double adc_bailout = 1.0 / 255.0;
   std::optional<int> noise_generator;    // 1, 2 or 3; absent: 1 before #version 3.5, 2 from then on (as POV-Ray)
+  int number_of_waves = 10;              // the wave sources ripples and waves normals sum over
 };
 
 struct SceneDescription {

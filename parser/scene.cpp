@@ -115,7 +115,18 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       if (!c.is("ascii") && !c.is("utf8")) fail_expected(c, "ascii, utf8 or sys after 'charset'");
       string_encoding_ = c.is("utf8") ? ttf::StringEncoding::utf8 : ttf::StringEncoding::ascii;
     } else if (k == "number_of_waves") {
-      next();   // accepted: no effect on what povtrace renders so far
+      // POV-Ray truncates it and makes a value below 1 into 1 with a warning.
+      const Token value_at = peek();
+      const double n = std::trunc(parse_float());
+      if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
+      scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
+      if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+    } else if (k == "hf_gray_16") {
+      // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
+      // option there).
+      optional_float(1.0);
+      warn(t.loc, "In POV-Ray 3.7 and later 'hf_gray_16' has to be specified as an option on the command-line; "
+                  "the 'hf_gray_16' setting here is ignored (as in POV-Ray).");
     } else if (!k.empty() && is_reserved_word(k)) {
       fail_unsupported(t, "the global setting '" + std::string(k) + "'");
     } else {

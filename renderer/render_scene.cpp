@@ -159,8 +159,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
   r.accelerator = Accelerator(std::move(primitives));
-  constexpr int kNumberOfWaves = 10;   // POV-Ray's default number_of_waves
-  r.wave_sources = make_wave_sources(kNumberOfWaves);
+  r.wave_sources = make_wave_sources(scene.settings.number_of_waves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
   r.fogs = scene.fogs;
   r.noise_generator = static_cast<NoiseGenerator>(generator);

@@ -604,6 +604,20 @@ TEST(GlobalSettings, MaxTraceLevelIsClamped) {
   EXPECT_EQ(scene("global_settings { max_trace_level 1 }").settings.max_trace_level, 1);
 }
 
+// number_of_waves (truncated; below 1 becomes 1 with POV-Ray's warning) and hf_gray_16, which POV-Ray 3.7 ignores
+// with a warning (an optional float may follow it).
+TEST(GlobalSettings, NumberOfWavesAndTheIgnoredHfGray16) {
+  EXPECT_EQ(scene("").settings.number_of_waves, 10);
+  EXPECT_EQ(scene("global_settings { number_of_waves 3.9 }").settings.number_of_waves, 3);
+  Messages m;
+  EXPECT_EQ(parse("#version 3.7;\nglobal_settings { number_of_waves 0 hf_gray_16 on }\n", &m).settings.number_of_waves, 1);
+  EXPECT_NE(m.joined().find("number_of_waves must be greater than 0"), std::string::npos) << m.joined();
+  EXPECT_NE(m.joined().find("'hf_gray_16' setting here is ignored"), std::string::npos) << m.joined();
+  EXPECT_NE(std::string(parse_error("#version 3.7;\nglobal_settings { number_of_waves 1e9 }\n").what())
+                .find("number_of_waves above 65536"),
+            std::string::npos);
+}
+
 TEST(GlobalSettings, SeveralBlocksAccumulate) {
   const SceneDescription s =
       scene("global_settings { assumed_gamma 1 }\nglobal_settings { max_trace_level 7 }\n");
