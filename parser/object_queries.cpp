@@ -106,19 +106,19 @@ std::optional<std::string> unsupported_geometry(const Object& o) {
   return std::nullopt;
 }
 
-// The shapes whose inside test and bounding box the parser does not carry itself (the renderer has them): the
-// first one in the object's tree, or nothing.
-std::optional<std::string> shape_outside_parser(const Object& o) {
+// The shapes whose inside test (or, with `box`, whose bounding box) the parser does not carry itself (the renderer
+// has them): the first one in the object's tree, or nothing.
+std::optional<std::string> shape_outside_parser(const Object& o, bool box = false) {
   if (const auto* csg = std::get_if<Csg>(&o.shape))
     for (const auto& c : csg->children)
-      if (auto u = shape_outside_parser(c)) return u;
+      if (auto u = shape_outside_parser(c, box)) return u;
   for (const auto* list : {&o.clipped_by, &o.bounded_by})
     for (const auto& c : *list)
-      if (auto u = shape_outside_parser(c)) return u;
+      if (auto u = shape_outside_parser(c, box)) return u;
   if (std::holds_alternative<Cylinder>(o.shape)) return std::string("the shape 'cylinder'");
   if (std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
   if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
-  if (std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
+  if (!box && std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Poly>(o.shape)) return std::string("the shape 'poly'");
   if (std::holds_alternative<Quadric>(o.shape)) return std::string("the shape 'quadric'");
   if (std::holds_alternative<Superellipsoid>(o.shape)) return std::string("the shape 'superellipsoid'");
@@ -303,7 +303,11 @@ BBox bounding_box(const Object& o) {
     BBox operator()(const Cylinder&) const { throw std::logic_error("extent of a cylinder"); }
     BBox operator()(const Cone&) const { throw std::logic_error("extent of a cone"); }
     BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
-    BBox operator()(const Torus&) const { throw std::logic_error("extent of a torus"); }
+    // Torus::Compute_BBox: the box of radius R + r around the centre, r high, carried by the torus's transform.
+    BBox operator()(const Torus& t) const {
+      const double r1 = t.minor, r2 = t.major + t.minor;
+      return BBox::make({-r2, -r1, -r2}, {2.0 * r2, 2.0 * r1, 2.0 * r2}).transformed(o.world_from_object);
+    }
     BBox operator()(const Poly&) const { throw std::logic_error("extent of a poly"); }
     BBox operator()(const Quadric&) const { throw std::logic_error("extent of a quadric"); }
     BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
@@ -359,7 +363,7 @@ Numeric Interpreter::parse_object_query(const Token& name) {
     return Numeric::scalar(prepared_object(item).inside(p) ? 1.0 : 0.0);
   }
   expect(")", " closing " + n + "()");
-  if (foreign_shape) fail_unsupported(id, n + "() of " + *foreign_shape);
+  if (auto shape = shape_outside_parser(object, true)) fail_unsupported(id, n + "() of " + *shape);
   if (has_clip_or_bound(object)) fail_unsupported(id, n + "() of an object with clipped_by or bounded_by");
   if (const auto* csg = std::get_if<Csg>(&object.shape); csg && csg->kind != CsgKind::union_ &&
                                                           csg->kind != CsgKind::merge)

@@ -583,6 +583,17 @@ TEST(ObjectQueries, ExtentsAsPovRayComputesThem) {
             "u2 max 10000000000.000000000,10000000000.000000000,10000000000.000000000\n");
 }
 
+TEST(ObjectQueries, TorusExtentsAsPovRayComputesThem) {
+  // povray's output: Torus::Compute_BBox, the box of radius R + r and height r carried by the whole transform; in a
+  // union, the union of the children's boxes.
+  EXPECT_EQ(out("#declare T = torus { 2, 0.5 rotate <30, 20, 10> scale <1, 2, 0.5> translate <0.3, 0.1, -1> }\n"
+                "#declare U = union { torus { 1, 0.25 } sphere { <3,0,0>, 0.5 } }\n"
+                "#debug concat(vstr(3, min_extent(T), \",\", 0, 9), \" \", vstr(3, max_extent(T), \",\", 0, 9), \"\\n\")\n"
+                "#debug concat(vstr(3, min_extent(U), \",\", 0, 9), \" \", vstr(3, max_extent(U), \",\", 0, 9), \"\\n\")\n"),
+            "-2.968861341,-3.803291798,-2.562233925 3.568861246,4.003291607,0.562233686\n"
+            "-1.250000000,-0.500000000,-1.250000000 3.500000000,0.500000000,1.250000000\n");
+}
+
 TEST(ObjectQueries, InsideAsPovRayTestsIt) {
   // povray's output for the same scene: strict sphere, closed box, plane with its surface inside, inverses,
   // union, difference (the hole's surface is outside), intersection, merge.
