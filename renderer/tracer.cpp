@@ -16,6 +16,11 @@ namespace {
 Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 double max_channel(Rgb c) { return std::max({c.x, c.y, c.z}); }
 bool all_below(Rgb c, double e) { return c.x < e && c.y < e && c.z < e; }
+// A light colour POV-Ray treats as no light: every channel within EPSILON of 0. By magnitude, so that a negative
+// light (color -0.9, which takes light away) still counts, as in POV-Ray's ComputeOneDiffuseLight.
+bool near_zero(Rgb c) {
+  return std::fabs(c.x) < tolerance::epsilon && std::fabs(c.y) < tolerance::epsilon && std::fabs(c.z) < tolerance::epsilon;
+}
 
 // Smooth step used by spotlights' falloff zone (§3): 0 below a, 1 at or above b, 3s²−2s³ between.
 double smoothstep(double a, double b, double x) {
@@ -426,7 +431,7 @@ bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_li
     colour *= a;
   }
   if (l.fades) colour *= 2.0 / (1.0 + std::pow(distance / l.light.fade_distance, l.light.fade_power));
-  return !all_below(colour, tolerance::epsilon);
+  return !near_zero(colour);
 }
 
 namespace {
@@ -458,7 +463,7 @@ bool Tracer::cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Ve
   if (light.radius > 0 && off_axis > light.radius) a *= smoothstep(0.0, 1.0 - light.radius / light.falloff, d);
   colour = l.colour * a;
   if (l.fades) colour *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
-  return !all_below(colour, tolerance::epsilon);
+  return !near_zero(colour);
 }
 
 // A transparent object filters at every surface crossing, through all its layers (§3); a texture_list triangle by the
@@ -617,7 +622,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
-      if (all_below(lc, tolerance::epsilon)) continue;
+      if (near_zero(lc)) continue;
     }
     if (behind) {
       if (fin.diffuse_back > 0)
@@ -667,7 +672,7 @@ Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 p
     if (!light_at(l, point, lc, to_light, distance)) continue;
     if (!l.light.shadowless) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
-      if (all_below(lc, tolerance::epsilon)) continue;
+      if (near_zero(lc)) continue;
     }
     const double n_dot_l = dot(normal, to_light);
     if (n_dot_l > 0) out += mul(lc, pigment) * (fin.diffuse * n_dot_l);
