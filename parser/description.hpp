@@ -4,6 +4,7 @@
 // itself resolves at parse time (camera vectors, transforms already composed into matrices).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -337,6 +338,12 @@ struct Superellipsoid { double e = 1, n = 1; };
 struct HeightField {
   std::string file;
   SourceLoc file_loc;
+  // `function W, H { … }`: the samples POV-Ray's parser makes of a float function (row-major, z = 0 first), or the
+  // pigment of a pigment function, which the renderer samples (it evaluates patterns), instead of a file.
+  std::shared_ptr<const std::vector<std::uint16_t>> samples;
+  std::shared_ptr<const Pigment> pigment_function;
+  int noise_generator = 2;       // the scene's when the function was parsed (POV-Ray samples it then)
+  int samples_width = 0, samples_depth = 0;
   bool smooth = false;
   double water_level = 0;
 };

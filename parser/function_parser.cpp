@@ -202,6 +202,7 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     const Pigment p = in_.parse_pigment_block(first, Pigment{});
     // A plain colour can be evaluated without the renderer's patterns.
     if (p.pattern == PatternKind::solid && !p.unsupported) f->colour = p.colour;
+    f->pigment = std::make_shared<const Pigment>(p);
     f->return_size = 5;
   } else if (k == "pattern" || k == "spline") {
     no_parameters(k == "pattern" ? "pattern" : "spline");

@@ -87,6 +87,7 @@ struct FunctionValue {
 
   Matrix transform;                // Kind::transform
   std::optional<Colour> colour;    // Kind::pigment when the pigment is a plain colour
+  std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment (the renderer evaluates patterns)
 
   // What the function is called in an "unsupported" message.
   std::string description() const;

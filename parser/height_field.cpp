@@ -7,10 +7,13 @@
 //   another gamma would decode the values, which povtrace does not do (refused by name).
 // - `hierarchy [B]` only changes POV-Ray's internal bounding blocks, never the image: accepted and ignored.
 // The parser keeps the file's path (found in the working directory or a +L library path, else as written); the
-// renderer reads the image when it builds the scene. Only PNG images are read (other types are refused by name),
-// and `function W, H { … }` height fields are refused by name.
+// renderer reads the image when it builds the scene. Only PNG images are read (other types are refused by name).
+// `function W, H { … }` is sampled here, as POV-Ray's Make_Pattern_Image does while parsing.
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 
+#include "parser/function_value.hpp"
 #include "parser/image_files.hpp"
 #include "parser/interpreter.hpp"
 
@@ -28,12 +31,80 @@ std::string Interpreter::locate_image_file(const std::string& name) const {
   return name;
 }
 
+namespace {
+// Make_Pattern_Image stores each value in a 16-bit grey image as unsigned short(v · 65535) of the float v, without
+// clipping: C++ leaves an out-of-range conversion undefined, and POV-Ray's x86-64 build converts through a 32-bit
+// integer and keeps its low 16 bits, so values outside [0, 1] wrap (a NaN becomes 0). image_height_at then reads
+// the grey back as stored / 65535 and takes unsigned short(grey · 65535), both in float.
+std::uint16_t function_height(double value) {
+  const float v = static_cast<float>(value) * 65535.0f;
+  const std::int32_t wide = std::isfinite(v) && std::fabs(v) < 2147483520.0f ? static_cast<std::int32_t>(v) : 0;
+  const auto stored = static_cast<std::uint16_t>(static_cast<std::uint32_t>(wide) & 0xffffu);
+  return static_cast<std::uint16_t>(static_cast<float>(stored) / 65535.0f * 65535.0f);
+}
+}  // namespace
+
+// `function W, H { FLOAT_FUNCTION }` (Parse_Image with FUNCTION_TOKEN, Make_Pattern_Image): a W × H image whose
+// pixel (column j, row i from the top) is f(j / (W − 1), i / (H − 1), 0); W and H are rounded to integers. The
+// image's bottom row is the height field's z = 0, as for a file.
+void Interpreter::parse_height_field_function(const Token& keyword, HeightField& h, Object& o) {
+  const Token width_at = peek();
+  const double w = std::floor(parse_float() + 0.5);
+  accept(",");
+  const double d = std::floor(parse_float() + 0.5);
+  if (!(w >= 2 && d >= 2 && w <= 16384 && d <= 16384))
+    fail_at(width_at, "a height_field function needs a size of 2 to 16384 samples each way");
+  const Token open = peek();
+  if (!open.is("{")) fail_expected(open, "'{' after the size of the height_field function");
+  const auto fn = parse_function_definition(keyword);
+  const int width = static_cast<int>(w), depth = static_cast<int>(d);
+  h.file_loc = keyword.loc;
+  if (fn->kind == FunctionValue::Kind::pigment && fn->pigment) {
+    // A 16-bit RGBA image of the pigment's colours at the same points, made by the renderer (render_height_field).
+    if (fn->pigment->unsupported) taint(o.unsupported, fn->pigment->unsupported);
+    h.pigment_function = fn->pigment;
+    h.noise_generator = *noise_generator_cell_;
+    h.samples_width = width;
+    h.samples_depth = depth;
+    return;
+  }
+  if (fn->return_size != 0) {
+    taint(o.unsupported, UnsupportedFeature{"a height_field made from a vector function", keyword.loc});
+    return;
+  }
+  if (auto part = unevaluable_part(*fn)) {
+    taint(o.unsupported, UnsupportedFeature{"a height_field made from " + *part, keyword.loc});
+    return;
+  }
+  auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(width) * depth);
+  double args[3] = {0, 0, 0}, out[5];
+  if (options_.max_tokens && !function_budget_set_) {   // the fuzzer's bound on function work (call_function_from_sdl)
+    function_steps_left_ = options_.max_tokens * 16;
+    function_budget_set_ = true;
+  }
+  try {
+    for (int i = 0; i < depth; ++i) {
+      args[1] = static_cast<double>(i) / (d - 1);
+      for (int j = 0; j < width; ++j) {
+        args[0] = static_cast<double>(j) / (w - 1);
+        const double value = evaluate_function(*fn, args, out, options_.max_tokens ? &function_steps_left_ : nullptr);
+        (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] = function_height(value);
+      }
+    }
+  } catch (const FunctionError& e) {
+    fail_at(keyword, e.what());
+  }
+  h.samples = std::move(samples);
+  h.samples_width = width;
+  h.samples_depth = depth;
+}
+
 // The image part of a height field: the type keyword (optional), the name, gamma and premultiplied.
 void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h, Object& o) {
   Token t = next();
   std::string type;
-  if (t.is("function")) {   // function W, H { … }: skipped up to its block's end
-    taint(o.unsupported, skip_unsupported(t, "a height_field made from a function"));
+  if (t.is("function")) {
+    parse_height_field_function(t, h, o);
     return;
   }
   if (t.kind == TokenKind::identifier && is_image_type_word(t.text)) type = std::string(t.text);

@@ -423,6 +423,7 @@ class Interpreter {
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);
   void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
+  void parse_height_field_function(const Token& keyword, HeightField& h, Object& o);
   std::string locate_image_file(const std::string& name) const;
 
   // ---- text (text.cpp) ----

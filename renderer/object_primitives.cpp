@@ -1,14 +1,50 @@
 #include "renderer/object_primitives.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "renderer/csg_build.hpp"
+#include "renderer/pattern/render_pigment.hpp"
+#include "renderer/tracer.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 #include "renderer/shapes/quadric_shapes.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
 
 namespace povtrace::render {
+
+namespace {
+// A height field made from a pigment function (`function W, H { pigment { … } }`): POV-Ray's Make_Pattern_Image
+// stores the pigment's colour at (j / (W − 1), i / (H − 1), 0) in a 16-bit RGBA image (each channel as unsigned
+// short(c · 65535) of the float c, unclipped: out-of-range values wrap, as POV-Ray's x86-64 build converts through a
+// 32-bit integer), and image_height_at reads a 16-bit colour image as its grey 0.297 r + 0.589 g + 0.114 b of the
+// stored / 65535 values, · 65535, truncated. The image's bottom row is the height field's z = 0.
+float stored_channel(double c) {
+  const float v = static_cast<float>(c) * 65535.0f;
+  const std::int32_t wide = std::isfinite(v) && std::fabs(v) < 2147483520.0f ? static_cast<std::int32_t>(v) : 0;
+  return static_cast<float>(static_cast<std::uint32_t>(wide) & 0xffffu) / 65535.0f;
+}
+
+Shape with_pigment_samples(const Shape& shape) {
+  const auto* h = std::get_if<HeightField>(&shape);
+  if (!h || !h->pigment_function) return shape;
+  RenderPigment pigment = build_render_pigment(*h->pigment_function);
+  set_generator(pigment, static_cast<NoiseGenerator>(h->noise_generator));
+  const int w = h->samples_width, d = h->samples_depth;
+  auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(w) * d);
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < w; ++j) {
+      const Vec3 p{static_cast<double>(j) / (w - 1), static_cast<double>(i) / (d - 1), 0.0};
+      const Colour c = evaluate_pigment(pigment, p);
+      const double grey = 0.297 * stored_channel(c.r) + 0.589 * stored_channel(c.g) + 0.114 * stored_channel(c.b);
+      (*samples)[static_cast<std::size_t>(d - 1 - i) * w + j] = static_cast<std::uint16_t>(grey * 65535.0f);
+    }
+  HeightField sampled = *h;
+  sampled.samples = std::move(samples);
+  return sampled;
+}
+}  // namespace
 
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
                           std::vector<Primitive>& out) {
@@ -64,7 +100,7 @@ void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t
     p.type = ShapeType::mesh;
     shapes::set_up_mesh(p, *mesh);
   } else if (is_solid_shape(o.shape)) {
-    const Primitive shape = solid_primitive(o.shape, o.world_from_object);
+    const Primitive shape = solid_primitive(with_pigment_samples(o.shape), o.world_from_object);
     p.type = shape.type;
     p.a = shape.a;
     p.b = shape.b;

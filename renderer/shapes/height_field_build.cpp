@@ -115,6 +115,8 @@ std::vector<std::uint16_t> palette_heights(const HeightField& h, int& width, int
 }
 
 std::shared_ptr<HeightFieldData> read_height_field(const HeightField& h) {
+  if (h.samples)   // function W, H { … }, sampled by the parser
+    return height_field_data(*h.samples, h.samples_width, h.samples_depth, h.water_level, h.smooth);
   const PngKind kind = png_kind(h.file, h.file_loc);
   if (kind.colour_type == 3) {
     int width = 0, height = 0;

@@ -48,10 +48,35 @@ TEST(SolidShapes, HeightFieldsPovtraceDoesNotReadAreRefusedByName) {
   EXPECT_NE(e.bare_message().find("a height_field read from a tga image"), std::string::npos) << e.bare_message();
   e = parse_error("#version 3.7;\nheight_field { \"a.jpg\" }\n");
   EXPECT_NE(e.bare_message().find("read from a '.jpg' image"), std::string::npos) << e.bare_message();
-  e = parse_error("#version 3.7;\nheight_field { function 20, 20 { x * y } smooth }\n");
-  EXPECT_NE(e.bare_message().find("a height_field made from a function"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { function 20, 20 { pattern { bozo } } }\n");
+  EXPECT_NE(e.bare_message().find("height_field made from"), std::string::npos) << e.bare_message();
+  e = parse_error("#version 3.7;\nheight_field { function 1, 20 { x } }\n");
+  EXPECT_NE(e.bare_message().find("a size of 2 to 16384 samples"), std::string::npos) << e.bare_message();
   e = parse_error("#version 3.7;\nheight_field { png \"a.png\" gamma 2.2 }\n");
   EXPECT_NE(e.bare_message().find("decoded with a gamma"), std::string::npos) << e.bare_message();
+}
+
+// function W, H { F }: POV-Ray's Make_Pattern_Image samples F(j/(W-1), i/(H-1), 0) into a 16-bit grey image (row i
+// from the top, the height field's z = H-1-i), unclipped: 1.5 wraps to 1.5·65535 − 65536 = 32766 (in float).
+// A pigment function is kept for the renderer to sample.
+TEST(SolidShapes, HeightFieldFromAFunction) {
+  auto s = parse("#version 3.7;\nheight_field { function 3, 2.4 { x + y * 0.5 } smooth }\n");
+  auto h = std::get<HeightField>(only_object(s).shape);
+  ASSERT_TRUE(h.samples);
+  EXPECT_EQ(h.samples_width, 3);
+  EXPECT_EQ(h.samples_depth, 2);
+  EXPECT_TRUE(h.smooth);
+  const std::vector<std::uint16_t>& v = *h.samples;
+  EXPECT_EQ(v[0], 32767);   // z = 0 is the image's bottom row: y = 1, x = 0 → 0.5
+  EXPECT_EQ(v[2], 32766);   // x = 1, y = 1 → 1.5, wrapped
+  EXPECT_EQ(v[3], 0);       // z = 1: y = 0, x = 0
+  EXPECT_EQ(v[5], 65535);   // x = 1, y = 0
+  s = parse("#version 3.7;\nheight_field { function 8, 8 { pigment { agate } } }\n");
+  h = std::get<HeightField>(only_object(s).shape);
+  EXPECT_FALSE(h.samples);
+  ASSERT_TRUE(h.pigment_function);
+  EXPECT_EQ(h.pigment_function->pattern, PatternKind::agate);
+  EXPECT_EQ(h.noise_generator, 2);
 }
 
 TEST(SolidShapes, BlobComponents) {
