@@ -52,18 +52,13 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
   }
   std::vector<Primitive> bounds = primitives_for(o.bounded_by, false, add_leaf);
   const std::vector<Primitive> clips = primitives_for(o.clipped_by, false, add_leaf);
-  // The object's own box, before its clips: POV-Ray weighs the clips' box against it.
-  const Bounds own_box = clips.empty() ? Bounds{} : static_cast<const CsgData&>(*make_csg(operation, children).data).surface;
   Primitive p = make_csg(operation, std::move(children), clips, bounds);
   // Bounds removed when the object was placed still gave it their bounding box (csg_modifiers.cpp).
   for (Primitive& removed : primitives_for(o.removed_bounds, false, add_leaf)) bounds.push_back(std::move(removed));
   if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
   // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
   // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
-  if (!clips.empty()) {
-    const auto& d = static_cast<const CsgData&>(*p.data);
-    p = with_clipping_box_from(p, clips, d.bounding_box.finite() ? d.bounding_box : own_box);
-  }
+  if (!clips.empty()) p = with_clipping_box_from(p, clips);
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
   return p;

@@ -211,6 +211,7 @@ Primitive make_csg(CsgOperation operation, std::vector<Primitive> children, std:
     else extent.extend(solid_extent(child));
   }
   Bounds surface = operation == CsgOperation::intersection ? intersect(children_surface, extent) : children_surface;
+  d->unclipped_surface = surface;
   for (const Primitive& clip : d->clips) {
     surface = intersect(surface, solid_extent(clip));
     extent = intersect(extent, solid_extent(clip));
@@ -233,11 +234,18 @@ double volume(const Bounds& b) {
 // Parse_Object_Mods: the box of the bounding objects (inverted ones left out) replaces the object's box when its
 // volume is smaller; the node then lies in the BVH with that box and rays missing it miss the node. POV-Ray does
 // the same with the clipping objects next, on the box the bounds left.
-Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primitive>& bounding_objects) {
+// The box POV-Ray gives a set of bounding or clipping objects: the intersection of their boxes (each one's own,
+// unpadded), inverted ones left out.
+Bounds box_of_objects(const std::vector<Primitive>& objects) {
   Bounds box = everywhere();
-  for (const Primitive& b : bounding_objects)
+  for (const Primitive& b : objects)
     if (b.type == ShapeType::csg) box = intersect(box, csg_data(b).extent);
-    else if (!b.inverse) box = intersect(box, world_bounds(b));   // the bound's own box, unpadded
+    else if (!b.inverse) box = intersect(box, world_bounds(b));
+  return box;
+}
+
+Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primitive>& bounding_objects) {
+  const Bounds box = box_of_objects(bounding_objects);
   const CsgData& d = csg_data(node);
   if (!box.finite() || is_empty(box) || !(volume(box) < volume(d.surface))) return node;
   auto copy = std::make_shared<CsgData>(d);
@@ -249,13 +257,13 @@ Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primit
   return p;
 }
 
-Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips, const Bounds& own_box) {
-  Bounds box = everywhere();
-  for (const Primitive& c : clips)
-    if (c.type == ShapeType::csg) box = intersect(box, csg_data(c).extent);
-    else if (!c.inverse) box = intersect(box, world_bounds(c));
+Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips) {
+  const CsgData& d = csg_data(node);
+  // The object's box before its clips: the one bounded_by gave it, else its children's.
+  const Bounds& own_box = d.bounding_box.finite() ? d.bounding_box : d.unclipped_surface;
+  const Bounds box = box_of_objects(clips);
   if (!box.finite() || is_empty(box) || !(volume(box) < volume(own_box))) return node;
-  auto copy = std::make_shared<CsgData>(csg_data(node));
+  auto copy = std::make_shared<CsgData>(d);
   copy->bounding_box = box;
   Primitive p = node;
   p.data = std::move(copy);

@@ -27,6 +27,7 @@ struct CsgData final : ShapeData {
   // Derived by make_csg:
   std::vector<Bounds> child_cull;    // each child's padded surface bounds (empty Bounds = never culled)
   Bounds surface;                    // where surviving hits can be (world_bounds of the node)
+  Bounds unclipped_surface;          // the same before the clips (what POV-Ray weighs their box against)
   Bounds extent;                     // encloses the surface and the inside region (non-finite if unbounded)
 };
 
@@ -40,10 +41,10 @@ Primitive make_csg(CsgOperation operation, std::vector<Primitive> children, std:
 Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primitive>& bounding_objects);
 
 // `node` with the bounding box its clipping objects give it in POV-Ray (Parse_Object_Mods, after the bounding
-// objects): the intersection of the non-inverted clips' boxes, taken when its volume is smaller than `own_box`, the
-// object's box before the clips (its children's, or the one bounded_by gave it). Rays that miss that box see
-// nothing of the node; the surface bounds stay as they are, since a clip's inside can reach beyond its box.
-Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips, const Bounds& own_box);
+// objects): the intersection of the non-inverted clips' boxes, taken when its volume is smaller than the object's
+// box before the clips (its children's, or the one bounded_by gave it). Rays that miss that box see nothing of the
+// node; the surface bounds stay as they are, since a clip's inside can reach beyond its box.
+Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips);
 
 // `p` with inside and outside swapped. A leaf toggles its `inverse` flag; a CSG node follows De Morgan as POV-Ray
 // does (children inverted; union and merge become intersection, intersection becomes merge; clips and bounds stay).
