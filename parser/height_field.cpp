@@ -31,22 +31,11 @@ std::string Interpreter::locate_image_file(const std::string& name) const {
   return name;
 }
 
-namespace {
-// Make_Pattern_Image stores each value in a 16-bit grey image as unsigned short(v · 65535) of the float v, without
-// clipping: C++ leaves an out-of-range conversion undefined, and POV-Ray's x86-64 build converts through a 32-bit
-// integer and keeps its low 16 bits, so values outside [0, 1] wrap (a NaN becomes 0). image_height_at then reads
-// the grey back as stored / 65535 and takes unsigned short(grey · 65535), both in float.
-std::uint16_t function_height(double value) {
-  const float v = static_cast<float>(value) * 65535.0f;
-  const std::int32_t wide = std::isfinite(v) && std::fabs(v) < 2147483520.0f ? static_cast<std::int32_t>(v) : 0;
-  const auto stored = static_cast<std::uint16_t>(static_cast<std::uint32_t>(wide) & 0xffffu);
-  return static_cast<std::uint16_t>(static_cast<float>(stored) / 65535.0f * 65535.0f);
-}
-}  // namespace
 
 // `function W, H { FLOAT_FUNCTION }` (Parse_Image with FUNCTION_TOKEN, Make_Pattern_Image): a W × H image whose
 // pixel (column j, row i from the top) is f(j / (W − 1), i / (H − 1), 0); W and H are rounded to integers. The
-// image's bottom row is the height field's z = 0, as for a file.
+// image's bottom row is the height field's z = 0, as for a file. image_height_at reads the grey back as
+// unsigned short(grey · 65535), in float.
 void Interpreter::parse_height_field_function(const Token& keyword, HeightField& h, Object& o) {
   const Token width_at = peek();
   const double w = std::floor(parse_float() + 0.5);
@@ -88,7 +77,8 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
       for (int j = 0; j < width; ++j) {
         args[0] = static_cast<double>(j) / (w - 1);
         const double value = evaluate_function(*fn, args, out, options_.max_tokens ? &function_steps_left_ : nullptr);
-        (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] = function_height(value);
+        (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] =
+            static_cast<std::uint16_t>(function_image_value(value) * 65535.0f);
       }
     }
   } catch (const FunctionError& e) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "parser/image_files.hpp"
 #include "renderer/csg_build.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"
@@ -16,15 +17,9 @@ namespace povtrace::render {
 
 namespace {
 // A height field made from a pigment function (`function W, H { pigment { … } }`): POV-Ray's Make_Pattern_Image
-// stores the pigment's colour at (j / (W − 1), i / (H − 1), 0) in a 16-bit RGBA image (each channel as unsigned
-// short(c · 65535) of the float c, unclipped: out-of-range values wrap, as POV-Ray's x86-64 build converts through a
-// 32-bit integer), and image_height_at reads a 16-bit colour image as its grey 0.297 r + 0.589 g + 0.114 b of the
-// stored / 65535 values, · 65535, truncated. The image's bottom row is the height field's z = 0.
-float stored_channel(double c) {
-  const float v = static_cast<float>(c) * 65535.0f;
-  const std::int32_t wide = std::isfinite(v) && std::fabs(v) < 2147483520.0f ? static_cast<std::int32_t>(v) : 0;
-  return static_cast<float>(static_cast<std::uint32_t>(wide) & 0xffffu) / 65535.0f;
-}
+// stores the pigment's colour at (j / (W − 1), i / (H − 1), 0) in a 16-bit RGBA image (each channel as
+// sdl::function_image_value keeps it), and image_height_at reads a 16-bit colour image as its grey
+// 0.297 r + 0.589 g + 0.114 b, · 65535, truncated. The image's bottom row is the height field's z = 0.
 
 Shape with_pigment_samples(const Shape& shape) {
   const auto* h = std::get_if<HeightField>(&shape);
@@ -37,7 +32,8 @@ Shape with_pigment_samples(const Shape& shape) {
     for (int j = 0; j < w; ++j) {
       const Vec3 p{static_cast<double>(j) / (w - 1), static_cast<double>(i) / (d - 1), 0.0};
       const Colour c = evaluate_pigment(pigment, p);
-      const double grey = 0.297 * stored_channel(c.r) + 0.589 * stored_channel(c.g) + 0.114 * stored_channel(c.b);
+      const double grey = 0.297 * sdl::function_image_value(c.r) + 0.589 * sdl::function_image_value(c.g) +
+                          0.114 * sdl::function_image_value(c.b);
       (*samples)[static_cast<std::size_t>(d - 1 - i) * w + j] = static_cast<std::uint16_t>(grey * 65535.0f);
     }
   HeightField sampled = *h;
