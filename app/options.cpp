@@ -402,6 +402,7 @@ constexpr LongOption kLongOptions[] = {
     {"vs-povray", Arg::none, [](RenderOptions& o, string_view, string_view) { o.vs_povray = true; }},
     {"lighting", Arg::required, set_lighting},
     {"povray-tolerances", Arg::none, [](RenderOptions& o, string_view, string_view) { o.povray_tolerances = true; }},
+    {"no-specialise", Arg::none, [](RenderOptions& o, string_view, string_view) { o.specialise = false; }},
     {"help", Arg::none, [](RenderOptions& o, string_view, string_view) { o.help = true; }},
     {"verbose", Arg::none, [](RenderOptions& o, string_view, string_view) { o.verbose = true; }},
 };
@@ -698,6 +699,8 @@ std::string usage_text() {
          "  --lighting=povray|textbook   lighting model; default povray\n"
          "  --povray-tolerances  POV-Ray's absolute tolerances at any scale (no rescaling of very small or very\n"
          "                      large scenes), artefacts included\n"
+         "  --no-specialise     the general paths only: none of the paths chosen for what the scene holds\n"
+         "                      (same image, for measuring what they gain)\n"
          "  --help, -h          print this text\n";
   return out.str();
 }

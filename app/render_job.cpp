@@ -105,7 +105,7 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 
   const auto build_start = Clock::now();
   const render::RenderScene scene =
-      render::build_render_scene(description, {options.output_alpha, options.povray_tolerances});
+      render::build_render_scene(description, {options.output_alpha, options.povray_tolerances, options.specialise});
   r.times.build_s = seconds_since(build_start);
   if (scene.scale != 1.0 && options.verbose)
     std::cerr << "povtrace: the scene is rendered rescaled by " << scene.scale

@@ -204,6 +204,10 @@ class Accelerator {
   // Nearest hit with t in (t_min, t_max): t_min = MIN_ISECT_DEPTH for ordinary rays.
   Hit closest_hit(const Ray& ray, double t_min, double t_max) const;
 
+  // Nearest hit with t in (t_min, t_max) among the shadow-casting primitives: the first crossing of the shadow
+  // walk (for_each_shadow_hit's hits, sorted), found without collecting the others.
+  Hit closest_shadow_hit(const Ray& ray, double t_min, double t_max) const;
+
   // Calls visit(primitive_index, surface_hit) for every intersection with t in (t_min, t_max) of a shadow-casting
   // primitive, in no particular order; visit returns false to stop early. Used by shadow rays (opaque objects
   // stop at the first hit; transparent ones are filtered at every crossing).
@@ -234,6 +238,8 @@ class Accelerator {
   // Build and traversal live in renderer/accel/bvh.cpp. for_each_shadow_hit forwards to this non-template walk
   // through a plain function pointer plus context (no allocation, one indirect call per reported root).
   std::vector<std::uint32_t> containing_indices(Vec3 point) const;
+  template <bool shadow_casters_only>
+  Hit nearest(const Ray& ray, double t_min, double t_max) const;
   using ShadowVisitFn = bool (*)(void* context, std::uint32_t primitive, const SurfaceHit& hit);
   void shadow_traverse(const Ray& ray, double t_min, double t_max, ShadowVisitFn visit, void* context) const;
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, int depth, const std::vector<Bounds>& bounds,

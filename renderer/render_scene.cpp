@@ -124,6 +124,13 @@ std::vector<InteriorRef> RenderScene::containing_interiors(Vec3 point) const {
 
 namespace {
 RenderScene build_scene(const SceneDescription& scene, const BuildOptions& options, bool may_rescale);
+
+// The specialised paths this scene allows (render_scene.hpp Specialisation).
+Specialisation choose_specialisation(const RenderScene& r) {
+  Specialisation s;
+  s.nearest_shadow_first = r.any_casts_shadow;
+  return s;
+}
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
@@ -195,6 +202,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   } else {
     r.gamma_mode = GammaMode::legacy_srgb;
   }
+  if (options.specialise) r.specialisation = choose_specialisation(r);
   return r;
 }
 }  // namespace

@@ -160,8 +160,19 @@ struct RenderCamera {
 // How working-space values become linear light for output (pipeline §6).
 enum class GammaMode { power, legacy_srgb };
 
+// Specialised paths chosen for this scene by what it holds (render_scene.cpp choose_specialisation). Each one
+// gives the image the general path gives, bit for bit (tests/renderer/specialisation_test.cpp renders every scene
+// of scenes/ both ways); BuildOptions::specialise = false keeps the general paths.
+struct Specialisation {
+  // Shadow rays ask the BVH for their nearest crossing first and walk every crossing only when that one lets
+  // light through: POV-Ray's walk stops at its first crossing when that is opaque, so the crossings behind it
+  // never matter then.
+  bool nearest_shadow_first = false;
+};
+
 struct RenderScene {
-  double scale = 1.0;   // the factor the scene was rescaled by for scale invariance (scene_scale.hpp), 1 if not
+  double scale = 1.0;
+  Specialisation specialisation;   // the factor the scene was rescaled by for scale invariance (scene_scale.hpp), 1 if not
   Accelerator accelerator;
   std::vector<Material> materials;
   std::vector<RenderLight> lights;
@@ -198,6 +209,9 @@ struct BuildOptions {
   // scenes (renderer/scene_scale.hpp), spheres kept in world units as POV-Ray keeps them
   // (with_world_space_spheres). POV-Ray's shadow cache is used always (tracer.cpp povray_shadow_walk).
   bool povray_tolerances = false;
+  // Use the specialised paths the scene allows (Specialisation); false: the general paths everywhere, for tests
+  // that prove the specialised ones change nothing.
+  bool specialise = true;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

@@ -558,6 +558,16 @@ bool Tracer::cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, dou
 Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state) {
   std::uint32_t& cached = shadow_cache_slot(l);
   if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, distance)) return {0, 0, 0};
+  if (scene_.specialisation.nearest_shadow_first) {
+    // The walk below starts at the nearest crossing and ends there when it is opaque (ties between primitives go
+    // to the lower index in both).
+    const Hit first = scene_.accelerator.closest_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow);
+    if (!first.found()) return {1, 1, 1};
+    if (opaque_at(first.surface)) {
+      cached = first.primitive;
+      return {0, 0, 0};
+    }
+  }
   struct Crossing {
     SurfaceHit hit;
     std::uint32_t primitive;
@@ -566,7 +576,9 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
   crossings.clear();
   scene_.accelerator.for_each_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow,
                                          [&](std::uint32_t i, const SurfaceHit& hit) { crossings.push_back({hit, i}); });
-  std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.hit.t < b.hit.t; });
+  std::stable_sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) {
+    return a.hit.t < b.hit.t || (a.hit.t == b.hit.t && a.primitive < b.primitive);
+  });
   Rgb f{1, 1, 1};
   InteriorList in;
   if (scene_.any_shadow_fade) in = state.interiors;

@@ -80,9 +80,11 @@ struct Nearest {
 };
 
 // Considers the nearest root of primitive i above t_min; keeps it if nearer than the current best (ties: lower
-// index wins).
+// index wins). Shadow rays see only shadow-casting primitives.
+template <bool shadow_casters_only = false>
 inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double t_min, Nearest& best) {
   if (p.hidden_from & ray.kind) return;   // no_image / no_reflection (always 0 for scenes without them)
+  if (shadow_casters_only && !p.casts_shadow) return;
   // A hit at exactly the best depth may still win the tie, so the search interval ends just above it.
   const double t_max = best.primitive != ~0u && i < best.primitive ? std::nextafter(best.t, tolerance::bound_huge)
                                                                    : best.t;
@@ -229,8 +231,17 @@ std::uint32_t Accelerator::build_node(std::uint32_t begin, std::uint32_t end, in
 }
 
 Hit Accelerator::closest_hit(const Ray& ray, double t_min, double t_max) const {
+  return nearest<false>(ray, t_min, t_max);
+}
+
+Hit Accelerator::closest_shadow_hit(const Ray& ray, double t_min, double t_max) const {
+  return nearest<true>(ray, t_min, t_max);
+}
+
+template <bool shadow_casters_only>
+Hit Accelerator::nearest(const Ray& ray, double t_min, double t_max) const {
   Nearest best{t_max, ~0u, {}};
-  for (const std::uint32_t i : unbounded_) consider(primitives_[i], i, ray, t_min, best);
+  for (const std::uint32_t i : unbounded_) consider<shadow_casters_only>(primitives_[i], i, ray, t_min, best);
   const SlabRay slab(ray);
   double t_root = 0;
   if (nodes_.empty() || !slab_hit(nodes_[0].bounds, slab, t_min, best.t, t_root)) return to_hit(best);
@@ -245,7 +256,7 @@ Hit Accelerator::closest_hit(const Ray& ray, double t_min, double t_max) const {
     if (n.count > 0) {
       for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
         const std::uint32_t i = order_[k];
-        consider(primitives_[i], i, ray, t_min, best);
+        consider<shadow_casters_only>(primitives_[i], i, ray, t_min, best);
       }
     } else {
       // Near child first: with a negative direction on the split axis the right child is nearer.

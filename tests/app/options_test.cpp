@@ -49,7 +49,8 @@ std::string dump(const RenderOptions& o) {
   for (const auto& [name, value] : o.declares) s << " " << name << "=" << value;
   s << "\ndisplay " << o.display << " verbose " << o.verbose << " pause " << o.pause << "\nstats "
     << (o.stats_json ? o.stats_json->string() : "none") << "\nvs_povray " << o.vs_povray << " lighting "
-    << (o.lighting == LightingModel::povray ? "povray" : "textbook") << "\nhelp " << o.help << "\n";
+    << (o.lighting == LightingModel::povray ? "povray" : "textbook") << "\npovray_tolerances " << o.povray_tolerances
+    << " specialise " << o.specialise << "\nhelp " << o.help << "\n";
   return s.str();
 }
 
@@ -232,6 +233,8 @@ INSTANTIATE_TEST_SUITE_P(Misc, ParsesTo, ::testing::Values(
     ParseCase{{"--stats", "t.json"}, [](RenderOptions& o) { o.stats_json = "t.json"; }},
     ParseCase{{"--vs-povray"}, [](RenderOptions& o) { o.vs_povray = true; }},
     ParseCase{{"--lighting=textbook"}, [](RenderOptions& o) { o.lighting = LightingModel::textbook; }},
+    ParseCase{{"--no-specialise"}, [](RenderOptions& o) { o.specialise = false; }},
+    ParseCase{{"--povray-tolerances"}, [](RenderOptions& o) { o.povray_tolerances = true; }},
     ParseCase{{"--lighting", "textbook", "--lighting=povray"}, [](RenderOptions&) {}},
     ParseCase{{"--help"}, [](RenderOptions& o) { o.help = true; }},
     ParseCase{{"-h"}, [](RenderOptions& o) { o.help = true; }},
