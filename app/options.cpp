@@ -366,6 +366,19 @@ void apply_pov_switch(string_view written, RenderOptions& o) {
 
 enum class Arg { none, required, optional };
 
+// --no-specialise: every specialised path off; --no-specialise=a,b: those named.
+void turn_off_specialisations(RenderOptions& o, string_view v, string_view c) {
+  if (v.empty()) v = "all";
+  while (!v.empty()) {
+    const std::size_t comma = v.find(',');
+    const string_view name = v.substr(0, comma);
+    if (!o.specialise.turn_off(name))
+      fail(c, "unknown specialisation " + in_quotes(name) + "; expected all or some of " +
+                  render::SpecialisationChoice::names());
+    v = comma == string_view::npos ? string_view{} : v.substr(comma + 1);
+  }
+}
+
 void long_antialias(RenderOptions& o, string_view v, string_view c) {
   if (!v.empty()) set_threshold(o, v, c);
   o.antialias = true;
@@ -402,7 +415,7 @@ constexpr LongOption kLongOptions[] = {
     {"vs-povray", Arg::none, [](RenderOptions& o, string_view, string_view) { o.vs_povray = true; }},
     {"lighting", Arg::required, set_lighting},
     {"povray-tolerances", Arg::none, [](RenderOptions& o, string_view, string_view) { o.povray_tolerances = true; }},
-    {"no-specialise", Arg::none, [](RenderOptions& o, string_view, string_view) { o.specialise = false; }},
+    {"no-specialise", Arg::optional, turn_off_specialisations},
     {"help", Arg::none, [](RenderOptions& o, string_view, string_view) { o.help = true; }},
     {"verbose", Arg::none, [](RenderOptions& o, string_view, string_view) { o.verbose = true; }},
 };
@@ -699,8 +712,9 @@ std::string usage_text() {
          "  --lighting=povray|textbook   lighting model; default povray\n"
          "  --povray-tolerances  POV-Ray's absolute tolerances at any scale (no rescaling of very small or very\n"
          "                      large scenes), artefacts included\n"
-         "  --no-specialise     the general paths only: none of the paths chosen for what the scene holds\n"
-         "                      (same image, for measuring what they gain)\n"
+         "  --no-specialise[=NAME,...]  the general paths instead of those chosen for what the scene holds\n"
+         "                      (same image, slower; for measuring what each gains); NAME: all (default),\n"
+         "                      nearest-shadow-first, no-shadow-rays\n"
          "  --help, -h          print this text\n";
   return out.str();
 }

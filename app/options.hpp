@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/image/image.hpp"
+#include "renderer/render_scene.hpp"
 
 namespace povtrace::app {
 
@@ -34,7 +35,8 @@ struct RenderOptions {
   double antialias_gamma = 2.5;                 // +AG / Antialias_Gamma
   bool output_alpha = false;                    // +UA / Output_Alpha
   bool povray_tolerances = false;               // --povray-tolerances: no rescaling of tiny or huge scenes
-  bool specialise = true;                       // --no-specialise: the general paths only (same image, slower)
+  // --no-specialise[=NAME,…]: the general paths instead of the specialised ones (same image, slower)
+  render::SpecialisationChoice specialise;
   std::vector<std::filesystem::path> library_paths;  // +L / Library_Path, in order
   std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
   int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)

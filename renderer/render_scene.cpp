@@ -125,10 +125,11 @@ std::vector<InteriorRef> RenderScene::containing_interiors(Vec3 point) const {
 namespace {
 RenderScene build_scene(const SceneDescription& scene, const BuildOptions& options, bool may_rescale);
 
-// The specialised paths this scene allows (render_scene.hpp Specialisation).
-Specialisation choose_specialisation(const RenderScene& r) {
+// The specialised paths this scene allows (render_scene.hpp Specialisation), among those the build may use.
+Specialisation choose_specialisation(const RenderScene& r, const SpecialisationChoice& c) {
   Specialisation s;
-  s.nearest_shadow_first = r.any_casts_shadow;
+  s.nearest_shadow_first = c.nearest_shadow_first && r.any_casts_shadow;
+  s.no_shadow_rays = c.no_shadow_rays && !r.any_casts_shadow;
   return s;
 }
 }  // namespace
@@ -165,6 +166,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   }
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
+  r.specialisation = choose_specialisation(r, options.specialise);
   r.accelerator = Accelerator(std::move(primitives));
   r.wave_sources = make_wave_sources(scene.settings.number_of_waves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
@@ -202,9 +204,23 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   } else {
     r.gamma_mode = GammaMode::legacy_srgb;
   }
-  if (options.specialise) r.specialisation = choose_specialisation(r);
   return r;
 }
 }  // namespace
+
+bool SpecialisationChoice::turn_off(std::string_view name) {
+  if (name == "all") {
+    *this = SpecialisationChoice{false, false};
+    return true;
+  }
+  if (name == "nearest-shadow-first") nearest_shadow_first = false;
+  else if (name == "no-shadow-rays") no_shadow_rays = false;
+  else return false;
+  return true;
+}
+
+std::string SpecialisationChoice::names() {
+  return "nearest-shadow-first, no-shadow-rays";
+}
 
 }  // namespace povtrace::render

@@ -3,6 +3,9 @@
 // layers top-first, light directions, the camera's vectors, the working-gamma decode of the output.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -161,13 +164,24 @@ struct RenderCamera {
 enum class GammaMode { power, legacy_srgb };
 
 // Specialised paths chosen for this scene by what it holds (render_scene.cpp choose_specialisation). Each one
-// gives the image the general path gives, bit for bit (tests/renderer/specialisation_test.cpp renders every scene
-// of scenes/ both ways); BuildOptions::specialise = false keeps the general paths.
+// gives the image the general path gives, bit for bit (tests/regression/same_image.cmake renders every reference
+// scene both ways); BuildOptions::specialise turns each off, for those tests and for bench/specialisation_gain.py.
 struct Specialisation {
   // Shadow rays ask the BVH for their nearest crossing first and walk every crossing only when that one lets
   // light through: POV-Ray's walk stops at its first crossing when that is opaque, so the crossings behind it
   // never matter then.
   bool nearest_shadow_first = false;
+  // Nothing casts a shadow (every object no_shadow): no shadow ray is traced; the walk would find nothing.
+  bool no_shadow_rays = false;
+};
+
+// Which specialisations a build may use (all by default); names as --no-specialise takes them.
+struct SpecialisationChoice {
+  bool nearest_shadow_first = true;
+  bool no_shadow_rays = true;
+  // Turns off the one named (false for an unknown name). "all" turns off every one.
+  bool turn_off(std::string_view name);
+  static std::string names();   // the names, comma-separated, for the usage text and errors
 };
 
 struct RenderScene {
@@ -209,9 +223,9 @@ struct BuildOptions {
   // scenes (renderer/scene_scale.hpp), spheres kept in world units as POV-Ray keeps them
   // (with_world_space_spheres). POV-Ray's shadow cache is used always (tracer.cpp povray_shadow_walk).
   bool povray_tolerances = false;
-  // Use the specialised paths the scene allows (Specialisation); false: the general paths everywhere, for tests
-  // that prove the specialised ones change nothing.
-  bool specialise = true;
+  // The specialised paths the scene may use (Specialisation); those turned off take the general path, for tests
+  // that prove the specialised ones change nothing and for measuring what each gains.
+  SpecialisationChoice specialise;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

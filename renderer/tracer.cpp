@@ -519,7 +519,7 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at)
 // with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE), except for the object in the shadow cache.
 Rgb Tracer::shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance,
                           const RayState& state) {
-  if (!scene_.any_casts_shadow) return {1, 1, 1};
+  if (scene_.specialisation.no_shadow_rays) return {1, 1, 1};
   ++counts_.shadow;
   return povray_shadow_walk(l, Ray{point, to_light}, distance, state);
 }
@@ -617,6 +617,8 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   const double att = scene_.language_version >= 370 ? 1.0 - s.f - s.t
                                                      : 1.0 - (s.f * std::max({s.r, s.g, s.b}) + s.t);
   Rgb out = mul(pigment * att, mul(rgb_of(fin.ambient), rgb_of(scene_.settings.ambient_light)) + rgb_of(fin.emission));
+  // POV-Ray's light loop runs only for a finish with diffuse, diffuse_back, phong or specular (trace.cpp
+  // ComputeDiffuseLight); skipping it is its behaviour, not a shortcut: its shadow rays would move the shadow cache.
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
 
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {

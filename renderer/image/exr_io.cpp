@@ -5,9 +5,12 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfThreading.h>
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <thread>
 #include <exception>
 #include <string>
 #include <vector>
@@ -45,7 +48,13 @@ void write_as(const Image& image, const fs::path& file, Imf::PixelType type) {
     frame.insert(channel_names[c], rgba_slice(type, &values[static_cast<std::size_t>(c)], image.width,
                                               header.dataWindow(), 0.0));
   }
-  Imf::OutputFile out(file.c_str(), header);
+  // Blocks of scanlines are compressed in parallel, on every core (the render's threads are idle by now).
+  static const bool threads_set = [] {
+    Imf::setGlobalThreadCount(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+    return true;
+  }();
+  (void)threads_set;
+  Imf::OutputFile out(file.c_str(), header, Imf::globalThreadCount());
   out.setFrameBuffer(frame);
   out.writePixels(image.height);
 }

@@ -50,7 +50,8 @@ std::string dump(const RenderOptions& o) {
   s << "\ndisplay " << o.display << " verbose " << o.verbose << " pause " << o.pause << "\nstats "
     << (o.stats_json ? o.stats_json->string() : "none") << "\nvs_povray " << o.vs_povray << " lighting "
     << (o.lighting == LightingModel::povray ? "povray" : "textbook") << "\npovray_tolerances " << o.povray_tolerances
-    << " specialise " << o.specialise << "\nhelp " << o.help << "\n";
+    << " specialise " << o.specialise.nearest_shadow_first << o.specialise.no_shadow_rays
+    << "\nhelp " << o.help << "\n";
   return s.str();
 }
 
@@ -233,7 +234,10 @@ INSTANTIATE_TEST_SUITE_P(Misc, ParsesTo, ::testing::Values(
     ParseCase{{"--stats", "t.json"}, [](RenderOptions& o) { o.stats_json = "t.json"; }},
     ParseCase{{"--vs-povray"}, [](RenderOptions& o) { o.vs_povray = true; }},
     ParseCase{{"--lighting=textbook"}, [](RenderOptions& o) { o.lighting = LightingModel::textbook; }},
-    ParseCase{{"--no-specialise"}, [](RenderOptions& o) { o.specialise = false; }},
+    ParseCase{{"--no-specialise"}, [](RenderOptions& o) { o.specialise = render::SpecialisationChoice{false, false}; }},
+    ParseCase{{"--no-specialise=no-shadow-rays,nearest-shadow-first"},
+              [](RenderOptions& o) { o.specialise.nearest_shadow_first = o.specialise.no_shadow_rays = false; }},
+    ParseCase{{"--no-specialise=no-shadow-rays"}, [](RenderOptions& o) { o.specialise.no_shadow_rays = false; }},
     ParseCase{{"--povray-tolerances"}, [](RenderOptions& o) { o.povray_tolerances = true; }},
     ParseCase{{"--lighting", "textbook", "--lighting=povray"}, [](RenderOptions&) {}},
     ParseCase{{"--help"}, [](RenderOptions& o) { o.help = true; }},
@@ -345,6 +349,8 @@ INSTANTIATE_TEST_SUITE_P(Values, Rejects, ::testing::Values(
     ErrorCase{{"--format=tga"}, {"--format=tga:", "'tga'"}},
     ErrorCase{{"--format=PNG24"}, {"--format=PNG24:"}},
     ErrorCase{{"--lighting=pbr"}, {"--lighting=pbr:", "'pbr'"}},
+    ErrorCase{{"--no-specialise=no-shadow-rays,bogus"},
+              {"--no-specialise=no-shadow-rays,bogus:", "'bogus'", "nearest-shadow-first"}},
     ErrorCase{{"Declare=N=abc"}, {"Declare=N=abc:", "'abc'"}},
     ErrorCase{{"Declare=N="}, {"Declare=N=:", "number"}},
     ErrorCase{{"Declare=9N=1"}, {"Declare=9N=1:", "'9N'", "identifier"}},

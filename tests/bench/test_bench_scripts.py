@@ -15,6 +15,7 @@ import bench_scenes  # noqa: E402
 import bench_tools  # noqa: E402
 import pareto  # noqa: E402
 import run_bench  # noqa: E402
+import specialisation_gain  # noqa: E402
 
 ANCHOR = "/work/shared/perf-anchor/gen_scenes.py"
 
@@ -32,6 +33,14 @@ class SceneTests(unittest.TestCase):
         for p, s in zip(pov_spheres, scn_spheres):
             x, y, z, r, tex = s.split()
             self.assertEqual(p, f"sphere {{ <{x}, {y}, {z}>, {r} texture {{ {tex} }} }}")
+
+    def test_no_shadow_grid_marks_every_object(self):
+        text = specialisation_gain.no_shadow_text(bench_scenes.grid_scene_text(100))
+        objects = [line for line in text.splitlines() if line.startswith(("sphere", "plane"))]
+        self.assertEqual(len(objects), 101)
+        for line in objects:
+            self.assertTrue(line.endswith(" no_shadow }"), line)
+        self.assertEqual(text.count("light_source"), 2)
 
     def test_grid_of_100000_is_not_a_square(self):
         side, spheres = bench_scenes.grid_spheres(100000)

@@ -13,6 +13,12 @@ using namespace povtrace;
 using namespace povtrace::render;
 using namespace povtrace::render::test;
 
+BuildOptions with_alpha(bool alpha) {
+  BuildOptions o;
+  o.output_alpha = alpha;
+  return o;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 Object glass_box(double z, const Colour& pigment, double ior) {
@@ -186,7 +192,7 @@ TEST(Transmission, TransmitTravelsBackThroughTheSurface) {
   SceneDescription s = base_scene();
   s.background = Colour{0, 0, 0, 0, 1};
   s.objects.push_back(facing_plane(rgbft(1, 0.5, 0.25, 0, 0.6), finish_ambient_diffuse(1, 0)));
-  const RenderScene alpha = build_render_scene(s, BuildOptions{true});
+  const RenderScene alpha = build_render_scene(s, with_alpha(true));
   Radiance r = trace_at(alpha, {0, 0, -10}, {0, 0, 1});
   EXPECT_RGB_REL(r.colour, 0.4, 0.2, 0.1);
   EXPECT_REL(r.transmit, 0.6);
@@ -196,7 +202,7 @@ TEST(Transmission, TransmitTravelsBackThroughTheSurface) {
   EXPECT_EQ(r.transmit, 0.0);
   // Opaque background rgb <0.2,0.4,0.6>: 0.4 + 0.6·bg = (0.52, 0.44, 0.46), transmit 0.
   s.background = rgb(0.2, 0.4, 0.6);
-  r = trace_at(build_render_scene(s, BuildOptions{true}), {0, 0, -10}, {0, 0, 1});
+  r = trace_at(build_render_scene(s, with_alpha(true)), {0, 0, -10}, {0, 0, 1});
   EXPECT_RGB_REL(r.colour, 0.52, 0.44, 0.46);
   EXPECT_EQ(r.transmit, 0.0);
 }
@@ -212,7 +218,7 @@ SceneDescription half_transparent_background(int version, bool with_plane) {
 }
 
 Radiance background_case(int version, bool with_plane, bool alpha) {
-  const RenderScene rs = build_render_scene(half_transparent_background(version, with_plane), BuildOptions{alpha});
+  const RenderScene rs = build_render_scene(half_transparent_background(version, with_plane), with_alpha(alpha));
   return trace_at(rs, {0, 0, -10}, {0, 0, 1});
 }
 
