@@ -53,6 +53,16 @@ struct CallArguments {
   void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
 };
 
+// A built-in float function (functions.cpp): its argument counts and its value.
+struct FloatFunction {
+  std::size_t min_args, max_args;
+  double (*eval)(const CallArguments&);   // a plain function: no std::function call per evaluation
+};
+const FloatFunction* find_float_function(std::string_view name);   // nullptr: no such built-in
+// What parse_function_call gives for the built-in `name` with these arguments, or nullopt where it would report
+// an error or warn instead (a domain error, acos(2), an infinite result): the expression programs call through here.
+std::optional<double> quiet_float_call(std::string_view name, const FloatFunction& f, const CallArguments& args);
+
 class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
@@ -230,6 +240,46 @@ class Interpreter {
   class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
   CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+  // Loops and macro bodies read the same expressions over and over from the same kept tokens. The first time one
+  // is met again it is translated into a program (numbers, numeric identifiers, + - * / unary ! comparisons & |,
+  // parentheses, vector literals, pure built-in float calls), which later readings run instead of parsing it:
+  // the grammar decides the program from the tokens alone, and the values are checked as it runs. Anything the
+  // program does not cover — a '#' or the end of a file on the way, a string, a macro, an identifier that holds
+  // no number when read, an error or warning the parse would give — leaves it to the full parse, which starts
+  // from the same token and reports it (nothing is consumed before the program has its value).
+  struct ExpressionOp {
+    enum class Code : std::uint8_t {
+      number, name, neg, not_, add, sub, mul, div, compare, and_, or_, vector, call
+    } code = Code::number;
+    std::uint8_t arg = 0;       // compare: the Comparison; vector, call: the component or argument count
+    std::uint32_t name = 0;     // name: the NameId
+    double number = 0;          // number: the value
+    const FloatFunction* function = nullptr;   // call: the built-in
+    std::string_view text;                     // call: its name (in the file's text, alive as long as the parse)
+  };
+  struct ExpressionProgram {
+    std::uint32_t first_op = 0, op_count = 0;   // in program_ops_
+    std::uint32_t end = 0;                      // token index just after the expression
+    bool usable = false;                        // false: the grammar took something no program covers
+  };
+  struct ProgramKey {
+    const FileTokens* tokens;
+    std::uint64_t at;   // token index · 2 + (1 at the full level)
+    bool operator==(const ProgramKey&) const = default;
+  };
+  struct ProgramKeyHash {
+    std::size_t operator()(const ProgramKey& k) const {
+      return static_cast<std::size_t>((reinterpret_cast<std::uintptr_t>(k.tokens) >> 4) * 0x9E3779B97F4A7C15ull ^
+                                      k.at * 0xC2B2AE3D27D4EB4Full);
+    }
+  };
+  class ProgramCompiler;
+  // The expression at the frame's next token at the full level (parse_expression) or the parameter level
+  // (parse_additive), run as a program where one exists or can be made; false, having read nothing, elsewhere.
+  bool run_expression_program(bool full, Numeric& out);
+  bool replaying() const;   // inside a macro body or a #while/#for loop: where expressions are read again
+  std::unordered_map<ProgramKey, ExpressionProgram, ProgramKeyHash> programs_;
+  std::vector<ExpressionOp> program_ops_;
 
   // ---- arrays (arrays.cpp) ----
   Value parse_array_declaration(const Token& keyword);
