@@ -519,6 +519,7 @@ class Interpreter {
   std::vector<Frame> frames_;
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
+  std::vector<std::pair<SymbolTable::NameId, Value>> macro_arguments_;   // of the macro calls being read (invoke_macro)
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
   std::uint32_t tokens_until_cancel_check_ = 0;   // ParseOptions::cancel is read once every kCancelCheckTokens
   std::vector<std::unique_ptr<FileTokens>> token_stores_;   // one per file read (files_ holds the texts)

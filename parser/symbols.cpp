@@ -88,8 +88,8 @@ SymbolTable::NameId SymbolTable::intern(std::string_view name) {
 SymbolTable::NameId SymbolTable::id_of(std::string_view name) const { return ids_[slot_of(name, hash(name))]; }
 
 void SymbolTable::pop_scope() {
-  const std::size_t level = scopes_.size() - 1;
-  for (const NameId id : scopes_.back()) {
+  const std::size_t level = depth_ - 1;
+  for (const NameId id : scopes_[level]) {
     auto& stack = bindings_[id];
     // #undef may have removed the entry already (a name is listed again when it is bound again).
     if (stack.empty() || stack.back()->level != level) continue;
@@ -98,8 +98,9 @@ void SymbolTable::pop_scope() {
     e->value = Numeric{};   // release what it held now, not when the entry is reused
     free_.push_back(e);
   }
-  scopes_.pop_back();
-  deprecations_.pop_back();
+  scopes_[level].clear();
+  deprecations_[level].clear();
+  --depth_;
 }
 
 void SymbolTable::add_entry(NameId id, std::size_t level, Value value) {

@@ -25,9 +25,16 @@ class SymbolTable {
   bool is_reserved(NameId id) const { return reserved_[id] != 0; }
 
   SymbolTable();
-  void push_scope() { scopes_.emplace_back(); deprecations_.emplace_back(); }
+  // The tables of levels left are kept (emptied) for the next push: a macro call must not allocate its table.
+  void push_scope() {
+    if (depth_ == scopes_.size()) {
+      scopes_.emplace_back();
+      deprecations_.emplace_back();
+    }
+    ++depth_;
+  }
   void pop_scope();
-  std::size_t depth() const { return scopes_.size(); }
+  std::size_t depth() const { return depth_; }
 
   // The value visible under `name`, following macro aliases; nullptr if undeclared. Takes the token's text as it
   // is: no string is made for a lookup.
@@ -99,6 +106,7 @@ class SymbolTable {
   // other names are bound) and are recycled through free_.
   std::vector<std::vector<Entry*>> bindings_;   // by id
   std::vector<std::vector<NameId>> scopes_;     // by level: the names bound there, to unbind at pop_scope
+  std::size_t depth_ = 1;                       // levels in use (scopes_ may hold more, empty, for reuse)
   std::deque<Entry> entries_;
   std::vector<Entry*> free_;
   std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // by level

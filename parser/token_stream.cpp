@@ -457,10 +457,29 @@ void Interpreter::invoke_macro(const Token& name) {
   // Checked here rather than with expect(): its message would be built on every call.
   if (const Token open = next(); !open.is("("))
     fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
-  std::vector<std::pair<SymbolTable::NameId, Value>> bound;
-  bound.reserve(macro.parameters.size());
+  // The values go on a stack kept by the interpreter (a call allocates nothing for them); a call in an argument
+  // pushes its own above them and takes them off again.
+  const std::size_t base = macro_arguments_.size();
+  struct Unwind {
+    std::vector<std::pair<SymbolTable::NameId, Value>>& stack;
+    std::size_t base;
+    ~Unwind() { stack.resize(base); }
+  } unwind{macro_arguments_, base};
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
     if (i > 0) accept(",");
+    // The common argument, a declared variable's name alone, read from the kept tokens: what the lines below
+    // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
+    if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
+                                             !symbols_.is_reserved(k->payload)) {
+      Frame& f = frames_.back();
+      const LexedToken& after = lexed(*f.tokens, f.index + 1);
+      if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
+        if (const auto level = symbols_.level_of(k->payload)) {
+          ++f.index;
+          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, std::string(text_of(*k)), k->payload});
+          continue;
+        }
+    }
     Token first = next();
     // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
     // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
@@ -469,21 +488,23 @@ void Interpreter::invoke_macro(const Token& name) {
       const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
       auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
       if (level && alone) {
-        bound.emplace_back(macro.parameter_ids[i],
-                           Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
+        macro_arguments_.emplace_back(
+            macro.parameter_ids[i],
+            Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
         continue;
       }
     }
     auto value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
-    bound.emplace_back(macro.parameter_ids[i], std::move(*value));
+    macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
   }
   Token close = next();
   if (!close.is(")"))
     fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
                              std::to_string(macro.parameters.size()) + " parameters)");
   symbols_.push_scope();
-  for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
+  for (std::size_t i = base; i < macro_arguments_.size(); ++i)
+    symbols_.bind(macro_arguments_[i].first, std::move(macro_arguments_[i].second));
   frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
   Control c;
   c.kind = Control::Kind::macro_call;
