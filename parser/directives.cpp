@@ -36,7 +36,7 @@ void Interpreter::directive(const Token& hash) {
     const std::string_view w = text_of(*k);
     if (w == "declare" || w == "local") {
       ++frames_.back().index;
-      return directive_declare(hash, w == "local");
+      return directive_declare(w == "local");
     }
   }
   Token word = raw();
@@ -49,8 +49,8 @@ void Interpreter::directive(const Token& hash) {
   }
   const std::string_view w = word.text;
   if (w == "version") return directive_version(word);
-  if (w == "declare") return directive_declare(word, false);
-  if (w == "local") return directive_declare(word, true);
+  if (w == "declare") return directive_declare(false);
+  if (w == "local") return directive_declare(true);
   if (w == "undef") return directive_undef();
   if (w == "include") return directive_include(hash);   // the chain of an error names the #include
   if (w == "if") return directive_if(word, 0);
@@ -87,7 +87,7 @@ void Interpreter::directive_version(const Token& at) {
   (void)at;
 }
 
-void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: the '#' or the directive word
+void Interpreter::directive_declare(bool local) {
   Token name_token = raw();
   // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
   std::optional<SymbolTable::Deprecation> deprecation;
@@ -145,7 +145,6 @@ void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: th
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
   if (raw_ahead().is(";")) skip_ahead();
   else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
-  (void)at;
 }
 
 void Interpreter::directive_undef() {

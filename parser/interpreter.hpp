@@ -106,6 +106,10 @@ class Interpreter {
     return t.name ? symbols_.is_reserved(t.name) : is_reserved_word(t.text);
   }
   Token next();                  // next token after directives and macro calls
+  // `#declare`, `#local` and `#end` — the directives loops run — read from the kept tokens, neither the '#' nor
+  // the word made a Token unless an error needs it. False, having read nothing, where next() takes the full path:
+  // a token limit, a cancel check due, the nesting limit near, another directive, a pushed-back token.
+  bool quick_directive();
   const Token& peek();   // valid until the next token is read
   // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
   // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
@@ -188,7 +192,7 @@ class Interpreter {
   // ---- directives (directives.cpp) ----
   void directive(const Token& hash);
   void directive_version(const Token& at);
-  void directive_declare(const Token& at, bool local);
+  void directive_declare(bool local);
   void directive_undef();
   void directive_include(const Token& at);
   void directive_if(const Token& at, int kind);   // 0 #if, 1 #ifdef, 2 #ifndef

@@ -179,6 +179,7 @@ Token Interpreter::next() {
     // back after next() are, and are not processed twice (no second deprecation warning).
     // Constructed from its source, not default-constructed and assigned: zero-filling a Token first was a
     // quarter of this function's time.
+    if (pushed_back_.empty() && quick_directive()) continue;
     Token t = pushed_back_.empty() ? raw() : pop_pushed_back();
     if (t.processed) return t;
     // A directive or macro call reads its operands with next(), which may run another directive or call before
@@ -200,6 +201,58 @@ Token Interpreter::next() {
     t.processed = true;
     return t;
   }
+}
+
+bool Interpreter::quick_directive() {
+  if (options_.max_tokens || !nesting_room()) return false;
+  Frame& f = frames_.back();
+  const LexedToken& hash = lexed(*f.tokens, f.index);
+  if (!plain_symbol(&hash, '#')) return false;
+  FileTokens& tokens = *f.tokens;
+  const std::size_t word_index = f.index + 1;
+  const LexedToken& word = lexed(tokens, word_index);
+  if (word.kind() != TokenKind::identifier) return false;
+  const std::string_view w = text_of(word);
+  const bool declare = w == "declare", local = w == "local";
+  if (!declare && !local && w != "end") return false;
+  // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
+  // cancel check; where it is due, raw() makes it.
+  const std::uint32_t counted = declare || local ? 1 : 2;
+  if (options_.cancel) {
+    if (tokens_until_cancel_check_ < counted) return false;
+    tokens_until_cancel_check_ -= counted;
+  }
+  f.index = word_index + 1;
+  // next()'s NestingGuard, which nesting_room() has just let in.
+  ++nesting_;
+  struct Leave {
+    int& nesting;
+    ~Leave() { --nesting; }
+  } leave{nesting_};
+  if (declare || local) {
+    directive_declare(local);
+    return true;
+  }
+  // #end: the round of a #while loop and the end of an #if without a Token; the rest as directive_end does it.
+  if (!controls_.empty()) {
+    const Control& c = controls_.back();
+    if (c.kind == Control::Kind::if_branch) {
+      controls_.pop_back();
+      return true;
+    }
+    if (c.kind == Control::Kind::while_loop && frames_.size() - 1 == c.frame) {
+      const Control loop = c;
+      seek(loop.frame, loop.resume);
+      if (condition_in_parens()) return true;
+      controls_.pop_back();
+      Token opener = make_token(tokens, tokens[word_index]);
+      opener.text = "while";
+      skip_branch(opener, false);
+      return true;
+    }
+  }
+  directive_end(make_token(tokens, tokens[word_index]));
+  return true;
 }
 
 void Interpreter::process_identifier(Token& t, const Value* v) {
