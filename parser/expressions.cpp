@@ -758,18 +758,25 @@ enum class Run { value, decline, wider };
 
 bool Interpreter::run_expression_program(bool full, Numeric& out) {
   // With a token limit every token is counted by next(); a deprecated name warns where it is read.
-  if (options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated() || !replaying()) return false;
+  if (options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated()) return false;
   Frame& f = frames_.back();
-  const ProgramKey key{f.tokens, std::uint64_t{f.index} * 2 + (full ? 1 : 0)};
-  auto it = programs_.find(key);
-  if (it == programs_.end()) {
-    ExpressionProgram p;
+  const unsigned level = full ? 1 : 0;
+  std::uint32_t note = f.tokens->note(f.index, level);
+  if (note == 0) {
+    if (!replaying()) return false;   // read once: not worth a program
+    ExpressionProgram made;
     ProgramCompiler compiler(*this, *f.tokens, f.index);
-    if (compiler.compile(full, p) == ProgramCompiler::Result::not_yet) return false;
-    it = programs_.emplace(key, p).first;
+    if (compiler.compile(full, made) == ProgramCompiler::Result::not_yet) return false;
+    if (made.usable) {
+      programs_.push_back(made);
+      note = static_cast<std::uint32_t>(programs_.size() + 1);
+    } else {
+      note = 1;
+    }
+    f.tokens->set_note(f.index, level, note);
   }
-  const ExpressionProgram& p = it->second;
-  if (!p.usable || nesting_ + kProgramDepth > kMaxNesting || !nesting_room()) return false;
+  if (note == 1 || nesting_ + kProgramDepth > kMaxNesting || !nesting_room()) return false;
+  const ExpressionProgram& p = programs_[note - 2];
   const ExpressionOp* ops = program_ops_.data() + p.first_op;
   const ExpressionOp* const end = ops + p.op_count;
 

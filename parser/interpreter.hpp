@@ -266,23 +266,14 @@ class Interpreter {
     std::uint32_t end = 0;                      // token index just after the expression
     bool usable = false;                        // false: the grammar took something no program covers
   };
-  struct ProgramKey {
-    const FileTokens* tokens;
-    std::uint64_t at;   // token index · 2 + (1 at the full level)
-    bool operator==(const ProgramKey&) const = default;
-  };
-  struct ProgramKeyHash {
-    std::size_t operator()(const ProgramKey& k) const {
-      return static_cast<std::size_t>((reinterpret_cast<std::uintptr_t>(k.tokens) >> 4) * 0x9E3779B97F4A7C15ull ^
-                                      k.at * 0xC2B2AE3D27D4EB4Full);
-    }
-  };
   class ProgramCompiler;
   // The expression at the frame's next token at the full level (parse_expression) or the parameter level
   // (parse_additive), run as a program where one exists or can be made; false, having read nothing, elsewhere.
   bool run_expression_program(bool full, Numeric& out);
   bool replaying() const;   // inside a macro body or a #while/#for loop: where expressions are read again
-  std::unordered_map<ProgramKey, ExpressionProgram, ProgramKeyHash> programs_;
+  // Found through the note (FileTokens::note) of the expression's first token and level: 0 not tried yet, 1 no
+  // program, else programs_[note - 2]. A note is an index, not a hash lookup: asked at every expression.
+  std::vector<ExpressionProgram> programs_;
   std::vector<ExpressionOp> program_ops_;
 
   // ---- arrays (arrays.cpp) ----
