@@ -308,6 +308,24 @@ const Token& Interpreter::peek() {
 }
 
 Interpreter::Ahead Interpreter::raw_ahead_full() {
+  // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
+  // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
+  // follows in the caller when that is plain.
+  while (pushed_back_.empty() && !options_.max_tokens && !controls_.empty() &&
+         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == frames_.size() - 1) {
+    Frame& f = frames_.back();
+    if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
+    const LexedToken& word = lexed(*f.tokens, f.index + 1);
+    if (word.kind() != TokenKind::identifier || text_of(word) != "end") break;
+    if (options_.cancel) {   // raw() reads the '#' and the word; where the cancel check is due, it makes it
+      if (tokens_until_cancel_check_ < 2) break;
+      tokens_until_cancel_check_ -= 2;
+    }
+    return_from_macro();   // directive_end of a macro call in its own frame
+    Frame& caller = frames_.back();
+    const LexedToken& k = lexed(*caller.tokens, caller.index);
+    if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
+  }
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
 }
@@ -507,8 +525,10 @@ void Interpreter::invoke_macro(const Token& name) {
   if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
     fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
                       " levels: runaway recursion in '" + std::string(name.text) + "'?)");
-  // Checked here rather than with expect(): its message would be built on every call.
-  if (const Token open = next(); !open.is("("))
+  // Checked here rather than with expect(): its message would be built on every call. A plain '(' is taken
+  // where it stands.
+  if (plain_symbol(plain_ahead(), '(')) consume_plain();
+  else if (const Token open = next(); !open.is("("))
     fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
   // The values go on a stack kept by the interpreter (a call allocates nothing for them); a call in an argument
   // pushes its own above them and takes them off again.
@@ -551,8 +571,8 @@ void Interpreter::invoke_macro(const Token& name) {
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
     macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
   }
-  Token close = next();
-  if (!close.is(")"))
+  if (plain_symbol(plain_ahead(), ')')) consume_plain();
+  else if (Token close = next(); !close.is(")"))
     fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
                              std::to_string(macro.parameters.size()) + " parameters)");
   symbols_.push_scope();
