@@ -99,7 +99,15 @@ class SymbolTable {
   std::size_t slot_of(std::string_view name, std::uint64_t h) const;
   std::vector<std::string> names_;       // by id
   std::vector<std::uint64_t> hashes_;    // by id
-  std::vector<NameId> ids_;              // open addressing on the hash, linear probing; 0 = empty; a power of 2
+  // Open addressing on the hash, linear probing, a power of 2 in size; id 0 = empty. Each slot keeps the upper half
+  // of its name's hash, so that a probe compares text only where the hashes agree: the first reading of a scene
+  // of 100,000 names missed the cache on hashes_ and names_ at every probe (a fifth of its parse).
+  struct Slot {
+    NameId id = 0;
+    std::uint32_t tag = 0;
+  };
+  static std::uint32_t tag_of(std::uint64_t h) { return static_cast<std::uint32_t>(h >> 32); }
+  std::vector<Slot> ids_;
   std::vector<std::uint8_t> reserved_;   // by id
   // Shallow binding: for each name, the entries of the levels that hold it, innermost last (levels increase), so
   // the visible one is the last. Entries live in a deque (stable addresses: callers keep `const Value*` while
