@@ -33,10 +33,10 @@ void Interpreter::directive(const Token& hash) {
   // #declare and #local, the directives loops run most, are recognised from the kept token: no Token is made for
   // the word (directive_declare reads on from after it). With a token limit, raw() counts the word.
   if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
-    const std::string_view w = text_of(*k);
-    if (w == "declare" || w == "local") {
+    if (k->payload == word_declare_ || k->payload == word_local_) {
+      const bool local = k->payload == word_local_;
       ++frames_.back().index;
-      return directive_declare(w == "local");
+      return directive_declare(local);
     }
   }
   Token word = raw();

@@ -837,7 +837,11 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
         }
       }
     }
-    out = Numeric::scalar(st[0]);
+    // Field by field, not through a temporary: copying a just-built Numeric stalled on store forwarding.
+    out.v[0] = st[0];
+    out.v[1] = out.v[2] = out.v[3] = out.v[4] = 0;
+    out.terms = 1;
+    out.colour = false;
     return Run::value;
   };
 

@@ -519,6 +519,11 @@ class Interpreter {
   std::uint32_t tokens_until_cancel_check_ = 0;   // ParseOptions::cancel is read once every kCancelCheckTokens
   std::vector<std::unique_ptr<FileTokens>> token_stores_;   // one per file read (files_ holds the texts)
   SymbolTable symbols_;
+  // The directive words the token stream asks every identifier after a '#' about, as NameIds: a kept token's
+  // payload is compared instead of its text.
+  const SymbolTable::NameId word_declare_ = symbols_.intern("declare");
+  const SymbolTable::NameId word_local_ = symbols_.intern("local");
+  const SymbolTable::NameId word_end_ = symbols_.intern("end");
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes

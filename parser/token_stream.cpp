@@ -212,9 +212,8 @@ bool Interpreter::quick_directive() {
   const std::size_t word_index = f.index + 1;
   const LexedToken& word = lexed(tokens, word_index);
   if (word.kind() != TokenKind::identifier) return false;
-  const std::string_view w = text_of(word);
-  const bool declare = w == "declare", local = w == "local";
-  if (!declare && !local && w != "end") return false;
+  const bool declare = word.payload == word_declare_, local = word.payload == word_local_;
+  if (!declare && !local && word.payload != word_end_) return false;
   // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
   // cancel check; where it is due, raw() makes it.
   const std::uint32_t counted = declare || local ? 1 : 2;
@@ -316,7 +315,7 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
     Frame& f = frames_.back();
     if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
     const LexedToken& word = lexed(*f.tokens, f.index + 1);
-    if (word.kind() != TokenKind::identifier || text_of(word) != "end") break;
+    if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
     if (options_.cancel) {   // raw() reads the '#' and the word; where the cancel check is due, it makes it
       if (tokens_until_cancel_check_ < 2) break;
       tokens_until_cancel_check_ -= 2;
