@@ -450,6 +450,7 @@ void Interpreter::directive_macro(const Token& at) {
   m.file = frames_.back().file;
   m.tokens = frames_.back().tokens;
   m.body = frames_.back().index;
+  m.tokens->keep_from(m.body);   // every call replays the body
   m.loc = at.loc;
   Token opener = at;
   skip_branch(opener, false);

@@ -514,6 +514,9 @@ class Interpreter {
   std::vector<Frame> frames_;
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
+  // True while run() reads the next statement's first token: a directive then run at nesting level 0 stands
+  // between statements, where nothing holds a kept token (FileTokens::release_before).
+  bool between_statements_ = false;
   std::vector<std::pair<SymbolTable::NameId, Value>> macro_arguments_;   // of the macro calls being read (invoke_macro)
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
   std::uint32_t tokens_until_cancel_check_ = 0;   // ParseOptions::cancel is read once every kCancelCheckTokens

@@ -24,7 +24,9 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
 
   try {
     while (true) {
+      between_statements_ = true;
       Token t = next();
+      between_statements_ = false;
       if (t.kind == TokenKind::end_of_input) break;
       parse_statement(t);
     }

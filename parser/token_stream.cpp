@@ -221,6 +221,8 @@ bool Interpreter::quick_directive() {
     if (tokens_until_cancel_check_ < counted) return false;
     tokens_until_cancel_check_ -= counted;
   }
+  // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
+  if (between_statements_ && nesting_ == 0 && frames_.size() == 1 && controls_.empty()) tokens.release_before(f.index);
   f.index = word_index + 1;
   // next()'s NestingGuard, which nesting_room() has just let in.
   ++nesting_;

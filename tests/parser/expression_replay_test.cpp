@@ -97,3 +97,24 @@ TEST(ReplayedExpressions, InMacroBodies) {
 
 }  // namespace
 }  // namespace povtrace::test
+
+namespace povtrace::test {
+namespace {
+
+// Between statements of the main file the tokens already read are freed in chunks of 4096
+// (FileTokens::release_before), except from where a macro body starts: a macro defined before 50,000 tokens of
+// #declares still runs, loops still replay, and errors far down still say where they are.
+TEST(KeptTokens, FreedBehindTheStatementsButNotUnderMacros) {
+  std::string scene = "#version 3.7;\n#macro Twice(A) (A * 2) #end\n";
+  for (int i = 0; i < 10000; ++i) scene += "#declare V" + std::to_string(i) + " = " + std::to_string(i) + ";\n";
+  scene += "#declare R = 0; #while (R < 3) #declare R = R + 1; #end\n";
+  for (int i = 0; i < 10000; ++i) scene += "#local W" + std::to_string(i) + " = V" + std::to_string(i) + " + 1;\n";
+  scene += "#debug concat(str(Twice(V9999 + W5), 0, 1), \" \", str(R, 0, 0), \"\\n\")\n";
+  EXPECT_EQ(debug_output(scene), "20010.0 3\n");
+  const ParseError e = parse_error(scene + "#declare X = 1 + ;\n");
+  EXPECT_EQ(e.location().line, 20005);
+  EXPECT_EQ(e.location().column, 18);
+}
+
+}  // namespace
+}  // namespace povtrace::test
