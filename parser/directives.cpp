@@ -88,36 +88,61 @@ void Interpreter::directive_version(const Token& at) {
 }
 
 void Interpreter::directive_declare(bool local) {
-  Token name_token = raw();
-  // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
-  std::optional<SymbolTable::Deprecation> deprecation;
-  if (name_token.is("deprecated")) {
-    deprecation.emplace();
-    if (peek_raw().is("once")) {
-      next();
-      deprecation->once = true;
-    }
-    if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
-    // The name is read raw (it is being declared): take it back from the look-ahead.
-    if (!pushed_back_.empty()) {
-      name_token = pushed_back_.back();
-      pushed_back_.pop_back();
-    } else {
-      name_token = raw();
+  // The name. A plain identifier is taken from its kept token (loops run #declare every round), its Token made
+  // only where a message or an element assignment needs it; anything else is read by raw() as before.
+  std::optional<Token> name_token;
+  FileTokens* kept_tokens = nullptr;
+  std::size_t kept_index = 0;
+  SymbolTable::NameId id = 0;
+  std::string_view name_text;
+  if (Frame& f = frames_.back(); pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() == TokenKind::identifier && !symbols_.is_reserved(k.payload)) {
+      kept_tokens = f.tokens;
+      kept_index = f.index++;
+      id = k.payload;
+      name_text = text_of(k);
     }
   }
-  if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
-  if (reserved(name_token))   // by its NameId where the token has one
-    fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
-  const std::string name(name_token.text);
+  auto token = [&]() -> const Token& {
+    if (!name_token) name_token = make_token(*kept_tokens, (*kept_tokens)[kept_index]);
+    return *name_token;
+  };
+  // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
+  std::optional<SymbolTable::Deprecation> deprecation;
+  if (!kept_tokens) {
+    name_token = raw();
+    if (name_token->is("deprecated")) {
+      deprecation.emplace();
+      if (peek_raw().is("once")) {
+        next();
+        deprecation->once = true;
+      }
+      if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
+      // The name is read raw (it is being declared): take it back from the look-ahead.
+      if (!pushed_back_.empty()) {
+        name_token = pushed_back_.back();
+        pushed_back_.pop_back();
+      } else {
+        name_token = raw();
+      }
+    }
+    if (name_token->kind != TokenKind::identifier) fail_expected(*name_token, "an identifier after #declare");
+    if (reserved(*name_token))   // by its NameId where the token has one
+      fail_at(*name_token, "'" + std::string(name_token->text) + "' is a reserved word and cannot be declared");
+    name_text = name_token->text;
+  }
+  const std::string name(name_text);
   if (deprecation && deprecation->message.empty())
     deprecation->message = "Identifier '" + name + "' was declared deprecated.";
-  warn_if_deprecated(symbols_, name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
-  const SymbolTable::NameId id = name_token.name ? name_token.name : symbols_.intern(name);
+  if (!kept_tokens) {
+    warn_if_deprecated(symbols_, *name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
+    id = name_token->name ? name_token->name : symbols_.intern(name);
+  }
   if (ahead_is("[")) {
     const Value* v = symbols_.find(id);
     if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v))
-      return directive_declare_element(name_token, local);
+      return directive_declare_element(token(), local);
   }
   if (plain_symbol(plain_ahead(), '=')) {
     consume_plain();
@@ -138,7 +163,11 @@ void Interpreter::directive_declare(bool local) {
   }
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
-  check_function_redeclaration(name_token, local, *value);
+  // (Its checks concern functions only: the kept name's Token is made where one is involved.)
+  if (const Value* visible = symbols_.find(id);
+      !kept_tokens || std::holds_alternative<std::shared_ptr<const FunctionValue>>(*value) ||
+      (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible)))
+    check_function_redeclaration(token(), local, *value);
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   symbols_.assign_at(id, target_level, std::move(*value));
