@@ -152,10 +152,21 @@ void Interpreter::directive_declare(bool local) {
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
-  std::optional<Value> value;
   if (numeric_ahead()) {
-    value = Value(parse_additive().stored());   // what try_parse_rvalue() makes of it, without a Token
-  } else {
+    // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
+    // straight into an entry that holds a number already (loops assign the same names every round).
+    const Numeric n = parse_additive().stored();
+    if (const Value* visible = symbols_.find(id);
+        !kept_tokens || (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible)))
+      check_function_redeclaration(token(), local, Value(n));
+    symbols_.assign_numeric_at(id, target_level, n);
+    if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
+    if (raw_ahead().is(";")) skip_ahead();
+    else if (scene_.language_version >= 350) fail_expected(peek_raw(), "';' after the value of " + name);
+    return;
+  }
+  std::optional<Value> value;
+  {
     Token first = next();
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "

@@ -179,6 +179,20 @@ void SymbolTable::assign_at(NameId id, std::size_t level, Value value) {
   add_entry(id, level, std::move(value));
 }
 
+void SymbolTable::assign_numeric_at(NameId id, std::size_t level, const Numeric& n) {
+  if (level < depth() && id < bindings_.size())
+    for (Entry* e : bindings_[id])
+      if (e->level == level) {
+        // assign_at's target: through the alias, or the entry itself where the alias leads nowhere.
+        Value* target = resolve_alias(&e->value);
+        if (!target) target = &e->value;
+        if (auto* old = std::get_if<Numeric>(target)) *old = n;
+        else *target = n;
+        return;
+      }
+  assign_at(id, level, Value(n));
+}
+
 void SymbolTable::bind(NameId id, Value value) {
   Entry* e = top(id);
   if (e && e->level == depth() - 1) e->value = std::move(value);

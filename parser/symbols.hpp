@@ -61,6 +61,8 @@ class SymbolTable {
   // M's body ends the value before M's #end): overwrite the name's entry in table `level` (through an alias),
   // else create it there. A level that no longer exists falls back to local().
   void assign_at(NameId id, std::size_t level, Value value);
+  // assign_at() of a number: where the entry it assigns holds a number, that number is overwritten in place.
+  void assign_numeric_at(NameId id, std::size_t level, const Numeric& n);
   // Binds a name in the innermost table without following aliases (macro parameters, #for variables).
   void bind(NameId id, Value value);
   void bind(const std::string& name, Value value) { bind(intern(name), std::move(value)); }
