@@ -504,7 +504,7 @@ class Interpreter {
   // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
   // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
   bool numeric_ahead();
-  void place_object(Object object, const SourceLoc& at);
+  void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);
   void post_process(Object& object);

@@ -394,7 +394,7 @@ const Normal* first_untyped_normal(const Object& o) {
 }
 }  // namespace
 
-void Interpreter::place_object(Object object, const SourceLoc& at) {
+void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
   remove_unnecessary_bounds(object);
   settle_deferred_texture_transforms(object);
