@@ -33,10 +33,10 @@ void Interpreter::directive(const Token& hash) {
   // #declare and #local, the directives loops run most, are recognised from the kept token: no Token is made for
   // the word (directive_declare reads on from after it). With a token limit, raw() counts the word.
   if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
-    const std::string_view w = text_of(*k);
-    if (w == "declare" || w == "local") {
+    if (k->payload == word_declare_ || k->payload == word_local_) {
+      const bool local = k->payload == word_local_;
       ++frames_.back().index;
-      return directive_declare(hash, w == "local");
+      return directive_declare(local);
     }
   }
   Token word = raw();
@@ -49,8 +49,8 @@ void Interpreter::directive(const Token& hash) {
   }
   const std::string_view w = word.text;
   if (w == "version") return directive_version(word);
-  if (w == "declare") return directive_declare(word, false);
-  if (w == "local") return directive_declare(word, true);
+  if (w == "declare") return directive_declare(false);
+  if (w == "local") return directive_declare(true);
   if (w == "undef") return directive_undef();
   if (w == "include") return directive_include(hash);   // the chain of an error names the #include
   if (w == "if") return directive_if(word, 0);
@@ -87,37 +87,62 @@ void Interpreter::directive_version(const Token& at) {
   (void)at;
 }
 
-void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: the '#' or the directive word
-  Token name_token = raw();
-  // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
-  std::optional<SymbolTable::Deprecation> deprecation;
-  if (name_token.is("deprecated")) {
-    deprecation.emplace();
-    if (peek_raw().is("once")) {
-      next();
-      deprecation->once = true;
-    }
-    if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
-    // The name is read raw (it is being declared): take it back from the look-ahead.
-    if (!pushed_back_.empty()) {
-      name_token = pushed_back_.back();
-      pushed_back_.pop_back();
-    } else {
-      name_token = raw();
+void Interpreter::directive_declare(bool local) {
+  // The name. A plain identifier is taken from its kept token (loops run #declare every round), its Token made
+  // only where a message or an element assignment needs it; anything else is read by raw() as before.
+  std::optional<Token> name_token;
+  FileTokens* kept_tokens = nullptr;
+  std::size_t kept_index = 0;
+  SymbolTable::NameId id = 0;
+  std::string_view name_text;
+  if (Frame& f = frames_.back(); pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() == TokenKind::identifier && !symbols_.is_reserved(k.payload)) {
+      kept_tokens = f.tokens;
+      kept_index = f.index++;
+      id = k.payload;
+      name_text = text_of(k);
     }
   }
-  if (name_token.kind != TokenKind::identifier) fail_expected(name_token, "an identifier after #declare");
-  if (reserved(name_token))   // by its NameId where the token has one
-    fail_at(name_token, "'" + std::string(name_token.text) + "' is a reserved word and cannot be declared");
-  const std::string name(name_token.text);
+  auto token = [&]() -> const Token& {
+    if (!name_token) name_token = make_token(*kept_tokens, (*kept_tokens)[kept_index]);
+    return *name_token;
+  };
+  // #declare deprecated [once] "message" Name = … (§4): later reads of Name warn.
+  std::optional<SymbolTable::Deprecation> deprecation;
+  if (!kept_tokens) {
+    name_token = raw();
+    if (name_token->is("deprecated")) {
+      deprecation.emplace();
+      if (peek_raw().is("once")) {
+        next();
+        deprecation->once = true;
+      }
+      if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
+      // The name is read raw (it is being declared): take it back from the look-ahead.
+      if (!pushed_back_.empty()) {
+        name_token = pushed_back_.back();
+        pushed_back_.pop_back();
+      } else {
+        name_token = raw();
+      }
+    }
+    if (name_token->kind != TokenKind::identifier) fail_expected(*name_token, "an identifier after #declare");
+    if (reserved(*name_token))   // by its NameId where the token has one
+      fail_at(*name_token, "'" + std::string(name_token->text) + "' is a reserved word and cannot be declared");
+    name_text = name_token->text;
+  }
+  const std::string name(name_text);
   if (deprecation && deprecation->message.empty())
     deprecation->message = "Identifier '" + name + "' was declared deprecated.";
-  warn_if_deprecated(symbols_, name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
-  const SymbolTable::NameId id = name_token.name ? name_token.name : symbols_.intern(name);
+  if (!kept_tokens) {
+    warn_if_deprecated(symbols_, *name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
+    id = name_token->name ? name_token->name : symbols_.intern(name);
+  }
   if (ahead_is("[")) {
     const Value* v = symbols_.find(id);
     if (v && std::holds_alternative<std::shared_ptr<ArrayValue>>(*v))
-      return directive_declare_element(name_token, local);
+      return directive_declare_element(token(), local);
   }
   if (plain_symbol(plain_ahead(), '=')) {
     consume_plain();
@@ -127,10 +152,21 @@ void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: th
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
-  std::optional<Value> value;
   if (numeric_ahead()) {
-    value = Value(parse_additive().stored());   // what try_parse_rvalue() makes of it, without a Token
-  } else {
+    // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
+    // straight into an entry that holds a number already (loops assign the same names every round).
+    const Numeric n = parse_additive().stored();
+    if (const Value* visible = symbols_.find(id);
+        !kept_tokens || (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible)))
+      check_function_redeclaration(token(), local, Value(n));
+    symbols_.assign_numeric_at(id, target_level, n);
+    if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
+    if (raw_ahead().is(";")) skip_ahead();
+    else if (scene_.language_version >= 350) fail_expected(peek_raw(), "';' after the value of " + name);
+    return;
+  }
+  std::optional<Value> value;
+  {
     Token first = next();
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
@@ -138,14 +174,17 @@ void Interpreter::directive_declare(const Token& at, bool local) {   // `at`: th
   }
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
-  check_function_redeclaration(name_token, local, *value);
+  // (Its checks concern functions only: the kept name's Token is made where one is involved.)
+  if (const Value* visible = symbols_.find(id);
+      !kept_tokens || std::holds_alternative<std::shared_ptr<const FunctionValue>>(*value) ||
+      (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible)))
+    check_function_redeclaration(token(), local, *value);
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   symbols_.assign_at(id, target_level, std::move(*value));
   if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
   if (raw_ahead().is(";")) skip_ahead();
   else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
-  (void)at;
 }
 
 void Interpreter::directive_undef() {
@@ -451,6 +490,7 @@ void Interpreter::directive_macro(const Token& at) {
   m.file = frames_.back().file;
   m.tokens = frames_.back().tokens;
   m.body = frames_.back().index;
+  m.tokens->keep_from(m.body);   // every call replays the body
   m.loc = at.loc;
   Token opener = at;
   skip_branch(opener, false);

@@ -14,10 +14,6 @@ namespace povtrace::sdl {
 
 namespace {
 using Args = CallArguments;
-struct FloatFunction {
-  std::size_t min_args, max_args;
-  double (*eval)(const Args&);   // a plain function: no std::function call per evaluation
-};
 
 double degrees_to_radians(double d) { return d * M_PI / 180.0; }
 
@@ -122,6 +118,20 @@ CallArguments Interpreter::parse_call_arguments(const Token& name, std::size_t m
 }
 
 bool Interpreter::is_float_function(std::string_view name) { return float_functions().count(name) > 0; }
+
+const FloatFunction* find_float_function(std::string_view name) {
+  const auto it = float_functions().find(name);
+  return it == float_functions().end() ? nullptr : &it->second;
+}
+
+std::optional<double> quiet_float_call(std::string_view name, const FloatFunction& f, const CallArguments& args) {
+  // The checks of parse_function_call below, in its order; any that would speak declines.
+  if (!domain_error(name, args).empty()) return std::nullopt;
+  if ((name == "acos" || name == "asin") && std::fabs(args[0]) > 1.0) return std::nullopt;
+  const double value = f.eval(args);
+  if (!std::isfinite(value) && std::isfinite(args[0])) return std::nullopt;
+  return value;
+}
 
 Numeric Interpreter::parse_function_call(const Token& name) {
   const std::string_view n = name.text;

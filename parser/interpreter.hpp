@@ -53,6 +53,16 @@ struct CallArguments {
   void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
 };
 
+// A built-in float function (functions.cpp): its argument counts and its value.
+struct FloatFunction {
+  std::size_t min_args, max_args;
+  double (*eval)(const CallArguments&);   // a plain function: no std::function call per evaluation
+};
+const FloatFunction* find_float_function(std::string_view name);   // nullptr: no such built-in
+// What parse_function_call gives for the built-in `name` with these arguments, or nullopt where it would report
+// an error or warn instead (a domain error, acos(2), an infinite result): the expression programs call through here.
+std::optional<double> quiet_float_call(std::string_view name, const FloatFunction& f, const CallArguments& args);
+
 class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
@@ -96,6 +106,10 @@ class Interpreter {
     return t.name ? symbols_.is_reserved(t.name) : is_reserved_word(t.text);
   }
   Token next();                  // next token after directives and macro calls
+  // `#declare`, `#local` and `#end` — the directives loops run — read from the kept tokens, neither the '#' nor
+  // the word made a Token unless an error needs it. False, having read nothing, where next() takes the full path:
+  // a token limit, a cancel check due, the nesting limit near, another directive, a pushed-back token.
+  bool quick_directive();
   const Token& peek();   // valid until the next token is read
   // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
   // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
@@ -178,7 +192,7 @@ class Interpreter {
   // ---- directives (directives.cpp) ----
   void directive(const Token& hash);
   void directive_version(const Token& at);
-  void directive_declare(const Token& at, bool local);
+  void directive_declare(bool local);
   void directive_undef();
   void directive_include(const Token& at);
   void directive_if(const Token& at, int kind);   // 0 #if, 1 #ifdef, 2 #ifndef
@@ -230,6 +244,37 @@ class Interpreter {
   class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
   CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
+  // Loops and macro bodies read the same expressions over and over from the same kept tokens. The first time one
+  // is met again it is translated into a program (numbers, numeric identifiers, + - * / unary ! comparisons & |,
+  // parentheses, vector literals, pure built-in float calls), which later readings run instead of parsing it:
+  // the grammar decides the program from the tokens alone, and the values are checked as it runs. Anything the
+  // program does not cover — a '#' or the end of a file on the way, a string, a macro, an identifier that holds
+  // no number when read, an error or warning the parse would give — leaves it to the full parse, which starts
+  // from the same token and reports it (nothing is consumed before the program has its value).
+  struct ExpressionOp {
+    enum class Code : std::uint8_t {
+      number, name, neg, not_, add, sub, mul, div, compare, and_, or_, vector, call
+    } code = Code::number;
+    std::uint8_t arg = 0;       // compare: the Comparison; vector, call: the component or argument count
+    std::uint32_t name = 0;     // name: the NameId
+    double number = 0;          // number: the value
+    const FloatFunction* function = nullptr;   // call: the built-in
+    std::string_view text;                     // call: its name (in the file's text, alive as long as the parse)
+  };
+  struct ExpressionProgram {
+    std::uint32_t first_op = 0, op_count = 0;   // in program_ops_
+    std::uint32_t end = 0;                      // token index just after the expression
+    bool usable = false;                        // false: the grammar took something no program covers
+  };
+  class ProgramCompiler;
+  // The expression at the frame's next token at the full level (parse_expression) or the parameter level
+  // (parse_additive), run as a program where one exists or can be made; false, having read nothing, elsewhere.
+  bool run_expression_program(bool full, Numeric& out);
+  bool replaying() const;   // inside a macro body or a #while/#for loop: where expressions are read again
+  // Found through the note (FileTokens::note) of the expression's first token and level: 0 not tried yet, 1 no
+  // program, else programs_[note - 2]. A note is an index, not a hash lookup: asked at every expression.
+  std::vector<ExpressionProgram> programs_;
+  std::vector<ExpressionOp> program_ops_;
 
   // ---- arrays (arrays.cpp) ----
   Value parse_array_declaration(const Token& keyword);
@@ -459,7 +504,7 @@ class Interpreter {
   // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
   // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
   bool numeric_ahead();
-  void place_object(Object object, const SourceLoc& at);
+  void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);
   void post_process(Object& object);
@@ -469,10 +514,19 @@ class Interpreter {
   std::vector<Frame> frames_;
   std::vector<Control> controls_;
   std::vector<Token> pushed_back_;
+  // True while run() reads the next statement's first token: a directive then run at nesting level 0 stands
+  // between statements, where nothing holds a kept token (FileTokens::release_before).
+  bool between_statements_ = false;
+  std::vector<std::pair<SymbolTable::NameId, Value>> macro_arguments_;   // of the macro calls being read (invoke_macro)
   std::uint64_t tokens_read_ = 0;   // against ParseOptions::max_tokens
   std::uint32_t tokens_until_cancel_check_ = 0;   // ParseOptions::cancel is read once every kCancelCheckTokens
   std::vector<std::unique_ptr<FileTokens>> token_stores_;   // one per file read (files_ holds the texts)
   SymbolTable symbols_;
+  // The directive words the token stream asks every identifier after a '#' about, as NameIds: a kept token's
+  // payload is compared instead of its text.
+  const SymbolTable::NameId word_declare_ = symbols_.intern("declare");
+  const SymbolTable::NameId word_local_ = symbols_.intern("local");
+  const SymbolTable::NameId word_end_ = symbols_.intern("end");
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes

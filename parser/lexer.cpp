@@ -243,9 +243,19 @@ bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out) {
   if (token_end != c) {
     // lex_token's checks: a second '.' is an error, a value from_chars cannot give exactly is handled there.
     if (token_end < end && *token_end == '.' && token_end + 1 < end && is_digit(token_end[1])) return false;
-    const auto [ptr, ec] = std::from_chars(c, token_end, out.number);
-    if (ec != std::errc()) return false;
-    (void)ptr;
+    // Digits only, as most numbers of a scene are: their value summed by hand, exact below 10^15 (every step an
+    // integer below 2^53), so the same double from_chars gives — which a profile of a 7 MB scene had at 6%.
+    const char* d = c;
+    double whole = 0;
+    if (token_end - c <= 15)
+      for (; d < token_end && is_digit(*d); ++d) whole = whole * 10 + (*d - '0');
+    if (d == token_end) {
+      out.number = whole;
+    } else {
+      const auto [ptr, ec] = std::from_chars(c, token_end, out.number);
+      if (ec != std::errc()) return false;
+      (void)ptr;
+    }
   } else if (is_identifier_first(*c)) {
     kind = TokenKind::identifier;
     for (token_end = c + 1; token_end < end && is_identifier_other(*token_end);) ++token_end;

@@ -98,6 +98,34 @@ class FileTokens {
   }
   LexPosition lexed_to;   // where lexing goes on (just after the last token kept)
 
+  // Frees the chunks wholly below `index` and below every position a macro body starts at (keep_from): the
+  // interpreter's call between statements of the main file, where no loop or macro can return to them. A 7 MB scene
+  // of #declares is two million tokens, kept until the end otherwise. Reading a freed token is a bug.
+  void release_before(std::size_t index) {
+    const std::size_t limit = (index < keep_from_ ? index : keep_from_) >> kChunkBits;
+    for (; released_ < limit && released_ < chunks_.size(); ++released_) {
+      chunks_[released_].reset();
+      if (released_ < notes_.size()) notes_[released_].reset();
+    }
+  }
+  // Token `index` may be read again (a macro body starts there): it and what follows are never freed.
+  void keep_from(std::size_t index) {
+    if (index < keep_from_) keep_from_ = index;
+  }
+
+  // A number the interpreter keeps for token i and a level (0 or 1): what it found out about the expression that
+  // starts there (0 until it says). Stored in chunks made only where it writes one: loops are a few lines.
+  std::uint32_t note(std::size_t i, unsigned level) const {
+    const std::size_t c = i >> kChunkBits;
+    return c < notes_.size() && notes_[c] ? notes_[c][(i & kChunkMask) * 2 + level] : 0;
+  }
+  void set_note(std::size_t i, unsigned level, std::uint32_t value) {
+    const std::size_t c = i >> kChunkBits;
+    if (notes_.size() <= c) notes_.resize(c + 1);
+    if (!notes_[c]) notes_[c] = std::make_unique<std::uint32_t[]>(2 * kChunkSize);   // zeroed
+    notes_[c][(i & kChunkMask) * 2 + level] = value;
+  }
+
  private:
   static constexpr unsigned kChunkBits = 12;
   static constexpr std::size_t kChunkSize = std::size_t{1} << kChunkBits;
@@ -107,6 +135,9 @@ class FileTokens {
   std::size_t size_ = 0;
   std::vector<double> numbers_;
   std::vector<std::uint32_t> line_starts_;   // by line: offset of its first byte (lines with tokens only)
+  std::vector<std::unique_ptr<std::uint32_t[]>> notes_;
+  std::size_t released_ = 0;           // chunks freed, from the first
+  std::size_t keep_from_ = SIZE_MAX;   // the lowest index a macro body starts at
 };
 
 // Skips white space and comments from `at`, then reads one token. Throws ParseError for an unterminated

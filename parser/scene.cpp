@@ -24,7 +24,9 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
 
   try {
     while (true) {
+      between_statements_ = true;
       Token t = next();
+      between_statements_ = false;
       if (t.kind == TokenKind::end_of_input) break;
       parse_statement(t);
     }
@@ -392,7 +394,7 @@ const Normal* first_untyped_normal(const Object& o) {
 }
 }  // namespace
 
-void Interpreter::place_object(Object object, const SourceLoc& at) {
+void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
   remove_unnecessary_bounds(object);
   settle_deferred_texture_transforms(object);

@@ -57,39 +57,46 @@ std::shared_ptr<ArrayValue> ArrayValue::deep_copy() const {
 }
 
 SymbolTable::SymbolTable()
-    : names_(1), hashes_(1, 0), ids_(1024, 0), reserved_(1, 0), bindings_(1), scopes_(1), deprecations_(1) {}
+    : names_(1), hashes_(1, 0), ids_(1024), reserved_(1, 0), bindings_(1), scopes_(1), deprecations_(1) {}
 
 std::size_t SymbolTable::slot_of(std::string_view name, std::uint64_t h) const {
   const std::size_t mask = ids_.size() - 1;
+  const std::uint32_t tag = tag_of(h);
   for (std::size_t i = static_cast<std::size_t>(h ^ (h >> 29)) & mask;; i = (i + 1) & mask) {
-    const NameId id = ids_[i];
-    if (id == 0 || (hashes_[id] == h && names_[id] == name)) return i;
+    const Slot& slot = ids_[i];
+    if (slot.id == 0 || (slot.tag == tag && names_[slot.id] == name)) return i;
   }
 }
 
 SymbolTable::NameId SymbolTable::intern(std::string_view name) {
   const std::uint64_t h = hash(name);
   std::size_t slot = slot_of(name, h);
-  if (ids_[slot] != 0) return ids_[slot];
+  if (ids_[slot].id != 0) return ids_[slot].id;
   const auto id = static_cast<NameId>(names_.size());
   names_.emplace_back(name);
   hashes_.push_back(h);
   reserved_.push_back(is_reserved_word(name) ? 1 : 0);
   bindings_.emplace_back();
   if (2 * names_.size() > ids_.size()) {   // at most half full: probes stay short
-    ids_.assign(ids_.size() * 2, 0);
-    for (NameId k = 1; k < id; ++k) ids_[slot_of(names_[k], hashes_[k])] = k;
+    ids_.assign(ids_.size() * 2, Slot{});
+    // The names are distinct: each goes to the first empty slot of its probe, no text compared.
+    const std::size_t mask = ids_.size() - 1;
+    for (NameId k = 1; k < id; ++k) {
+      std::size_t i = static_cast<std::size_t>(hashes_[k] ^ (hashes_[k] >> 29)) & mask;
+      while (ids_[i].id != 0) i = (i + 1) & mask;
+      ids_[i] = Slot{k, tag_of(hashes_[k])};
+    }
     slot = slot_of(name, h);
   }
-  ids_[slot] = id;
+  ids_[slot] = Slot{id, tag_of(h)};
   return id;
 }
 
-SymbolTable::NameId SymbolTable::id_of(std::string_view name) const { return ids_[slot_of(name, hash(name))]; }
+SymbolTable::NameId SymbolTable::id_of(std::string_view name) const { return ids_[slot_of(name, hash(name))].id; }
 
 void SymbolTable::pop_scope() {
-  const std::size_t level = scopes_.size() - 1;
-  for (const NameId id : scopes_.back()) {
+  const std::size_t level = depth_ - 1;
+  for (const NameId id : scopes_[level]) {
     auto& stack = bindings_[id];
     // #undef may have removed the entry already (a name is listed again when it is bound again).
     if (stack.empty() || stack.back()->level != level) continue;
@@ -98,8 +105,9 @@ void SymbolTable::pop_scope() {
     e->value = Numeric{};   // release what it held now, not when the entry is reused
     free_.push_back(e);
   }
-  scopes_.pop_back();
-  deprecations_.pop_back();
+  scopes_[level].clear();
+  deprecations_[level].clear();
+  --depth_;
 }
 
 void SymbolTable::add_entry(NameId id, std::size_t level, Value value) {
@@ -169,6 +177,20 @@ void SymbolTable::assign_at(NameId id, std::size_t level, Value value) {
         return;
       }
   add_entry(id, level, std::move(value));
+}
+
+void SymbolTable::assign_numeric_at(NameId id, std::size_t level, const Numeric& n) {
+  if (level < depth() && id < bindings_.size())
+    for (Entry* e : bindings_[id])
+      if (e->level == level) {
+        // assign_at's target: through the alias, or the entry itself where the alias leads nowhere.
+        Value* target = resolve_alias(&e->value);
+        if (!target) target = &e->value;
+        if (auto* old = std::get_if<Numeric>(target)) *old = n;
+        else *target = n;
+        return;
+      }
+  assign_at(id, level, Value(n));
 }
 
 void SymbolTable::bind(NameId id, Value value) {

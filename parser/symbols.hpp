@@ -25,9 +25,16 @@ class SymbolTable {
   bool is_reserved(NameId id) const { return reserved_[id] != 0; }
 
   SymbolTable();
-  void push_scope() { scopes_.emplace_back(); deprecations_.emplace_back(); }
+  // The tables of levels left are kept (emptied) for the next push: a macro call must not allocate its table.
+  void push_scope() {
+    if (depth_ == scopes_.size()) {
+      scopes_.emplace_back();
+      deprecations_.emplace_back();
+    }
+    ++depth_;
+  }
   void pop_scope();
-  std::size_t depth() const { return scopes_.size(); }
+  std::size_t depth() const { return depth_; }
 
   // The value visible under `name`, following macro aliases; nullptr if undeclared. Takes the token's text as it
   // is: no string is made for a lookup.
@@ -54,6 +61,8 @@ class SymbolTable {
   // M's body ends the value before M's #end): overwrite the name's entry in table `level` (through an alias),
   // else create it there. A level that no longer exists falls back to local().
   void assign_at(NameId id, std::size_t level, Value value);
+  // assign_at() of a number: where the entry it assigns holds a number, that number is overwritten in place.
+  void assign_numeric_at(NameId id, std::size_t level, const Numeric& n);
   // Binds a name in the innermost table without following aliases (macro parameters, #for variables).
   void bind(NameId id, Value value);
   void bind(const std::string& name, Value value) { bind(intern(name), std::move(value)); }
@@ -92,13 +101,22 @@ class SymbolTable {
   std::size_t slot_of(std::string_view name, std::uint64_t h) const;
   std::vector<std::string> names_;       // by id
   std::vector<std::uint64_t> hashes_;    // by id
-  std::vector<NameId> ids_;              // open addressing on the hash, linear probing; 0 = empty; a power of 2
+  // Open addressing on the hash, linear probing, a power of 2 in size; id 0 = empty. Each slot keeps the upper half
+  // of its name's hash, so that a probe compares text only where the hashes agree: the first reading of a scene
+  // of 100,000 names missed the cache on hashes_ and names_ at every probe (a fifth of its parse).
+  struct Slot {
+    NameId id = 0;
+    std::uint32_t tag = 0;
+  };
+  static std::uint32_t tag_of(std::uint64_t h) { return static_cast<std::uint32_t>(h >> 32); }
+  std::vector<Slot> ids_;
   std::vector<std::uint8_t> reserved_;   // by id
   // Shallow binding: for each name, the entries of the levels that hold it, innermost last (levels increase), so
   // the visible one is the last. Entries live in a deque (stable addresses: callers keep `const Value*` while
   // other names are bound) and are recycled through free_.
   std::vector<std::vector<Entry*>> bindings_;   // by id
   std::vector<std::vector<NameId>> scopes_;     // by level: the names bound there, to unbind at pop_scope
+  std::size_t depth_ = 1;                       // levels in use (scopes_ may hold more, empty, for reuse)
   std::deque<Entry> entries_;
   std::vector<Entry*> free_;
   std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // by level

@@ -179,6 +179,7 @@ Token Interpreter::next() {
     // back after next() are, and are not processed twice (no second deprecation warning).
     // Constructed from its source, not default-constructed and assigned: zero-filling a Token first was a
     // quarter of this function's time.
+    if (pushed_back_.empty() && quick_directive()) continue;
     Token t = pushed_back_.empty() ? raw() : pop_pushed_back();
     if (t.processed) return t;
     // A directive or macro call reads its operands with next(), which may run another directive or call before
@@ -200,6 +201,59 @@ Token Interpreter::next() {
     t.processed = true;
     return t;
   }
+}
+
+bool Interpreter::quick_directive() {
+  if (options_.max_tokens || !nesting_room()) return false;
+  Frame& f = frames_.back();
+  const LexedToken& hash = lexed(*f.tokens, f.index);
+  if (!plain_symbol(&hash, '#')) return false;
+  FileTokens& tokens = *f.tokens;
+  const std::size_t word_index = f.index + 1;
+  const LexedToken& word = lexed(tokens, word_index);
+  if (word.kind() != TokenKind::identifier) return false;
+  const bool declare = word.payload == word_declare_, local = word.payload == word_local_;
+  if (!declare && !local && word.payload != word_end_) return false;
+  // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
+  // cancel check; where it is due, raw() makes it.
+  const std::uint32_t counted = declare || local ? 1 : 2;
+  if (options_.cancel) {
+    if (tokens_until_cancel_check_ < counted) return false;
+    tokens_until_cancel_check_ -= counted;
+  }
+  // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
+  if (between_statements_ && nesting_ == 0 && frames_.size() == 1 && controls_.empty()) tokens.release_before(f.index);
+  f.index = word_index + 1;
+  // next()'s NestingGuard, which nesting_room() has just let in.
+  ++nesting_;
+  struct Leave {
+    int& nesting;
+    ~Leave() { --nesting; }
+  } leave{nesting_};
+  if (declare || local) {
+    directive_declare(local);
+    return true;
+  }
+  // #end: the round of a #while loop and the end of an #if without a Token; the rest as directive_end does it.
+  if (!controls_.empty()) {
+    const Control& c = controls_.back();
+    if (c.kind == Control::Kind::if_branch) {
+      controls_.pop_back();
+      return true;
+    }
+    if (c.kind == Control::Kind::while_loop && frames_.size() - 1 == c.frame) {
+      const Control loop = c;
+      seek(loop.frame, loop.resume);
+      if (condition_in_parens()) return true;
+      controls_.pop_back();
+      Token opener = make_token(tokens, tokens[word_index]);
+      opener.text = "while";
+      skip_branch(opener, false);
+      return true;
+    }
+  }
+  directive_end(make_token(tokens, tokens[word_index]));
+  return true;
 }
 
 void Interpreter::process_identifier(Token& t, const Value* v) {
@@ -255,6 +309,24 @@ const Token& Interpreter::peek() {
 }
 
 Interpreter::Ahead Interpreter::raw_ahead_full() {
+  // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
+  // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
+  // follows in the caller when that is plain.
+  while (pushed_back_.empty() && !options_.max_tokens && !controls_.empty() &&
+         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == frames_.size() - 1) {
+    Frame& f = frames_.back();
+    if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
+    const LexedToken& word = lexed(*f.tokens, f.index + 1);
+    if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
+    if (options_.cancel) {   // raw() reads the '#' and the word; where the cancel check is due, it makes it
+      if (tokens_until_cancel_check_ < 2) break;
+      tokens_until_cancel_check_ -= 2;
+    }
+    return_from_macro();   // directive_end of a macro call in its own frame
+    Frame& caller = frames_.back();
+    const LexedToken& k = lexed(*caller.tokens, caller.index);
+    if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
+  }
   const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
   return {t.kind, t.text};
 }
@@ -454,13 +526,34 @@ void Interpreter::invoke_macro(const Token& name) {
   if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
     fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
                       " levels: runaway recursion in '" + std::string(name.text) + "'?)");
-  // Checked here rather than with expect(): its message would be built on every call.
-  if (const Token open = next(); !open.is("("))
+  // Checked here rather than with expect(): its message would be built on every call. A plain '(' is taken
+  // where it stands.
+  if (plain_symbol(plain_ahead(), '(')) consume_plain();
+  else if (const Token open = next(); !open.is("("))
     fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
-  std::vector<std::pair<SymbolTable::NameId, Value>> bound;
-  bound.reserve(macro.parameters.size());
+  // The values go on a stack kept by the interpreter (a call allocates nothing for them); a call in an argument
+  // pushes its own above them and takes them off again.
+  const std::size_t base = macro_arguments_.size();
+  struct Unwind {
+    std::vector<std::pair<SymbolTable::NameId, Value>>& stack;
+    std::size_t base;
+    ~Unwind() { stack.resize(base); }
+  } unwind{macro_arguments_, base};
   for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
     if (i > 0) accept(",");
+    // The common argument, a declared variable's name alone, read from the kept tokens: what the lines below
+    // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
+    if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
+                                             !symbols_.is_reserved(k->payload)) {
+      Frame& f = frames_.back();
+      const LexedToken& after = lexed(*f.tokens, f.index + 1);
+      if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
+        if (const auto level = symbols_.level_of(k->payload)) {
+          ++f.index;
+          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, std::string(text_of(*k)), k->payload});
+          continue;
+        }
+    }
     Token first = next();
     // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
     // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
@@ -469,21 +562,23 @@ void Interpreter::invoke_macro(const Token& name) {
       const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
       auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
       if (level && alone) {
-        bound.emplace_back(macro.parameter_ids[i],
-                           Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
+        macro_arguments_.emplace_back(
+            macro.parameter_ids[i],
+            Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
         continue;
       }
     }
     auto value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
-    bound.emplace_back(macro.parameter_ids[i], std::move(*value));
+    macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
   }
-  Token close = next();
-  if (!close.is(")"))
+  if (plain_symbol(plain_ahead(), ')')) consume_plain();
+  else if (Token close = next(); !close.is(")"))
     fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
                              std::to_string(macro.parameters.size()) + " parameters)");
   symbols_.push_scope();
-  for (auto& [param, value] : bound) symbols_.bind(param, std::move(value));
+  for (std::size_t i = base; i < macro_arguments_.size(); ++i)
+    symbols_.bind(macro_arguments_[i].first, std::move(macro_arguments_[i].second));
   frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
   Control c;
   c.kind = Control::Kind::macro_call;
