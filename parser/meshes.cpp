@@ -31,6 +31,7 @@
 #include <unordered_map>
 
 #include "parser/interpreter.hpp"
+#include "parser/mesh_scan.hpp"
 
 namespace povtrace::sdl {
 
@@ -315,12 +316,6 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
     if (!smooth) continue;
     accept(",");
     n[k] = parse_vector();
-    if (is_zero_vector(n[k])) {
-      n[k] = {1, 0, 0};
-      if (!mesh.zero_normal_warned) warn(keyword.loc, "a normal vector in a mesh cannot be zero: changed to <1,0,0>");
-      mesh.zero_normal_warned = true;
-    }
-    n[k] = normalize(n[k]);
   }
   std::optional<std::array<double, 6>> uv;
   if (accept("uv_vectors")) {
@@ -332,6 +327,22 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   }
   const std::array<std::int32_t, 3> tex = parse_mesh_triangle_textures(mesh);
   expect("}", smooth ? " closing 'smooth_triangle'" : " closing 'triangle'");
+  add_mesh_triangle(keyword.loc, smooth, p, n, tex, uv, mesh);
+}
+
+void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p,
+                                    std::array<Vec3, 3> n, const std::array<std::int32_t, 3>& tex,
+                                    const std::optional<std::array<double, 6>>& uv, MeshBuilder& mesh) {
+  if (smooth) {
+    for (Vec3& normal : n) {
+      if (is_zero_vector(normal)) {
+        normal = {1, 0, 0};
+        if (!mesh.zero_normal_warned) warn(keyword, "a normal vector in a mesh cannot be zero: changed to <1,0,0>");
+        mesh.zero_normal_warned = true;
+      }
+      normal = normalize(normal);
+    }
+  }
   if (length(cross(p[0] - p[1], p[2] - p[1])) == 0.0) {
     ++mesh.degenerate;
     return;
@@ -339,6 +350,79 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   const Vec3 d1 = n[0] - n[1], d2 = n[0] - n[2];
   const bool distinct_normals = smooth && (dot(d1, d1) > kEpsilon || dot(d2, d2) > kEpsilon);
   mesh.add_triangle(p, distinct_normals ? &n : nullptr, tex, uv);
+}
+
+std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
+  if (!pushed_back_.empty() || frames_.empty()) return std::nullopt;
+  const Frame& f = frames_.back();
+  // A macro body is always replayed from kept tokens; a #while/#for of this frame goes back to earlier tokens of
+  // the file, and what the scanner reads is not kept for it to replay. (An include file is read anew, with new
+  // tokens, each time it is included.)
+  if (f.kind == Frame::Kind::macro) return std::nullopt;
+  for (const Control& c : controls_)
+    if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == frames_.size() - 1)
+      return std::nullopt;
+  const FileTokens& tokens = *f.tokens;
+  if (f.index == tokens.size()) return LiteralScanStart{tokens.lexed_to, 0};
+  if (f.index + 1 == tokens.size()) {   // one token lexed ahead (accept() looked at it): the scan starts there
+    const LexedToken& k = tokens[f.index];
+    if (k.kind() == TokenKind::end_of_input) return std::nullopt;
+    return LiteralScanStart{LexPosition{k.offset, k.line, tokens.column(k)}, 1};
+  }
+  return std::nullopt;
+}
+
+void Interpreter::literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {
+  Frame& f = frames_.back();
+  f.index += start.ahead;   // the token lexed ahead was the scan's first
+  f.tokens->lexed_to = to;
+  tokens_read_ += tokens;
+}
+
+bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at) {
+  constexpr std::size_t kCancelCheckItems = 4096;
+  if (options_.cancel && items % kCancelCheckItems == 0 && options_.cancel->load(std::memory_order_relaxed))
+    fail(SourceLoc{frames_.back().file->name, at.line, at.column}, "interrupted while parsing");
+  // Past the token limit the ordinary reading takes over and reports it where it is reached.
+  return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+}
+
+// As many literal `triangle { <…>, <…>, <…> }` / `smooth_triangle { <…>, <…>, … }` items as follow (no
+// uv_vectors, no textures: those items are read the ordinary way).
+void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
+  const auto start = literal_scan_start();
+  if (!start) return;
+  const SourceFile& file = *frames_.back().file;
+  LiteralScanner s(file, start->at);
+  std::size_t items = 0;
+  const std::optional<std::array<double, 6>> no_uv;
+  const std::array<std::int32_t, 3> no_texture{-1, -1, -1};
+  while (true) {
+    s.ahead();   // the item starts after the blanks: its keyword's location for warnings
+    const LexPosition item = s.position();
+    const std::uint64_t before = s.tokens();
+    const bool smooth = s.word("smooth_triangle");
+    bool ok = (smooth || s.word("triangle")) && s.symbol('{');
+    std::array<Vec3, 3> p, n;
+    std::array<double, 3> v;
+    for (int k = 0; ok && k < 3; ++k) {
+      if (k > 0) s.optional_comma();
+      ok = s.vector(v);
+      p[k] = {v[0], v[1], v[2]};
+      if (!ok || !smooth) continue;
+      s.optional_comma();
+      ok = s.vector(v);
+      n[k] = {v[0], v[1], v[2]};
+    }
+    ok = ok && s.symbol('}') && literal_scan_allows(s.tokens(), items, item);
+    if (!ok) {
+      s.reset(item, before);
+      break;
+    }
+    add_mesh_triangle(SourceLoc{file.name, item.line, item.column}, smooth, p, n, no_texture, no_uv, mesh);
+    ++items;
+  }
+  if (items > 0) literal_scan_commit(*start, s.position(), s.tokens());
 }
 
 std::optional<Vec3> Interpreter::parse_inside_vector() {
@@ -356,6 +440,7 @@ Object Interpreter::parse_mesh(const Token& keyword) {
   MeshBuilder mesh;
   std::optional<Vec3> inside_vector;
   while (true) {
+    scan_mesh_triangles(mesh);
     const Token t = next();
     if (t.is("triangle")) parse_mesh_triangle(t, false, mesh);
     else if (t.is("smooth_triangle")) parse_mesh_triangle(t, true, mesh);
