@@ -366,8 +366,9 @@ class Interpreter {
   };
   std::optional<LiteralScanStart> literal_scan_start();
   void literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens);
-  // The scanner's per-item checks: the token limit, and Ctrl-C every 4096 items.
-  bool literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at);
+  // The scanner's per-item checks: the token limit, and Ctrl-C every 4096 items; then too, the text read since
+  // `scan_begin` is released (SourceFile::release): nothing will read it again.
+  bool literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at, std::size_t scan_begin);
   void scan_mesh_triangles(MeshBuilder& mesh);
   // Up to `max_items` items `<n1, …, nN> [,]` of a mesh2 section, each handed to take(values), which may refuse
   // it (false: it is then read the ordinary way, which reports what is wrong with it); returns how many it took.

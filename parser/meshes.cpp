@@ -417,10 +417,14 @@ void Interpreter::literal_scan_commit(const LiteralScanStart& start, const LexPo
   tokens_read_ += tokens;
 }
 
-bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at) {
-  constexpr std::size_t kCancelCheckItems = 4096;
-  if (options_.cancel && items % kCancelCheckItems == 0 && options_.cancel->load(std::memory_order_relaxed))
+bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at,
+                                      std::size_t scan_begin) {
+  constexpr std::size_t kCheckItems = 4096;
+  if (items % kCheckItems != 0) return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+  if (options_.cancel && options_.cancel->load(std::memory_order_relaxed))
     fail(SourceLoc{frames_.back().file->name, at.line, at.column}, "interrupted while parsing");
+  // The frame owns no const file: files_ holds it. The scan never goes back before `at`, and no loop replays it.
+  if (items > 0) const_cast<SourceFile&>(*frames_.back().file).release(scan_begin, at.offset);
   // Past the token limit the ordinary reading takes over and reports it where it is reached.
   return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
 }
@@ -452,7 +456,7 @@ void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
       ok = s.vector(v);
       n[k] = {v[0], v[1], v[2]};
     }
-    ok = ok && s.symbol('}') && literal_scan_allows(s.tokens(), items, item);
+    ok = ok && s.symbol('}') && literal_scan_allows(s.tokens(), items, item, start->at.offset);
     if (!ok) {
       s.reset(item, before);
       break;

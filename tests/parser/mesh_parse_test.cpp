@@ -238,5 +238,32 @@ TEST(MeshParse, LiteralItemsCountAgainstTheTokenLimit) {
   EXPECT_EQ(mesh_of(parse_scene_text(scene, "test.pov", o)).data->triangle_count(), 100u);
 }
 
+TEST(MeshParse, ReleasedMeshTextStillCountsItsLines) {
+  // 20 000 literal triangles (about 1.3 MB of text, released as it is read), then an error two lines later: its
+  // line, column and quoted text are the ones of the text as written.
+  std::string scene = "#version 3.7;\nmesh {\n";
+  for (int i = 0; i < 20000; ++i)
+    scene += "triangle { <" + std::to_string(i) + ", 0, 0>, <1, 0, 0>, <0, 1, " + std::to_string(i + 1) + "> }\n";
+  scene += "}\n\nsphere { 0, 1 pigment { rgb <1, 0, 0> } bogus }\n";
+  const ParseError e = parse_error(scene);
+  EXPECT_EQ(e.location().line, 20005);
+  EXPECT_EQ(e.location().column, 41);
+  EXPECT_NE(std::string(e.what()).find("sphere { 0, 1 pigment { rgb <1, 0, 0> } bogus }"), std::string::npos)
+      << e.what();
+}
+
+TEST(SourceFile, LinesAreCountedAcrossReleasedRanges) {
+  SourceFile f;
+  for (int i = 1; i <= 100000; ++i) f.text += "line " + std::to_string(i) + "\n";
+  f.release(1000, 300000);
+  f.release(200000, 600000);   // overlapping the first: only the rest is released
+  EXPECT_EQ(f.line_text(1), "line 1");
+  EXPECT_EQ(f.line_text(99999), "line 99999");
+  EXPECT_EQ(f.line_text(80000), "line 80000");
+  EXPECT_EQ(f.line_text(100), "line 100");
+  EXPECT_EQ(f.line_text(100001), "");
+  EXPECT_EQ(f.text[500000], '\0');   // dropped pages read back as zeros
+}
+
 }  // namespace
 }  // namespace povtrace::test
