@@ -35,7 +35,8 @@ std::size_t Interpreter::scan_mesh2_items(std::size_t max_items, Take&& take) {
     if (ok) s.optional_comma();
     // Followed by the next item or the section's end: where anything else follows (a face's texture index, an
     // expression) the ordinary reading takes the item.
-    ok = ok && (s.ahead() == '<' || s.ahead() == '}') && literal_scan_allows(s.tokens(), items, item, start->at.offset) && take(v);
+    ok = ok && (s.ahead() == '<' || s.ahead() == '}') &&
+         literal_scan_allows(s.tokens(), items, item, start->at.offset) && take(v);
     if (!ok) {
       s.reset(item, before);
       break;
