@@ -398,6 +398,27 @@ class Interpreter {
   Object parse_polygon(const Token& keyword);
   Object parse_mesh(const Token& keyword);
   void parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh);
+  // A mesh triangle as read (either way): normals checked and normalised, degenerate ones counted, then added.
+  void add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p, std::array<Vec3, 3> n,
+                         const std::array<std::int32_t, 3>& tex, const std::optional<std::array<double, 6>>& uv,
+                         MeshBuilder& mesh);
+  // Literal mesh items read straight from the source text (mesh_scan.hpp), where the stream's next token is the
+  // first of its file not yet lexed (or the one just lexed ahead, `ahead` = 1) and no loop can replay the file
+  // there; literal_scan_commit() then moves the stream past what the scanner read.
+  struct LiteralScanStart {
+    LexPosition at;
+    std::size_t ahead = 0;
+  };
+  std::optional<LiteralScanStart> literal_scan_start();
+  void literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens);
+  // The scanner's per-item checks: the token limit, and Ctrl-C every 4096 items; then too, the text read since
+  // `scan_begin` is released (SourceFile::release): nothing will read it again.
+  bool literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at, std::size_t scan_begin);
+  void scan_mesh_triangles(MeshBuilder& mesh);
+  // Up to `max_items` items `<n1, …, nN> [,]` of a mesh2 section, each handed to take(values), which may refuse
+  // it (false: it is then read the ordinary way, which reports what is wrong with it); returns how many it took.
+  template <std::size_t N, class Take>
+  std::size_t scan_mesh2_items(std::size_t max_items, Take&& take);
   std::array<std::int32_t, 3> parse_mesh_triangle_textures(MeshBuilder& mesh);
   std::optional<Vec3> parse_inside_vector();
   Object parse_mesh2(const Token& keyword);

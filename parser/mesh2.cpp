@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "parser/interpreter.hpp"
+#include "parser/mesh_scan.hpp"
 
 namespace povtrace::sdl {
 
@@ -17,6 +18,34 @@ std::string plural(std::size_t n, const std::string& what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 }  // namespace
+
+template <std::size_t N, class Take>
+std::size_t Interpreter::scan_mesh2_items(std::size_t max_items, Take&& take) {
+  if (max_items == 0) return 0;
+  const auto start = literal_scan_start();
+  if (!start) return 0;
+  LiteralScanner s(*frames_.back().file, start->at);
+  std::size_t items = 0;
+  std::array<double, N> v;
+  while (items < max_items) {
+    s.ahead();
+    const LexPosition item = s.position();
+    const std::uint64_t before = s.tokens();
+    bool ok = s.vector(v);
+    if (ok) s.optional_comma();
+    // Followed by the next item or the section's end: where anything else follows (a face's texture index, an
+    // expression) the ordinary reading takes the item.
+    ok = ok && (s.ahead() == '<' || s.ahead() == '}') &&
+         literal_scan_allows(s.tokens(), items, item, start->at.offset) && take(v);
+    if (!ok) {
+      s.reset(item, before);
+      break;
+    }
+    ++items;
+  }
+  if (items > 0) literal_scan_commit(*start, s.position(), s.tokens());
+  return items;
+}
 
 // `{ n,` of a mesh2 section: the declared count, truncated as POV-Ray's (int) cast does.
 std::size_t Interpreter::parse_mesh2_count(const Token& keyword, bool zero_allowed) {
@@ -53,10 +82,7 @@ std::vector<float> Interpreter::parse_mesh2_vectors(const Token& keyword, bool n
   std::vector<float> out;
   out.reserve(3 * std::min(n, kMaxReserve));
   bool zero_warned = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    check_mesh2_item(keyword, i, n, "vector");
-    Vec3 v = parse_vector();
-    accept(",");
+  auto add = [&](Vec3 v) {
     if (normals) {
       if (std::fabs(v.x) < kEpsilon && std::fabs(v.y) < kEpsilon && std::fabs(v.z) < kEpsilon) {
         v = {1, 0, 0};
@@ -68,6 +94,16 @@ std::vector<float> Interpreter::parse_mesh2_vectors(const Token& keyword, bool n
     out.push_back(static_cast<float>(v.x));
     out.push_back(static_cast<float>(v.y));
     out.push_back(static_cast<float>(v.z));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    i += scan_mesh2_items<3>(n - i, [&](const std::array<double, 3>& v) {
+      add({v[0], v[1], v[2]});
+      return true;
+    });
+    if (i == n) break;
+    check_mesh2_item(keyword, i, n, "vector");
+    add(parse_vector());
+    accept(",");
   }
   expect_mesh2_section_end(keyword, n, "vector");
   return out;
@@ -90,6 +126,19 @@ std::vector<double> Interpreter::parse_mesh2_uv_vectors(const Token& keyword) {
   return uvs;
 }
 
+namespace {
+// mesh2_index_triple() for a triple the scanner read: nothing where the ordinary reading reports an error.
+std::optional<std::array<std::uint32_t, 3>> literal_index_triple(const std::array<double, 3>& v, std::size_t limit) {
+  std::array<std::uint32_t, 3> out{};
+  for (int k = 0; k < 3; ++k) {
+    const double i = std::trunc(v[k]);
+    if (!(i >= 0 && i < static_cast<double>(limit))) return std::nullopt;
+    out[k] = static_cast<std::uint32_t>(i);
+  }
+  return out;
+}
+}  // namespace
+
 // One index triple <a, b, c>, truncated to integers and checked against `limit` at its own position.
 std::array<std::uint32_t, 3> Interpreter::mesh2_index_triple(const Token& at, const Numeric& value,
                                                              std::size_t limit, const std::string& what) {
@@ -111,6 +160,12 @@ std::vector<std::uint32_t> Interpreter::parse_mesh2_indices(const Token& keyword
   std::vector<std::uint32_t> out;
   out.reserve(3 * std::min(count, kMaxReserve));
   for (std::size_t i = 0; i < count; ++i) {
+    i += scan_mesh2_items<3>(count - i, [&](const std::array<double, 3>& v) {
+      const auto triple = literal_index_triple(v, limit);
+      if (triple) out.insert(out.end(), triple->begin(), triple->end());
+      return triple.has_value();
+    });
+    if (i == count) break;
     check_mesh2_item(keyword, i, count, "index triple");
     const Token at = peek();
     const auto triple = mesh2_index_triple(at, parse_additive(), limit, what);
@@ -130,7 +185,17 @@ void Interpreter::parse_mesh2_faces(const Token& keyword, std::size_t vertex_cou
   std::optional<Numeric> pending;   // the next face, read while looking for texture indices
   Token pending_at;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!pending) check_mesh2_item(keyword, i, n, "face");
+    if (!pending) {
+      i += scan_mesh2_items<3>(n - i, [&](const std::array<double, 3>& v) {
+        const auto triple = literal_index_triple(v, vertex_count);
+        if (!triple) return false;
+        data.faces.insert(data.faces.end(), triple->begin(), triple->end());
+        if (!data.face_textures.empty()) data.face_textures.insert(data.face_textures.end(), 3, -1);
+        return true;
+      });
+      if (i == n) break;
+      check_mesh2_item(keyword, i, n, "face");
+    }
     const Token at = pending ? pending_at : peek();
     const Numeric face = pending ? *pending : parse_additive();
     pending.reset();

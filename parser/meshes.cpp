@@ -26,11 +26,12 @@
 //   indices than faces leave the remaining faces flat. Degenerate faces (zero area of the single-precision
 //   vertices) are never hit in POV-Ray; povtrace drops them with a warning.
 // - uv_vectors (per mesh triangle, or mesh2's list with uv_indices) are kept in double precision for uv_mapping.
+#include <algorithm>
 #include <bit>
 #include <cmath>
-#include <unordered_map>
 
 #include "parser/interpreter.hpp"
+#include "parser/mesh_scan.hpp"
 
 namespace povtrace::sdl {
 
@@ -59,23 +60,61 @@ struct FloatTripleHash {
 FloatTriple single_precision(Vec3 p) {
   return {{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)}};
 }
+
+// The distinct triples of one x y z array, found by open addressing in a table of 4-byte slots (an entry's
+// index + 1; 0 = free) kept at most half full: 8 to 16 bytes per distinct triple, where an unordered_map took
+// about 50 (25 MB for the 500 000 vertices of a million-triangle mesh). The array itself holds the keys.
+class TripleIndex {
+ public:
+  // The index of `key` in `array`, appended to it when new.
+  std::uint32_t find_or_add(std::vector<float>& array, const FloatTriple& key) {
+    const std::size_t count = array.size() / 3;
+    if (2 * (count + 1) > slots_.size()) grow(array);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t s = slot_of(key, mask);; s = (s + 1) & mask) {
+      const std::uint32_t entry = slots_[s];
+      if (entry == 0) {
+        slots_[s] = static_cast<std::uint32_t>(count + 1);
+        array.insert(array.end(), key.v.begin(), key.v.end());
+        return static_cast<std::uint32_t>(count);
+      }
+      const float* v = &array[3 * std::size_t(entry - 1)];
+      if (FloatTriple{{v[0], v[1], v[2]}} == key) return entry - 1;
+    }
+  }
+
+ private:
+  static std::size_t slot_of(const FloatTriple& key, std::size_t mask) {
+    std::uint64_t h = FloatTripleHash{}(key);   // then a full avalanche, since only the low bits index
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    return static_cast<std::size_t>(h) & mask;
+  }
+  void grow(const std::vector<float>& array) {
+    slots_.assign(std::max<std::size_t>(1024, 2 * slots_.size()), 0);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = 0; i < array.size() / 3; ++i) {
+      const FloatTriple key{{array[3 * i], array[3 * i + 1], array[3 * i + 2]}};
+      std::size_t s = slot_of(key, mask);
+      while (slots_[s] != 0) s = (s + 1) & mask;
+      slots_[s] = static_cast<std::uint32_t>(i + 1);
+    }
+  }
+  std::vector<std::uint32_t> slots_;
+};
 }  // namespace
 
-// mesh { } under construction: vertices and normals merged through hash maps, textures by identity.
+// mesh { } under construction: vertices and normals merged through hash tables, textures by identity.
 struct Interpreter::MeshBuilder {
   MeshData data;
   std::vector<std::shared_ptr<const Texture>> textures;
-  std::unordered_map<FloatTriple, std::uint32_t, FloatTripleHash> vertex_index, normal_index;
+  TripleIndex vertex_index, normal_index;
   std::size_t degenerate = 0;
   bool zero_normal_warned = false;
 
-  std::uint32_t add(std::vector<float>& array, std::unordered_map<FloatTriple, std::uint32_t, FloatTripleHash>& index,
-                    Vec3 p) {
-    const FloatTriple key = single_precision(p);
-    const auto next = static_cast<std::uint32_t>(array.size() / 3);
-    const auto [it, inserted] = index.emplace(key, next);
-    if (inserted) array.insert(array.end(), key.v.begin(), key.v.end());
-    return it->second;
+  std::uint32_t add(std::vector<float>& array, TripleIndex& index, Vec3 p) {
+    return index.find_or_add(array, single_precision(p));
   }
   std::int32_t texture(const std::shared_ptr<const Texture>& t) {
     if (!t) return -1;
@@ -315,12 +354,6 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
     if (!smooth) continue;
     accept(",");
     n[k] = parse_vector();
-    if (is_zero_vector(n[k])) {
-      n[k] = {1, 0, 0};
-      if (!mesh.zero_normal_warned) warn(keyword.loc, "a normal vector in a mesh cannot be zero: changed to <1,0,0>");
-      mesh.zero_normal_warned = true;
-    }
-    n[k] = normalize(n[k]);
   }
   std::optional<std::array<double, 6>> uv;
   if (accept("uv_vectors")) {
@@ -332,6 +365,22 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   }
   const std::array<std::int32_t, 3> tex = parse_mesh_triangle_textures(mesh);
   expect("}", smooth ? " closing 'smooth_triangle'" : " closing 'triangle'");
+  add_mesh_triangle(keyword.loc, smooth, p, n, tex, uv, mesh);
+}
+
+void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p,
+                                    std::array<Vec3, 3> n, const std::array<std::int32_t, 3>& tex,
+                                    const std::optional<std::array<double, 6>>& uv, MeshBuilder& mesh) {
+  if (smooth) {
+    for (Vec3& normal : n) {
+      if (is_zero_vector(normal)) {
+        normal = {1, 0, 0};
+        if (!mesh.zero_normal_warned) warn(keyword, "a normal vector in a mesh cannot be zero: changed to <1,0,0>");
+        mesh.zero_normal_warned = true;
+      }
+      normal = normalize(normal);
+    }
+  }
   if (length(cross(p[0] - p[1], p[2] - p[1])) == 0.0) {
     ++mesh.degenerate;
     return;
@@ -339,6 +388,83 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   const Vec3 d1 = n[0] - n[1], d2 = n[0] - n[2];
   const bool distinct_normals = smooth && (dot(d1, d1) > kEpsilon || dot(d2, d2) > kEpsilon);
   mesh.add_triangle(p, distinct_normals ? &n : nullptr, tex, uv);
+}
+
+std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
+  if (!pushed_back_.empty() || frames_.empty()) return std::nullopt;
+  const Frame& f = frames_.back();
+  // A macro body is always replayed from kept tokens; a #while/#for of this frame goes back to earlier tokens of
+  // the file, and what the scanner reads is not kept for it to replay. (An include file is read anew, with new
+  // tokens, each time it is included.)
+  if (f.kind == Frame::Kind::macro) return std::nullopt;
+  for (const Control& c : controls_)
+    if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == frames_.size() - 1)
+      return std::nullopt;
+  const FileTokens& tokens = *f.tokens;
+  if (f.index == tokens.size()) return LiteralScanStart{tokens.lexed_to, 0};
+  if (f.index + 1 == tokens.size()) {   // one token lexed ahead (accept() looked at it): the scan starts there
+    const LexedToken& k = tokens[f.index];
+    if (k.kind() == TokenKind::end_of_input) return std::nullopt;
+    return LiteralScanStart{LexPosition{k.offset, k.line, tokens.column(k)}, 1};
+  }
+  return std::nullopt;
+}
+
+void Interpreter::literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {
+  Frame& f = frames_.back();
+  f.index += start.ahead;   // the token lexed ahead was the scan's first
+  f.tokens->lexed_to = to;
+  tokens_read_ += tokens;
+}
+
+bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at,
+                                      std::size_t scan_begin) {
+  constexpr std::size_t kCheckItems = 4096;
+  if (items % kCheckItems != 0) return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+  if (options_.cancel && options_.cancel->load(std::memory_order_relaxed))
+    fail(SourceLoc{frames_.back().file->name, at.line, at.column}, "interrupted while parsing");
+  // The frame owns no const file: files_ holds it. The scan never goes back before `at`, and no loop replays it.
+  if (items > 0) const_cast<SourceFile&>(*frames_.back().file).release(scan_begin, at.offset);
+  // Past the token limit the ordinary reading takes over and reports it where it is reached.
+  return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+}
+
+// As many literal `triangle { <…>, <…>, <…> }` / `smooth_triangle { <…>, <…>, … }` items as follow (no
+// uv_vectors, no textures: those items are read the ordinary way).
+void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
+  const auto start = literal_scan_start();
+  if (!start) return;
+  const SourceFile& file = *frames_.back().file;
+  LiteralScanner s(file, start->at);
+  std::size_t items = 0;
+  const std::optional<std::array<double, 6>> no_uv;
+  const std::array<std::int32_t, 3> no_texture{-1, -1, -1};
+  while (true) {
+    s.ahead();   // the item starts after the blanks: its keyword's location for warnings
+    const LexPosition item = s.position();
+    const std::uint64_t before = s.tokens();
+    const bool smooth = s.word("smooth_triangle");
+    bool ok = (smooth || s.word("triangle")) && s.symbol('{');
+    std::array<Vec3, 3> p, n;
+    std::array<double, 3> v;
+    for (int k = 0; ok && k < 3; ++k) {
+      if (k > 0) s.optional_comma();
+      ok = s.vector(v);
+      p[k] = {v[0], v[1], v[2]};
+      if (!ok || !smooth) continue;
+      s.optional_comma();
+      ok = s.vector(v);
+      n[k] = {v[0], v[1], v[2]};
+    }
+    ok = ok && s.symbol('}') && literal_scan_allows(s.tokens(), items, item, start->at.offset);
+    if (!ok) {
+      s.reset(item, before);
+      break;
+    }
+    add_mesh_triangle(SourceLoc{file.name, item.line, item.column}, smooth, p, n, no_texture, no_uv, mesh);
+    ++items;
+  }
+  if (items > 0) literal_scan_commit(*start, s.position(), s.tokens());
 }
 
 std::optional<Vec3> Interpreter::parse_inside_vector() {
@@ -356,6 +482,7 @@ Object Interpreter::parse_mesh(const Token& keyword) {
   MeshBuilder mesh;
   std::optional<Vec3> inside_vector;
   while (true) {
+    scan_mesh_triangles(mesh);
     const Token t = next();
     if (t.is("triangle")) parse_mesh_triangle(t, false, mesh);
     else if (t.is("smooth_triangle")) parse_mesh_triangle(t, true, mesh);

@@ -1,5 +1,10 @@
 #include "parser/source.hpp"
 
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -19,15 +24,46 @@ const std::string* FileName::intern(std::string_view name) {
 
 std::string_view SourceFile::line_text(int line) const {
   std::size_t begin = 0;
-  for (int current = 1; current < line; ++current) {
-    begin = text.find('\n', begin);
-    if (begin == std::string::npos) return {};
-    ++begin;
+  std::size_t next_released = 0;
+  for (int current = 1; current < line;) {
+    const std::size_t stop = next_released < released_.size() ? released_[next_released].begin : text.size();
+    const std::size_t newline = text.find('\n', begin);
+    if (newline != std::string::npos && newline < stop) {
+      begin = newline + 1;
+      ++current;
+      continue;
+    }
+    if (next_released == released_.size()) return {};
+    // A released range holds zeros: its line breaks are counted from the record instead.
+    const Released& r = released_[next_released++];
+    if (current + r.newlines >= line) return {};
+    current += r.newlines;
+    begin = r.end;
   }
   std::size_t end = text.find('\n', begin);
   if (end == std::string::npos) end = text.size();
   if (end > begin && text[end - 1] == '\r') --end;
   return std::string_view(text).substr(begin, end - begin);
+}
+
+void SourceFile::release(std::size_t begin, std::size_t end) {
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const auto base = reinterpret_cast<std::uintptr_t>(text.data());
+  const std::uintptr_t first = (base + begin + page - 1) / page * page, last = (base + end) / page * page;
+  std::uintptr_t from = first;
+  if (!released_.empty()) from = std::max(from, base + released_.back().end);   // what is not released yet
+  if (end > text.size() || last <= from) return;
+  const auto newlines = static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(from - base),
+                                                    text.begin() + static_cast<std::ptrdiff_t>(last - base), '\n'));
+  // The string's own pages (a large text is a mapping of its own, a smaller one lies inside the heap; whole
+  // pages inside the text hold nothing the allocator uses): dropped, they read back as zero-filled pages.
+  if (madvise(reinterpret_cast<void*>(from), last - from, MADV_DONTNEED) != 0) return;
+  if (!released_.empty() && released_.back().end == from - base) {   // one record for a mesh released in steps
+    released_.back().end = last - base;
+    released_.back().newlines += newlines;
+  } else {
+    released_.push_back(Released{from - base, last - base, newlines});
+  }
 }
 
 std::string format_diagnostic(const SourceLoc& loc, std::string_view severity, std::string_view message,
