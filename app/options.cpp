@@ -714,7 +714,7 @@ std::string usage_text() {
          "                      large scenes), artefacts included\n"
          "  --no-specialise[=NAME,...]  the general paths instead of those chosen for what the scene holds\n"
          "                      (same image, slower; for measuring what each gains); NAME: all (default),\n"
-         "                      nearest-shadow-first, no-shadow-rays\n"
+         "                      nearest-shadow-first, no-shadow-rays, embree-meshes\n"
          "  --help, -h          print this text\n";
   return out.str();
 }

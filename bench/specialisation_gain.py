@@ -30,7 +30,7 @@ REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import bench_scenes  # noqa: E402
 
-SPECIALISATIONS = ["nearest-shadow-first", "no-shadow-rays"]
+SPECIALISATIONS = ["nearest-shadow-first", "no-shadow-rays", "embree-meshes"]
 DEFAULT_SCENES = ["showcase", "grid_10000", "grid_10000_no_shadow", "glass", "mesh_10000", "mesh2_10000",
                   "mesh_99856"]
 

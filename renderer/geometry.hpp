@@ -123,6 +123,7 @@ struct Primitive {
   // otherwise ends at its first hit (a height field, as POV-Ray's block_traversal for IS_CHILD_OBJECT) reports
   // every one.
   bool csg_child = false;
+  bool embree_nearest = false;   // a mesh whose nearest hits Embree finds (shapes/triangle_shapes.hpp)
   std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
   std::uint32_t element_materials = 0;     // meshes: material of texture k of the mesh's list is this + k
 };

@@ -4,6 +4,7 @@
 
 #include "renderer/csg_build.hpp"
 #include "renderer/object_primitives.hpp"
+#include "renderer/shapes/triangle_shapes.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -130,6 +131,7 @@ Specialisation choose_specialisation(const RenderScene& r, const SpecialisationC
   Specialisation s;
   s.nearest_shadow_first = c.nearest_shadow_first && r.any_casts_shadow;
   s.no_shadow_rays = c.no_shadow_rays && !r.any_casts_shadow;
+  s.embree_meshes = c.embree_meshes;
   return s;
 }
 }  // namespace
@@ -167,6 +169,9 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
   r.specialisation = choose_specialisation(r, options.specialise);
+  if (r.specialisation.embree_meshes)
+    for (Primitive& p : primitives)
+      if (p.type == ShapeType::mesh) shapes::prepare_embree_mesh(p);
   r.accelerator = Accelerator(std::move(primitives));
   r.wave_sources = make_wave_sources(scene.settings.number_of_waves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
@@ -210,17 +215,18 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
 
 bool SpecialisationChoice::turn_off(std::string_view name) {
   if (name == "all") {
-    *this = SpecialisationChoice{false, false};
+    *this = SpecialisationChoice{false, false, false};
     return true;
   }
   if (name == "nearest-shadow-first") nearest_shadow_first = false;
   else if (name == "no-shadow-rays") no_shadow_rays = false;
+  else if (name == "embree-meshes") embree_meshes = false;
   else return false;
   return true;
 }
 
 std::string SpecialisationChoice::names() {
-  return "nearest-shadow-first, no-shadow-rays";
+  return "nearest-shadow-first, no-shadow-rays, embree-meshes";
 }
 
 }  // namespace povtrace::render

@@ -173,12 +173,16 @@ struct Specialisation {
   bool nearest_shadow_first = false;
   // Nothing casts a shadow (every object no_shadow): no shadow ray is traced; the walk would find nothing.
   bool no_shadow_rays = false;
+  // Meshes placed as objects of their own find their nearest hits through Embree (renderer/accel/embree_mesh.hpp)
+  // instead of walking the own triangle BVH; hits inside CSG stay on the own BVH.
+  bool embree_meshes = false;
 };
 
 // Which specialisations a build may use (all by default); names as --no-specialise takes them.
 struct SpecialisationChoice {
   bool nearest_shadow_first = true;
   bool no_shadow_rays = true;
+  bool embree_meshes = true;
   // Turns off the one named (false for an unknown name). "all" turns off every one.
   bool turn_off(std::string_view name);
   static std::string names();   // the names, comma-separated, for the usage text and errors

@@ -6,6 +6,7 @@ packages=(
   cmake g++ make pkg-config        # build
   tao-pegtl-dev                    # PEGTL lexer
   libopenexr-dev libpng-dev        # image output
+  libembree-dev                    # nearest triangle of large meshes
   libgtest-dev                     # unit tests
   povray povray-includes           # reference renders, standard include files, bench comparison
   python3                          # reference/bench scripts

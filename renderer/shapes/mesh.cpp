@@ -101,6 +101,12 @@ Vec3 to_world_normal(const Primitive& p, Vec3 n) {
 
 void set_up_mesh(Primitive& p, const Mesh& mesh) { p.data = shared_mesh_shape(mesh.data); }
 
+void prepare_embree_mesh(Primitive& p) {
+  const MeshShape& mesh = shape_of(p);
+  std::call_once(mesh.embree_once, [&] { mesh.embree = EmbreeMesh::build(mesh.data->vertices, mesh.data->faces); });
+  p.embree_nearest = mesh.embree != nullptr;
+}
+
 void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   double t_max = tolerance::bound_huge;
   walk_triangles(shape_of(p), to_object(p, ray), 0.0, t_max, [&](std::uint32_t tri, double t, const TriangleHit& h) {
@@ -109,7 +115,36 @@ void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   });
 }
 
+// Embree picks the nearest triangle; its depth and weights are the watertight test's, under the same limits as
+// walk_triangles. `decided` is false when that test disagrees with Embree's pick (the own walk then answers).
+bool embree_nearest_hit(const Primitive& p, const MeshShape& mesh, const Ray& ray, double t_min, double t_max,
+                        SurfaceHit& hit, bool& decided) {
+  const ObjectRay r = to_object(p, ray);
+  const double object_min = std::max(depth_tolerance, t_min * r.length);
+  const double object_max = std::min(tolerance::max_distance, t_max * r.length);
+  decided = true;
+  std::uint32_t tri = 0;
+  if (!mesh.embree->nearest(r.ray, object_min, object_max, tri)) return false;
+  const MeshData& data = *mesh.data;
+  const std::uint32_t* f = &data.faces[3 * std::size_t(tri)];
+  TriangleHit h;
+  const bool crossed = intersect_watertight(ShearedRay(r.ray), data.vertex(f[0]), data.vertex(f[1]),
+                                            data.vertex(f[2]), h);
+  const double world = h.t / r.length;
+  if (!crossed || h.t < depth_tolerance || h.t > tolerance::max_distance || !(world > t_min && world < t_max)) {
+    decided = false;
+    return false;
+  }
+  hit = SurfaceHit{world, &p, tri, h.u, h.v};
+  return true;
+}
+
 bool nearest_mesh_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+  if (p.embree_nearest) {
+    bool decided = true;
+    const bool found = embree_nearest_hit(p, shape_of(p), ray, t_min, t_max, hit, decided);
+    if (decided) return found;
+  }
   bool found = false;
   walk_triangles(shape_of(p), to_object(p, ray), t_min, t_max, [&](std::uint32_t tri, double t, const TriangleHit& h) {
     hit = SurfaceHit{t, &p, tri, h.u, h.v};

@@ -4,9 +4,11 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "parser/description.hpp"
+#include "renderer/accel/embree_mesh.hpp"
 #include "renderer/accel/triangle_bvh.hpp"
 #include "renderer/geometry.hpp"
 
@@ -30,12 +32,19 @@ struct PolygonData : ShapeData {
 struct MeshShape : ShapeData {
   std::shared_ptr<const MeshData> data;
   TriangleBvh bvh;
+  // Embree's BVH over the same triangles for nearest hits (renderer/accel/embree_mesh.hpp), made by
+  // prepare_embree_mesh for the meshes a scene lets use it; null until then, or if Embree cannot start.
+  mutable std::once_flag embree_once;
+  mutable std::unique_ptr<EmbreeMesh> embree;
 };
 
 // Fill in a primitive whose common fields (material, transform, flags) are already set.
 void set_up_triangle(Primitive& p, const Triangle& triangle);
 void set_up_polygon(Primitive& p, const Polygon& polygon);
 void set_up_mesh(Primitive& p, const Mesh& mesh);   // shares the MeshShape of every placement of the same mesh
+// Lets a placed mesh find its nearest hits through Embree (Primitive::embree_nearest), building Embree's BVH once
+// per mesh; leaves it on the own BVH if Embree cannot start.
+void prepare_embree_mesh(Primitive& p);
 
 Intersections intersect_triangle(const Primitive& p, const Ray& ray);
 Vec3 triangle_normal(const Primitive& p, Vec3 world_point);

@@ -139,3 +139,59 @@ TEST(Mesh, InsideFollowsInsideVectorParity) {
 
 }  // namespace
 }  // namespace povtrace::test
+
+namespace povtrace::test {
+namespace {
+
+// Embree picks the nearest triangle in single precision and the exact test measures it (accel/embree_mesh.hpp):
+// the same hits as the own walk, at the exact depth of the triangle picked; only triangles within rounding of
+// each other in depth may be picked differently.
+TEST(EmbreeMesh, NearestHitEqualsTheOwnWalk) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  auto bumpy = std::make_shared<MeshData>(*icosphere(3));
+  for (float& c : bumpy->vertices) c *= static_cast<float>(1.0 + 0.1 * u(rng));
+  const render::Primitive own = mesh(bumpy);
+  render::Primitive fast = mesh(bumpy);
+  render::shapes::prepare_embree_mesh(fast);
+  ASSERT_TRUE(fast.embree_nearest);
+  int hits = 0, same_triangle = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Vec3 origin{u(rng) * 2, u(rng) * 2, u(rng) * 2};
+    const render::Ray r = ray(origin, random_unit(rng) * 0.9 - origin);
+    render::SurfaceHit a, b;
+    const bool found = render::nearest_hit(own, r, 0.0, 1e10, a);
+    ASSERT_EQ(render::nearest_hit(fast, r, 0.0, 1e10, b), found) << "ray " << i;
+    if (!found) continue;
+    ++hits;
+    EXPECT_NEAR(b.t, a.t, 1e-6 * a.t) << "ray " << i;
+    same_triangle += a.element == b.element && a.t == b.t;
+  }
+  EXPECT_GT(hits, 2000);
+  EXPECT_GE(same_triangle, hits * 99 / 100);
+}
+
+TEST(EmbreeMesh, RaysThroughSharedEdgesOfAClosedMeshNeverLeak) {
+  const auto sphere = icosphere(2);
+  const MeshData& d = *sphere;
+  std::mt19937 rng(5);
+  render::Primitive p = mesh(sphere);
+  render::shapes::prepare_embree_mesh(p);
+  ASSERT_TRUE(p.embree_nearest);
+  for (std::size_t i = 0; i < d.faces.size(); i += 3)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = d.vertex(d.faces[i + k]), b = d.vertex(d.faces[i + (k + 1) % 3]);
+      for (const Vec3 target : {a, (a + b) * 0.5, a + (b - a) * (1.0 / 3.0)}) {
+        render::SurfaceHit hit;
+        EXPECT_TRUE(render::nearest_hit(p, render::Ray{{0, 0, 0}, normalize(target)}, 0.0, 1e10, hit));
+        EXPECT_TRUE(render::nearest_hit(p, render::Ray{target * 3.0, normalize(-target)}, 0.0, 1e10, hit));
+      }
+    }
+  for (int i = 0; i < 20000; ++i) {
+    render::SurfaceHit hit;
+    ASSERT_TRUE(render::nearest_hit(p, render::Ray{{0.01, -0.02, 0.03}, random_unit(rng)}, 0.0, 1e10, hit));
+  }
+}
+
+}  // namespace
+}  // namespace povtrace::test
