@@ -504,6 +504,10 @@ class Interpreter {
   // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
   // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
   bool numeric_ahead();
+  // Runs the macro calls that start a value (`#declare S = Add(S, I);`) as next() would, so that a numeric body
+  // is then read by numeric_ahead()'s path: next() would hand its first token over as a Token, which keeps the
+  // expression from running as a compiled program.
+  void call_macros_ahead();
   void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);

@@ -178,6 +178,21 @@ bool Interpreter::numeric_ahead() {
   return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
 }
 
+void Interpreter::call_macros_ahead() {
+  // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
+  // limit (next() counts), no deprecated names (their warnings come from next()).
+  while (pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
+    const Value* v = symbols_.find(k.payload);
+    if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
+    const Token name = raw();   // what next() reads first, with the cancel check counted
+    const NestingGuard guard(*this, name);
+    invoke_macro(name);
+  }
+}
+
 std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
   // and none of the forms below would take them.
