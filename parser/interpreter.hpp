@@ -372,6 +372,10 @@ class Interpreter {
   Object parse_box(const Token& keyword);
   Object parse_csg(const Token& keyword, CsgKind kind);
   SceneItem parse_object_block(const Token& keyword);
+  SceneItem parse_object_block_rest(const Token& keyword, const Token& first);   // after `object {` and its first token
+  // A statement `object { … }`: a declared object is copied once and moved into the scene once (not passed up
+  // through SceneItem and optional, two more moves of a large struct per placed copy).
+  void place_object_block(const Token& keyword);
   void parse_object_modifiers(Object& object);
   bool try_object_modifier(const Token& t, Object& object);
   void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);

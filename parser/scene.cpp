@@ -66,6 +66,7 @@ void Interpreter::parse_statement(const Token& t) {
     scene_.sky_sphere = std::move(sky);
     return;
   }
+  if (k == "object") return place_object_block(t);
   if (auto item = try_parse_item(t)) {
     if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
     else place_object(std::move(std::get<Object>(*item)), t.loc);
