@@ -152,6 +152,7 @@ void Interpreter::directive_declare(bool local) {
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
+  call_macros_ahead();
   if (numeric_ahead()) {
     // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
     // straight into an entry that holds a number already (loops assign the same names every round).

@@ -372,6 +372,10 @@ class Interpreter {
   Object parse_box(const Token& keyword);
   Object parse_csg(const Token& keyword, CsgKind kind);
   SceneItem parse_object_block(const Token& keyword);
+  SceneItem parse_object_block_rest(const Token& keyword, const Token& first);   // after `object {` and its first token
+  // A statement `object { … }`: a declared object is copied once and moved into the scene once (not passed up
+  // through SceneItem and optional, two more moves of a large struct per placed copy).
+  void place_object_block(const Token& keyword);
   void parse_object_modifiers(Object& object);
   bool try_object_modifier(const Token& t, Object& object);
   void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
@@ -525,6 +529,10 @@ class Interpreter {
   // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
   // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
   bool numeric_ahead();
+  // Runs the macro calls that start a value (`#declare S = Add(S, I);`) as next() would, so that a numeric body
+  // is then read by numeric_ahead()'s path: next() would hand its first token over as a Token, which keeps the
+  // expression from running as a compiled program.
+  void call_macros_ahead();
   void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);

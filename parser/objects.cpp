@@ -253,7 +253,27 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
 SceneItem Interpreter::parse_object_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   skip_expected('{', " after 'object'");
-  Token t = next();
+  return parse_object_block_rest(keyword, next());
+}
+
+void Interpreter::place_object_block(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
+  skip_expected('{', " after 'object'");
+  const Token t = next();
+  if (const Value* v = lookup(t); v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))
+    if (const auto* declared = std::get_if<Object>(std::get<std::shared_ptr<const SceneItem>>(*v).get())) {
+      Object o = *declared;   // before the modifiers, which may redeclare the name
+      parse_object_modifiers(o);
+      place_object(std::move(o), keyword.loc);
+      return;
+    }
+  SceneItem item = parse_object_block_rest(keyword, t);
+  if (auto* light = std::get_if<Light>(&item)) place_light(std::move(*light), keyword.loc);
+  else place_object(std::move(std::get<Object>(item)), keyword.loc);
+}
+
+SceneItem Interpreter::parse_object_block_rest(const Token& keyword, const Token& first) {
+  const Token& t = first;
   std::optional<SceneItem> item;
   if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v))

@@ -66,6 +66,7 @@ void Interpreter::parse_statement(const Token& t) {
     scene_.sky_sphere = std::move(sky);
     return;
   }
+  if (k == "object") return place_object_block(t);
   if (auto item = try_parse_item(t)) {
     if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
     else place_object(std::move(std::get<Object>(*item)), t.loc);
@@ -176,6 +177,21 @@ bool Interpreter::numeric_ahead() {
   if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
   const Value* v = symbols_.find(k->payload);
   return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
+}
+
+void Interpreter::call_macros_ahead() {
+  // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
+  // limit (next() counts), no deprecated names (their warnings come from next()).
+  while (pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
+    const Value* v = symbols_.find(k.payload);
+    if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
+    const Token name = raw();   // what next() reads first, with the cancel check counted
+    const NestingGuard guard(*this, name);
+    invoke_macro(name);
+  }
 }
 
 std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {

@@ -139,7 +139,7 @@ Value* SymbolTable::resolve_alias(Value* v) const {
   // Alias chains are finite: an alias always points to an outer (older) table.
   while (v && std::holds_alternative<Alias>(*v)) {
     const Alias& a = std::get<Alias>(*v);
-    const NameId id = a.id ? a.id : id_of(a.name);
+    const NameId id = a.id;
     v = nullptr;
     if (id < bindings_.size())
       for (Entry* e : bindings_[id])

@@ -550,7 +550,7 @@ void Interpreter::invoke_macro(const Token& name) {
       if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
         if (const auto level = symbols_.level_of(k->payload)) {
           ++f.index;
-          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, std::string(text_of(*k)), k->payload});
+          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, k->payload});
           continue;
         }
     }
@@ -564,7 +564,7 @@ void Interpreter::invoke_macro(const Token& name) {
       if (level && alone) {
         macro_arguments_.emplace_back(
             macro.parameter_ids[i],
-            Alias{*level, std::string(first.text), first.name ? first.name : symbols_.id_of(first.text)});
+            Alias{*level, first.name ? first.name : symbols_.id_of(first.text)});
         continue;
       }
     }

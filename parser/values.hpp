@@ -50,10 +50,11 @@ struct MacroDefinition {
 };
 
 // A macro parameter bound to a caller's variable: reads and writes go through to it (§4 #macro).
+// No name text: the id is always known where an alias is made (the name is bound, so interned), and a macro
+// call makes one per alias argument.
 struct Alias {
   std::size_t table = 0;            // symbol table level holding the variable
-  std::string name;
-  std::uint32_t id = 0;             // the name's SymbolTable::NameId (0: look it up by name)
+  std::uint32_t id = 0;             // the name's SymbolTable::NameId
 };
 
 // material { texture interior } as a declared value.

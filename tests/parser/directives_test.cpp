@@ -143,6 +143,14 @@ INSTANTIATE_TEST_SUITE_P(
         DirectiveCase{"BodyIsSplicedAsText", "#macro Add(A,B) A+B #end\nP(\"2*Add(1,2)\", 2*Add(1,2))\n",
                       "2*Add(1,2)=4.0000\n"},
         DirectiveCase{"ParenthesisedBody", "#macro Sq(A) (A*A) #end\nP(\"Sq(3)+1\", Sq(3)+1)\n", "Sq(3)+1=10.0000\n"},
+        // #declare runs a macro call that starts the value itself (call_macros_ahead): the value reads on after the
+        // body, a body may start with another call or a directive, or be empty (checked with povray).
+        DirectiveCase{"DeclareOfAValueStartingWithAMacroCall",
+                      "#macro Add(A,B) A+B #end\n#macro Two() Add(1,1) #end\n#macro Nothing() #end\n"
+                      "#macro Loc() #local T = 4; T #end\n#declare X = Add(1,2)*2;\n#declare Y = Two() + 1;\n"
+                      "#declare Z = Nothing() 7;\n#declare W = Loc();\n#declare V = Add(<1,2,3>, 1);\n"
+                      "P(\"X\", X) P(\"Y\", Y) P(\"Z\", Z) P(\"W\", W) P(\"Vy\", V.y)\n",
+                      "X=5.0000\nY=3.0000\nZ=7.0000\nW=4.0000\nVy=3.0000\n"},
         DirectiveCase{"Recursion",
                       "#macro Fact(N) #local R = 1; #if (N > 1) #local R = N*Fact(N-1); #end R #end\n"
                       "P(\"Fact(5)\", Fact(5))\n",
