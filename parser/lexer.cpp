@@ -204,7 +204,8 @@ bool is_identifier_first(char c) { return has_class(c, kIdentifierFirst); }
 bool is_identifier_other(char c) { return has_class(c, kIdentifierOther); }
 bool is_one_char_symbol(char c) { return has_class(c, kSymbol); }
 
-// grammar::number from `c`: the end of the longest match, or `c` where none.
+}  // namespace
+
 const char* number_end(const char* c, const char* end) {
   const char* p = c;
   if (p < end && is_digit(*p)) {
@@ -226,7 +227,6 @@ const char* number_end(const char* c, const char* end) {
   }
   return p;
 }
-}  // namespace
 
 bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out) {
   const char* base = file.text.data();

@@ -159,6 +159,10 @@ struct QuickToken {
 // a number from_chars does not read exactly, an error — which lex_token then reads.
 bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out);
 
+// grammar::number from `c` (digits [. digits] | . digits, then an optional exponent): the end of the longest
+// match before `end`, or `c` where there is none.
+const char* number_end(const char* c, const char* end);
+
 // The decoded contents of a string token (escapes per §2: \a \b \f \n \r \t \v \\ \' \" \uXXXX).
 // `decode_escapes` is false for file names (#include), which POV-Ray takes verbatim.
 std::string string_value(const Token& token, const SourceFile& file, bool decode_escapes);

@@ -95,30 +95,14 @@ class LiteralScanner {
       }
     }
   }
-  // [-] number, with the lexer's number syntax (digits [. digits] | . digits, then an optional exponent). The
-  // byte after it must not continue it ('.', a letter, a digit, '_'): the lexer would read something else there.
+  // [-] number, with the lexer's number syntax (number_end). The byte after it must not continue it ('.', a
+  // letter, a digit, '_'): the lexer would read something else there.
   bool number(double& out) {
     const bool negative = symbol('-');
     skip_blanks();
     const char* c = base_ + at_.offset;
-    const char* p = c;
-    if (p < end_ && digit(*p)) {
-      while (p < end_ && digit(*p)) ++p;
-      if (p < end_ && *p == '.')
-        for (++p; p < end_ && digit(*p);) ++p;
-    } else if (p + 1 < end_ && *p == '.' && digit(p[1])) {
-      for (p += 2; p < end_ && digit(*p);) ++p;
-    } else {
-      return false;
-    }
-    if (p < end_ && (*p == 'e' || *p == 'E')) {
-      const char* e = p + 1;
-      if (e < end_ && (*e == '+' || *e == '-')) ++e;
-      if (e < end_ && digit(*e)) {
-        while (e < end_ && digit(*e)) ++e;
-        p = e;
-      }
-    }
+    const char* p = number_end(c, end_);
+    if (p == c) return false;
     if (p < end_ && (*p == '.' || identifier_byte(*p))) return false;
     const auto [ptr, ec] = std::from_chars(c, p, out);
     if (ec != std::errc() || ptr != p) return false;

@@ -215,7 +215,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
 
 bool SpecialisationChoice::turn_off(std::string_view name) {
   if (name == "all") {
-    *this = SpecialisationChoice{false, false, false};
+    nearest_shadow_first = no_shadow_rays = embree_meshes = false;
     return true;
   }
   if (name == "nearest-shadow-first") nearest_shadow_first = false;

@@ -12,12 +12,8 @@ file(REMOVE ${OUTPUT} ${DIFF})
 
 # Step 1: render, from the scenes folder as POV-Ray did for the reference, with the scene's own extra switches
 # (a "// switches: …" line, as reference/make_references.sh reads it).
-file(STRINGS ${SCENE} switch_lines REGEX "^// switches:" LIMIT_COUNT 1)
-set(extra_switches "")
-if(switch_lines)
-  string(REGEX REPLACE "^// switches:[ ]*" "" switch_text "${switch_lines}")
-  separate_arguments(extra_switches UNIX_COMMAND "${switch_text}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/scene_switches.cmake)
+scene_switches(${SCENE} extra_switches)
 set(render_command ${POVTRACE} -D -A +W320 +H240 +FE ${extra_switches} +O${OUTPUT} ${SCENE})
 execute_process(COMMAND ${render_command}
   WORKING_DIRECTORY ${SCENE_DIR}

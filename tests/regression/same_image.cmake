@@ -11,12 +11,8 @@ endforeach()
 file(MAKE_DIRECTORY ${WORK_DIR})
 
 # The scene's own extra switches (antialiasing, alpha), as the reference render uses them.
-file(STRINGS ${SCENE} switch_lines REGEX "^// switches:" LIMIT_COUNT 1)
-set(extra_switches "")
-if(switch_lines)
-  string(REGEX REPLACE "^// switches:[ ]*" "" switch_text "${switch_lines}")
-  separate_arguments(extra_switches UNIX_COMMAND "${switch_text}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/scene_switches.cmake)
+scene_switches(${SCENE} extra_switches)
 
 # name|switches
 set(variants "specialised_1_thread|+WT1" "general_1_thread|+WT1 --no-specialise" "specialised_2_threads|+WT2"
