@@ -580,7 +580,7 @@ class Interpreter::ProgramCompiler {
     in_.program_ops_.push_back(op);
     return true;
   }
-  bool emit(ExpressionOp::Code code, int pops = 2) { return emit(ExpressionOp{code, 0, 0, 0, nullptr, {}}, pops, 1); }
+  bool emit(ExpressionOp::Code code, int pops = 2) { return emit(ExpressionOp{code, 0, 0, 0, nullptr}, pops, 1); }
 
   bool full_level() {   // parse_expression
     if (!comparison()) return false;
@@ -608,7 +608,7 @@ class Interpreter::ProgramCompiler {
       if (c == Comparison::none) return true;
       ++j_;
       if (!additive()) return false;
-      if (!emit(ExpressionOp{ExpressionOp::Code::compare, static_cast<std::uint8_t>(c), 0, 0, nullptr, {}}, 2, 1))
+      if (!emit(ExpressionOp{ExpressionOp::Code::compare, static_cast<std::uint8_t>(c), 0, 0, nullptr}, 2, 1))
         return false;
     }
   }
@@ -646,19 +646,19 @@ class Interpreter::ProgramCompiler {
     switch (k->kind()) {
       case TokenKind::number:
         ++j_;
-        return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, tokens_.number(*k), nullptr, {}}, 0, 1) &&
+        return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, tokens_.number(*k), nullptr}, 0, 1) &&
                no_postfix();
       case TokenKind::identifier: {
         ++j_;
         if (!in_.symbols_.is_reserved(k->payload))
-          return emit(ExpressionOp{ExpressionOp::Code::name, 0, k->payload, 0, nullptr, {}}, 0, 1) && no_postfix();
+          return emit(ExpressionOp{ExpressionOp::Code::name, 0, k->payload, 0, nullptr}, 0, 1) && no_postfix();
         const std::string_view w = text(*k);
         // The constants of parse_primary whose value never changes.
         if (w == "pi" || w == "true" || w == "yes" || w == "on" || w == "false" || w == "no" || w == "off") {
           const double v = w == "pi" ? M_PI : (w == "true" || w == "yes" || w == "on") ? 1.0 : 0.0;
-          return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, v, nullptr, {}}, 0, 1) && no_postfix();
+          return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, v, nullptr}, 0, 1) && no_postfix();
         }
-        if (const FloatFunction* f = find_float_function(w)) return call(*f, w) && no_postfix();
+        if (const FloatFunction* f = find_float_function(w)) return call(*f) && no_postfix();
         return never();
       }
       case TokenKind::symbol: break;
@@ -703,9 +703,9 @@ class Interpreter::ProgramCompiler {
       // any other token: commas between components are optional
     }
     if (count < 2) return never();
-    return emit(ExpressionOp{ExpressionOp::Code::vector, static_cast<std::uint8_t>(count), 0, 0, nullptr, {}}, count, 1);
+    return emit(ExpressionOp{ExpressionOp::Code::vector, static_cast<std::uint8_t>(count), 0, 0, nullptr}, count, 1);
   }
-  bool call(const FloatFunction& f, std::string_view name) {   // parse_call_arguments
+  bool call(const FloatFunction& f) {   // parse_call_arguments
     const LexedToken* k = at(j_);
     if (!k) return false;
     if (!is(k, "(")) return never();
@@ -738,7 +738,7 @@ class Interpreter::ProgramCompiler {
     if (!is(close, ")") || count < f.min_args) return never();
     ++j_;
     const auto n = static_cast<int>(count);
-    return emit(ExpressionOp{ExpressionOp::Code::call, static_cast<std::uint8_t>(count), 0, 0, &f, name}, n, 1);
+    return emit(ExpressionOp{ExpressionOp::Code::call, static_cast<std::uint8_t>(count), 0, 0, &f}, n, 1);
   }
 
   Interpreter& in_;
@@ -830,7 +830,7 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
           CallArguments args;
           sp -= op->arg;
           for (int i = 0; i < op->arg; ++i) args.push_back(st[sp + i]);
-          const std::optional<double> r = quiet_float_call(op->text, *op->function, args);
+          const std::optional<double> r = quiet_float_call(*op->function, args);
           if (!r) return Run::decline;
           st[sp++] = *r;
           break;
@@ -920,7 +920,7 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
           } else {
             CallArguments args;
             for (int i = 0; i < op->arg; ++i) args.push_back(c[i]);
-            const std::optional<double> r = quiet_float_call(op->text, *op->function, args);
+            const std::optional<double> r = quiet_float_call(*op->function, args);
             if (!r) return Run::decline;
             st[static_cast<std::size_t>(sp++)] = Numeric::scalar(*r);
           }

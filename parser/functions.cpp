@@ -28,10 +28,10 @@ double truncated(double d) {
 const std::unordered_map<std::string_view, FloatFunction>& float_functions() {
   static const std::unordered_map<std::string_view, FloatFunction> table = {
       {"abs", {1, 1, [](const Args& a) { return std::fabs(a[0]); }}},
-      {"acos", {1, 1, [](const Args& a) { return std::acos(std::clamp(a[0], -1.0, 1.0)); }}},
-      {"asin", {1, 1, [](const Args& a) { return std::asin(std::clamp(a[0], -1.0, 1.0)); }}},
+      {"acos", {1, 1, [](const Args& a) { return std::acos(std::clamp(a[0], -1.0, 1.0)); }, FloatDomain::unit}},
+      {"asin", {1, 1, [](const Args& a) { return std::asin(std::clamp(a[0], -1.0, 1.0)); }, FloatDomain::unit}},
       {"atan", {1, 1, [](const Args& a) { return std::atan(a[0]); }}},
-      {"atan2", {2, 2, [](const Args& a) { return std::atan2(a[0], a[1]); }}},
+      {"atan2", {2, 2, [](const Args& a) { return std::atan2(a[0], a[1]); }, FloatDomain::not_both_zero}},
       {"sin", {1, 1, [](const Args& a) { return std::sin(a[0]); }}},
       {"cos", {1, 1, [](const Args& a) { return std::cos(a[0]); }}},
       {"tan", {1, 1, [](const Args& a) { return std::tan(a[0]); }}},
@@ -42,15 +42,15 @@ const std::unordered_map<std::string_view, FloatFunction>& float_functions() {
       {"acosh", {1, 1, [](const Args& a) { return std::acosh(a[0]); }}},
       {"atanh", {1, 1, [](const Args& a) { return std::atanh(a[0]); }}},
       {"exp", {1, 1, [](const Args& a) { return std::exp(a[0]); }}},
-      {"sqrt", {1, 1, [](const Args& a) { return std::sqrt(a[0]); }}},
-      {"ln", {1, 1, [](const Args& a) { return std::log(a[0]); }}},
-      {"log", {1, 1, [](const Args& a) { return std::log10(a[0]); }}},
-      {"pow", {2, 2, [](const Args& a) { return std::pow(a[0], a[1]); }}},
+      {"sqrt", {1, 1, [](const Args& a) { return std::sqrt(a[0]); }, FloatDomain::non_negative}},
+      {"ln", {1, 1, [](const Args& a) { return std::log(a[0]); }, FloatDomain::positive}},
+      {"log", {1, 1, [](const Args& a) { return std::log10(a[0]); }, FloatDomain::positive}},
+      {"pow", {2, 2, [](const Args& a) { return std::pow(a[0], a[1]); }, FloatDomain::not_both_zero}},
       {"floor", {1, 1, [](const Args& a) { return std::floor(a[0]); }}},
       {"ceil", {1, 1, [](const Args& a) { return std::ceil(a[0]); }}},
       {"int", {1, 1, [](const Args& a) { return truncated(a[0]); }}},
-      {"div", {2, 2, [](const Args& a) { return truncated(a[0] / a[1]); }}},
-      {"mod", {2, 2, [](const Args& a) { return std::fmod(a[0], a[1]); }}},
+      {"div", {2, 2, [](const Args& a) { return truncated(a[0] / a[1]); }, FloatDomain::divisor}},
+      {"mod", {2, 2, [](const Args& a) { return std::fmod(a[0], a[1]); }, FloatDomain::divisor}},
       {"degrees", {1, 1, [](const Args& a) { return a[0] * 180.0 / M_PI; }}},
       {"radians", {1, 1, [](const Args& a) { return degrees_to_radians(a[0]); }}},
       {"min", {1, 64, [](const Args& a) { return *std::min_element(a.begin(), a.end()); }}},
@@ -78,14 +78,27 @@ const std::unordered_map<std::string_view, FloatFunction>& float_functions() {
   return table;
 }
 
-// Domain checks POV-Ray reports as errors (§5).
-std::string domain_error(std::string_view name, const Args& a) {
-  if (name == "sqrt" && a[0] < 0) return "sqrt of a negative number";
-  if ((name == "ln" || name == "log") && a[0] <= 0) return std::string(name) + " of a number that is not positive";
-  if (name == "pow" && a[0] == 0 && a[1] == 0) return "pow(0, 0) is undefined";
-  if (name == "atan2" && a[0] == 0 && a[1] == 0) return "atan2(0, 0) is undefined";
-  if ((name == "mod" || name == "div") && a[1] == 0) return std::string(name) + " by zero";
-  return {};
+// Domain checks POV-Ray reports as errors (§5): whether the arguments fail the function's, and the message.
+bool outside_domain(FloatDomain d, const Args& a) {
+  switch (d) {
+    case FloatDomain::any:
+    case FloatDomain::unit: return false;   // a warning, not an error
+    case FloatDomain::non_negative: return a[0] < 0;
+    case FloatDomain::positive: return a[0] <= 0;
+    case FloatDomain::not_both_zero: return a[0] == 0 && a[1] == 0;
+    case FloatDomain::divisor: return a[1] == 0;
+  }
+  return false;
+}
+
+std::string domain_error(std::string_view name, FloatDomain d) {
+  switch (d) {
+    case FloatDomain::non_negative: return std::string(name) + " of a negative number";
+    case FloatDomain::positive: return std::string(name) + " of a number that is not positive";
+    case FloatDomain::not_both_zero: return std::string(name) + "(0, 0) is undefined";
+    case FloatDomain::divisor: return std::string(name) + " by zero";
+    default: return {};
+  }
 }
 }  // namespace
 
@@ -124,10 +137,10 @@ const FloatFunction* find_float_function(std::string_view name) {
   return it == float_functions().end() ? nullptr : &it->second;
 }
 
-std::optional<double> quiet_float_call(std::string_view name, const FloatFunction& f, const CallArguments& args) {
+std::optional<double> quiet_float_call(const FloatFunction& f, const CallArguments& args) {
   // The checks of parse_function_call below, in its order; any that would speak declines.
-  if (!domain_error(name, args).empty()) return std::nullopt;
-  if ((name == "acos" || name == "asin") && std::fabs(args[0]) > 1.0) return std::nullopt;
+  if (outside_domain(f.domain, args)) return std::nullopt;
+  if (f.domain == FloatDomain::unit && std::fabs(args[0]) > 1.0) return std::nullopt;
   const double value = f.eval(args);
   if (!std::isfinite(value) && std::isfinite(args[0])) return std::nullopt;
   return value;
@@ -138,9 +151,10 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   auto it = float_functions().find(n);
   if (it != float_functions().end()) {
     Args args = parse_call_arguments(name, it->second.min_args, it->second.max_args);
-    if (auto err = domain_error(n, args); !err.empty()) fail_at(name, err);
+    if (outside_domain(it->second.domain, args)) fail_at(name, domain_error(n, it->second.domain));
     // POV-Ray warns "Domain error in acos/asin" and goes on with the clamped argument.
-    if ((n == "acos" || n == "asin") && std::fabs(args[0]) > 1.0) warn(name.loc, "domain error in " + std::string(n));
+    if (it->second.domain == FloatDomain::unit && std::fabs(args[0]) > 1.0)
+      warn(name.loc, "domain error in " + std::string(n));
     const double value = it->second.eval(args);
     // A result that is not a number or is infinite (pow(0, -1), exp(1000)) goes on, as in POV-Ray, but is named
     // where it is made: it would otherwise surface far away as a missing object or a black pixel.

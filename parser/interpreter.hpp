@@ -53,15 +53,27 @@ struct CallArguments {
   void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
 };
 
-// A built-in float function (functions.cpp): its argument counts and its value.
+// Which of POV-Ray's argument checks a built-in float function has (functions.cpp domain_error): known with the
+// function, so that a call need not compare its name against each checked one.
+enum class FloatDomain : std::uint8_t {
+  any,             // no check
+  non_negative,    // sqrt
+  positive,        // ln, log
+  not_both_zero,   // pow, atan2
+  divisor,         // mod, div: the second argument is not 0
+  unit             // acos, asin: |x| > 1 warns and is clamped
+};
+
+// A built-in float function (functions.cpp): its argument counts, its value and its argument check.
 struct FloatFunction {
   std::size_t min_args, max_args;
   double (*eval)(const CallArguments&);   // a plain function: no std::function call per evaluation
+  FloatDomain domain = FloatDomain::any;
 };
 const FloatFunction* find_float_function(std::string_view name);   // nullptr: no such built-in
 // What parse_function_call gives for the built-in `name` with these arguments, or nullopt where it would report
 // an error or warn instead (a domain error, acos(2), an infinite result): the expression programs call through here.
-std::optional<double> quiet_float_call(std::string_view name, const FloatFunction& f, const CallArguments& args);
+std::optional<double> quiet_float_call(const FloatFunction& f, const CallArguments& args);
 
 class Interpreter {
  public:
@@ -259,7 +271,6 @@ class Interpreter {
     std::uint32_t name = 0;     // name: the NameId
     double number = 0;          // number: the value
     const FloatFunction* function = nullptr;   // call: the built-in
-    std::string_view text;                     // call: its name (in the file's text, alive as long as the parse)
   };
   struct ExpressionProgram {
     std::uint32_t first_op = 0, op_count = 0;   // in program_ops_

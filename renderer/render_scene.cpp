@@ -102,8 +102,9 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
 }
 
 
-// Whether some object (a CSG child included) has no_image or no_reflection.
-bool any_ray_flags(const std::vector<Object>& objects) {
+// Whether some object (a CSG child included) has no_image or no_reflection. For the scene's list and CSG children.
+template <class ObjectList>
+bool any_ray_flags(const ObjectList& objects) {
   for (const Object& o : objects) {
     if (o.no_image || o.no_reflection) return true;
     if (const auto* csg = std::get_if<Csg>(&o.shape); csg && any_ray_flags(csg->children)) return true;
