@@ -132,9 +132,9 @@ void Interpreter::directive_declare(bool local) {
       fail_at(*name_token, "'" + std::string(name_token->text) + "' is a reserved word and cannot be declared");
     name_text = name_token->text;
   }
-  const std::string name(name_text);
+  const std::string_view name = name_text;   // in the file's text: no copy per #declare
   if (deprecation && deprecation->message.empty())
-    deprecation->message = "Identifier '" + name + "' was declared deprecated.";
+    deprecation->message = "Identifier '" + std::string(name) + "' was declared deprecated.";
   if (!kept_tokens) {
     warn_if_deprecated(symbols_, *name_token, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
     id = name_token->name ? name_token->name : symbols_.intern(name);
@@ -147,7 +147,7 @@ void Interpreter::directive_declare(bool local) {
   if (plain_symbol(plain_ahead(), '=')) {
     consume_plain();
   } else if (Token eq = next(); !eq.is("=")) {
-    fail_expected(eq, "'=' after #declare " + name);
+    fail_expected(eq, "'=' after #declare " + std::string(name));
   }
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
@@ -161,9 +161,10 @@ void Interpreter::directive_declare(bool local) {
         !kept_tokens || (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible)))
       check_function_redeclaration(token(), local, Value(n));
     symbols_.assign_numeric_at(id, target_level, n);
-    if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
+    if (deprecation) symbols_.deprecate(std::string(name), std::move(*deprecation));
     if (raw_ahead().is(";")) skip_ahead();
-    else if (scene_.language_version >= 350) fail_expected(peek_raw(), "';' after the value of " + name);
+    else if (scene_.language_version >= 350)
+      fail_expected(peek_raw(), "';' after the value of " + std::string(name));
     return;
   }
   std::optional<Value> value;
@@ -171,7 +172,7 @@ void Interpreter::directive_declare(bool local) {
     Token first = next();
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
-                                     "interior or camera) for " + name);
+                                     "interior or camera) for " + std::string(name));
   }
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
@@ -183,9 +184,9 @@ void Interpreter::directive_declare(bool local) {
   // Store before looking for the optional ';': that look must not run the next directive (a `#declare` using
   // this name, or the `#end` of the macro whose local this is) while this one is unfinished.
   symbols_.assign_at(id, target_level, std::move(*value));
-  if (deprecation) symbols_.deprecate(name, std::move(*deprecation));
+  if (deprecation) symbols_.deprecate(std::string(name), std::move(*deprecation));
   if (raw_ahead().is(";")) skip_ahead();
-  else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + name);
+  else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + std::string(name));
 }
 
 void Interpreter::directive_undef() {

@@ -235,6 +235,15 @@ Numeric Interpreter::parse_multiplicative() {
 
 Numeric Interpreter::parse_unary() {
   if (Numeric n; fast_operand(n)) return n;
+  // A parenthesis from the kept tokens, as parse_primary takes it, without making its Token: what a macro body
+  // such as `(A + B * 0.001)` starts with (its expression program cannot end at the body's #end).
+  if (!options_.max_tokens && nesting_room() && plain_symbol(plain_ahead(), '(')) {
+    consume_plain();
+    const NestingGuard guard(*this, NestingGuard::RoomChecked{});
+    Numeric n = parse_expression();
+    skip_expected(')', " closing the parenthesis");
+    return parse_postfix(n);
+  }
   const Token t = next();
   const NestingGuard guard(*this, t);   // every nested operand passes through here
   if (t.kind != TokenKind::symbol) return parse_postfix(parse_primary(t));

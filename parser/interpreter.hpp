@@ -596,6 +596,9 @@ class Interpreter {
   class NestingGuard {
    public:
     NestingGuard(Interpreter& in, const Token& at);
+    // One more level where nesting_room() has just said there is room: nothing to report, so no Token needed.
+    struct RoomChecked {};
+    NestingGuard(Interpreter& in, RoomChecked) : in_(in) { ++in_.nesting_; }
     ~NestingGuard() { --in_.nesting_; }
     NestingGuard(const NestingGuard&) = delete;
     NestingGuard& operator=(const NestingGuard&) = delete;
