@@ -48,23 +48,76 @@ struct BBox {
     return {lower[0] + lengths[0], lower[1] + lengths[1], lower[2] + lengths[2]};
   }
 
-  // Recompute_BBox: the box of the 8 transformed corners, clipped to ±BOUND_HUGE/2.
+  // Recompute_BBox: the box of the 8 transformed corners, clipped to ±BOUND_HUGE/2. In POV-Ray's order (corners
+  // 1 to 8, the lower corner last) keeping the first of equal values, so that a -0 and a +0 end as in POV-Ray.
   BBox transformed(const Matrix& m) const {
-    Vec3 lo_w{kBoundHuge, kBoundHuge, kBoundHuge}, hi_w{-kBoundHuge, -kBoundHuge, -kBoundHuge};
-    for (int i = 0; i < 8; ++i) {
+    double lo_w[3] = {kBoundHuge, kBoundHuge, kBoundHuge}, hi_w[3] = {-kBoundHuge, -kBoundHuge, -kBoundHuge};
+    for (int i = 1; i <= 8; ++i) {
       const Vec3 corner{double(lower[0]) + ((i & 1) ? double(lengths[0]) : 0.0),
                         double(lower[1]) + ((i & 2) ? double(lengths[1]) : 0.0),
                         double(lower[2]) + ((i & 4) ? double(lengths[2]) : 0.0)};
       const Vec3 p = m.point(corner);
-      lo_w = min(lo_w, p);
-      hi_w = max(hi_w, p);
+      const double c[3] = {p.x, p.y, p.z};
+      for (int k = 0; k < 3; ++k) {
+        if (c[k] < lo_w[k]) lo_w[k] = c[k];
+        if (c[k] > hi_w[k]) hi_w[k] = c[k];
+      }
     }
+    const Vec3 lo_v{lo_w[0], lo_w[1], lo_w[2]}, hi_v{hi_w[0], hi_w[1], hi_w[2]};
     const Vec3 limit{kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
-    return from_min_max(max(lo_w, -limit), min(hi_w, limit));
+    return from_min_max(max(lo_v, -1.0 * limit), min(hi_v, limit));
   }
 };
 
 bool is_identity(const Matrix& m) { return m == Matrix::identity(); }
+
+constexpr double kEpsilon = 1e-10;          // POV-Ray's EPSILON
+constexpr double kSmallTolerance = 0.001;   // SMALL_TOLERANCE: a disc's box is this thick either side
+
+// POV-Ray's Compute_Coordinate_Transform: the map from the canonical shape (z from 0 to 1, radius 1) to a shape of
+// this radius and length along `up` (unit) from `origin`: a scaling, the rotation about <-up.y, up.x, 0> that takes
+// +z to `up` (about x when `up` is ±z), then the translation. The rotation decides how a square cross-section
+// turns about the axis, so the box of the 8 transformed corners depends on it.
+Matrix canonical_to_shape(Vec3 origin, Vec3 up, double radius, double length) {
+  Vec3 axis{-up.y, up.x, 0};
+  if (std::fabs(up.z) > 1.0 - kEpsilon) {
+    axis = {1, 0, 0};
+    up.z = up.z < 0 ? -1.0 : 1.0;
+  }
+  const Vec3 a = normalize(axis);
+  const double angle = std::acos(up.z), c = std::cos(angle), s = std::sin(angle);
+  Matrix rotation;   // POV-Ray's Compute_Axis_Rotation_Transform, in its row-vector layout (ours too)
+  rotation.m[0] = {a.x * a.x + c * (1 - a.x * a.x), a.x * a.y * (1 - c) + a.z * s, a.x * a.z * (1 - c) - a.y * s};
+  rotation.m[1] = {a.x * a.y * (1 - c) - a.z * s, a.y * a.y + c * (1 - a.y * a.y), a.y * a.z * (1 - c) + a.x * s};
+  rotation.m[2] = {a.x * a.z * (1 - c) + a.y * s, a.y * a.z * (1 - c) - a.x * s, a.z * a.z + c * (1 - a.z * a.z)};
+  return Matrix::scaling({radius, radius, length}) * rotation * Matrix::translation(origin);
+}
+
+// Cone::Compute_Cone_Data / Compute_Cylinder_Data, then Compute_BBox: the canonical box from z = dist to 1 (0 for a
+// cylinder, and for a cone whose radii differ by less than EPSILON), carried by the canonical transform and the
+// object's own. A cone is turned so that its wider end is at z = 1, the narrow end at dist, the apex at 0.
+BBox cone_box(Vec3 base, double base_radius, Vec3 apex, double apex_radius, const Matrix& object) {
+  Vec3 axis = apex - base;
+  const double len = length(axis);
+  axis = axis / len;   // the parser refuses coincident end points
+  auto cylinder = [&]() {
+    const Vec3 a = normalize(apex - base);
+    return BBox::make({-1, -1, 0}, {2, 2, 1}).transformed(canonical_to_shape(base, a, apex_radius, len) * object);
+  };
+  if (std::fabs(apex_radius - base_radius) < kEpsilon) return cylinder();
+  if (apex_radius < base_radius) {
+    std::swap(base, apex);
+    std::swap(base_radius, apex_radius);
+    axis = -1.0 * axis;
+  }
+  const double to_origin = base_radius * len / (apex_radius - base_radius);
+  const Vec3 origin = base - to_origin * axis;
+  const double total = to_origin + len;
+  if ((apex_radius - base_radius) * len / total < kEpsilon) return cylinder();
+  const double dist = to_origin / total;
+  return BBox::make({-1, -1, dist}, {2, 2, 1 - dist}).transformed(canonical_to_shape(origin, axis, apex_radius, total) *
+                                                                  object);
+}
 
 // A similarity: the linear part is a rotation times a uniform scale (orthogonal rows of one length). Returns the
 // scale factor, or 0 if the matrix is not one.
@@ -115,9 +168,9 @@ std::optional<std::string> shape_outside_parser(const Object& o, bool box = fals
   for (const auto* list : {&o.clipped_by, &o.bounded_by})
     for (const auto& c : *list)
       if (auto u = shape_outside_parser(c, box)) return u;
-  if (std::holds_alternative<Cylinder>(o.shape)) return std::string("the shape 'cylinder'");
-  if (std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
-  if (std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
+  if (!box && std::holds_alternative<Cylinder>(o.shape)) return std::string("the shape 'cylinder'");
+  if (!box && std::holds_alternative<Cone>(o.shape)) return std::string("the shape 'cone'");
+  if (!box && std::holds_alternative<Disc>(o.shape)) return std::string("the shape 'disc'");
   if (!box && std::holds_alternative<Torus>(o.shape)) return std::string("the shape 'torus'");
   if (std::holds_alternative<Poly>(o.shape)) return std::string("the shape 'poly'");
   if (std::holds_alternative<Quadric>(o.shape)) return std::string("the shape 'quadric'");
@@ -300,9 +353,16 @@ BBox bounding_box(const Object& o) {
       return u;
     }
     // Refused (or handed to the renderer's geometry) by shape_outside_parser before any visit.
-    BBox operator()(const Cylinder&) const { throw std::logic_error("extent of a cylinder"); }
-    BBox operator()(const Cone&) const { throw std::logic_error("extent of a cone"); }
-    BBox operator()(const Disc&) const { throw std::logic_error("extent of a disc"); }
+    // Parse_Cone and Parse_Cylinder read the first end point as the apex, the second as the base.
+    BBox operator()(const Cylinder& c) const { return cone_box(c.end2, c.radius, c.end1, c.radius, o.world_from_object); }
+    BBox operator()(const Cone& c) const { return cone_box(c.end2, c.radius2, c.end1, c.radius1, o.world_from_object); }
+    // Disc::Compute_BBox: the unit disc's square, SMALL_TOLERANCE thick, scaled by the outer radius, placed by the
+    // disc's canonical transform (radius and length 1) and the object's.
+    BBox operator()(const Disc& d) const {
+      const double r = d.radius;
+      return BBox::make({-r, -r, -kSmallTolerance}, {2 * r, 2 * r, 2 * kSmallTolerance})
+          .transformed(canonical_to_shape(d.centre, d.normal, 1.0, 1.0) * o.world_from_object);
+    }
     // Torus::Compute_BBox: the box of radius R + r around the centre, r high, carried by the torus's transform.
     BBox operator()(const Torus& t) const {
       const double r1 = t.minor, r2 = t.major + t.minor;
