@@ -1,5 +1,5 @@
-// SDL spline values: `spline { … }` declarations, calls S(t) and S(t, type), copies, and the errors of
-// malformed ones. Every expected value below was printed by POV-Ray 3.7.0.10 (the `povray`
+// SDL spline values: `spline { … }` declarations, calls S(t) and S(t, type), copies, `function { spline { … } }`,
+// and the errors of malformed ones. Every expected value below was printed by POV-Ray 3.7.0.10 (the `povray`
 // binary, `#debug vstr(…, S(t), …, 0, 15)`), on the same scene text.
 #include <string>
 #include <vector>
@@ -153,6 +153,13 @@ TEST(Spline, EntriesMayComeFromLoopsAndExpressions) {
       "#declare S = spline { natural_spline #for (I, 0, 3) I, <I, I*I, -I> #end }\n";
   expect_vector("S(1.5)", s, {1.5, 2.2, -1.5});   // natural: the parabola bends less near the free ends
   expect_vector("S(0.5)*2 + y", "#declare S = spline { 0, x 1, 3*x }\n", {4, 1, 0});
+}
+
+TEST(Spline, FunctionOfASplineIsAVectorFunctionOfT) {
+  const std::string g = "#declare U = spline { 3, <3,3,3>, 1, <1,1,1>, 2, <2,2,2> }\n"
+                        "#declare G = function { spline { U } }\n";
+  expect_vector("G(1.5)", g, {1.5, 1.5, 1.5});
+  EXPECT_NEAR(eval_float("H(1.5, 0, 0)", g + "#declare H = function { G(x).y + 1 }\n"), 2.5, 1e-12);
 }
 
 TEST(Spline, MalformedSplinesAndCallsAreLocatedErrors) {
