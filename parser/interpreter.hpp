@@ -333,8 +333,7 @@ class Interpreter {
   bool function_budget_set_ = false;
 
   // ---- spline values (spline_values.cpp; the interpolation is splines.cpp) ----
-  // `spline { … }` (a definition) or `S(…)` (a call of a declared spline) as a right-hand value; nothing for
-  // `S` alone, which the caller copies like any declared value.
+  // `spline { … }` (a definition), `S(…)` (a call of a declared spline) or `S` (a copy) as a right-hand value.
   std::optional<Value> try_parse_spline_rvalue(const Token& first);
   // `{ [S] [type…] T, V … }` after the keyword `spline`: the spline it makes.
   SplineValue parse_spline_block();

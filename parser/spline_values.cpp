@@ -35,7 +35,11 @@ const SplineValue* spline_of(const Value* v) {
 std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
   if (first.kind != TokenKind::identifier) return std::nullopt;
   if (first.is("spline") && peek_raw().is("{")) return Value(Boxed<SplineValue>(parse_spline_block()));
-  if (!spline_of(lookup(first))) return std::nullopt;
+  const Value* found = lookup(first);
+  if (!spline_of(found)) return std::nullopt;
+  // Held before looking further: the look may end the macro whose local `first` is (`#local L = spline {…} L`
+  // as a macro's result), after which the name no longer resolves.
+  Value held = *found;
   const Token after = peek_raw();   // raw: a directive after `#declare T = S` runs once T is stored
   if (after.is("(")) {
     unget(first);   // a call: the value is an expression (S(0.5) + y)
@@ -44,7 +48,7 @@ std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
   if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
     fail_expected(after, "'(' and the argument of the spline '" + std::string(first.text) +
                              "' (an incomplete spline call)");
-  return std::nullopt;
+  return held;   // `#declare T = S;`: T is a copy (an immutable value, so shared)
 }
 
 SplineValue Interpreter::parse_spline_block() {

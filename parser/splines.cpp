@@ -55,8 +55,9 @@ double natural(const SplineValue& s, std::size_t j, int k, double t) {
   const SplineEntry& b = s.entries[j + 1];
   const double ma = s.second_derivatives[j][k], mb = s.second_derivatives[j + 1][k];
   const double h = b.t - a.t, d = t - a.t;
+  // Summed in POV-Ray's order: a knot's value then comes out with POV-Ray's rounding (even the sign of a zero).
   const double cubic_part = ma / 2 + d * (mb - ma) / (6 * h);
-  const double first_part = (b.value[k] - a.value[k]) / h - h * (mb + 2 * ma) / 6 + d * cubic_part;
+  const double first_part = -(h / 6) * (mb + 2 * ma) + (b.value[k] - a.value[k]) / h + d * cubic_part;
   return a.value[k] + d * first_part;
 }
 
@@ -68,9 +69,9 @@ double catmull_rom(const std::vector<SplineEntry>& e, std::size_t j, int k, doub
   const double middle = slope(e[j], e[j + 1], k);
   const double tangent0 = (slope(e[j - 1], e[j], k) + middle) / 2 * dt;
   const double tangent1 = (slope(e[j + 1], e[j + 2], k) + middle) / 2 * dt;
-  const double u2 = u * u, u3 = u2 * u;
-  return e[j].value[k] * (2 * u3 - 3 * u2 + 1) + e[j + 1].value[k] * (3 * u2 - 2 * u3) +
-         tangent0 * (u3 - 2 * u2 + u) + tangent1 * (u3 - u2);
+  // The Hermite basis, each product in POV-Ray's order (3*u*u is not 3*(u*u) to the last bit).
+  return e[j].value[k] * (2 * u * u * u - 3 * u * u + 1) + e[j + 1].value[k] * (3 * u * u - 2 * u * u * u) +
+         tangent0 * (u * u * u - 2 * u * u + u) + tangent1 * (u * u * u - u * u);
 }
 
 // One component at t, given i = segment_end(t). `last` is the index of the last entry (at least 1).
