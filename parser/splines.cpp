@@ -38,7 +38,9 @@ double linear(const SplineEntry& a, const SplineEntry& b, int k, double t) {
 }
 
 // The parabola through three entries, evaluated as a*t² + b*t + c: POV-Ray works with these coefficients of t
-// (not with a form centred on an entry), so its rounding for large t is reproduced closely.
+// (not with a form centred on an entry), so its rounding for large t is reproduced closely, though not to the
+// last bit: our coefficients are factored differently (on 60 random points they differed from POV-Ray 3.7's by
+// up to 4e-14; linear, cubic and natural splines matched to all 16 printed digits).
 double quadratic(const SplineEntry& e1, const SplineEntry& e2, const SplineEntry& e3, int k, double t) {
   const double t1 = e1.t, t2 = e2.t, t3 = e3.t;
   const double v1 = e1.value[k], v2 = e2.value[k], v3 = e3.value[k];
