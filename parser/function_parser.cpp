@@ -204,14 +204,18 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     if (p.pattern == PatternKind::solid && !p.unsupported) f->colour = p.colour;
     f->pigment = std::make_shared<const Pigment>(p);
     f->return_size = 5;
-  } else if (k == "pattern" || k == "spline") {
-    no_parameters(k == "pattern" ? "pattern" : "spline");
-    f->kind = k == "pattern" ? FunctionValue::Kind::pattern : FunctionValue::Kind::spline;
-    in_.skip_balanced(in_.expect("{", " after '" + std::string(k) + "'"));
-    if (k == "spline") {
-      f->parameter_count = 1;
-      f->return_size = 5;   // 2 to 5 terms, known only from the spline's points
-    }
+  } else if (k == "spline") {
+    // function { spline { … } }: a vector function of one parameter, the spline's t (POV-Ray's f_spline),
+    // returning the spline's 2 to 5 components.
+    no_parameters("spline");
+    f->kind = FunctionValue::Kind::spline;
+    f->spline = std::make_shared<const SplineValue>(in_.parse_spline_block());
+    f->parameter_count = 1;
+    f->return_size = f->spline->terms;
+  } else if (k == "pattern") {
+    no_parameters("pattern");
+    f->kind = FunctionValue::Kind::pattern;
+    in_.skip_balanced(in_.expect("{", " after 'pattern'"));
   } else {
     in_.unget(first);
     if (parameters_.empty()) parameters_ = {"x", "y", "z"};
@@ -787,6 +791,7 @@ void FunctionParser::compile_call(int i) {
       }
       break;
     case FunctionValue::Kind::transform:
+    case FunctionValue::Kind::spline:
       emit(FnOp::vector_call, callee_index(n.fn), n.member);
       depth_ += 1 - argc;
       return;
@@ -799,7 +804,7 @@ void FunctionParser::compile_call(int i) {
       break;
     default: break;
   }
-  // Evaluating it is refused (noise, patterns, splines); defining a function that calls it is not.
+  // Evaluating it is refused (noise, patterns); defining a function that calls it is not.
   emit(FnOp::unsupported, callee_index(n.fn));
   depth_ += 1 - argc;
 }

@@ -17,6 +17,7 @@
 
 #include "parser/description.hpp"
 #include "parser/source_location.hpp"
+#include "parser/splines.hpp"
 #include "parser/vecmath.hpp"
 
 namespace povtrace::sdl {
@@ -88,12 +89,13 @@ struct FunctionValue {
   Matrix transform;                // Kind::transform
   std::optional<Colour> colour;    // Kind::pigment when the pigment is a plain colour
   std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment (the renderer evaluates patterns)
+  std::shared_ptr<const SplineValue> spline;   // Kind::spline: its one parameter is the spline's t
 
   // What the function is called in an "unsupported" message.
   std::string description() const;
 };
 
-// A function that cannot be evaluated (noise, patterns, splines) or evaluation nested too deeply. The SDL call
+// A function that cannot be evaluated (noise, patterns) or evaluation nested too deeply. The SDL call
 // site turns it into a ParseError at the call.
 class FunctionError : public std::runtime_error {
  public:
@@ -107,8 +109,7 @@ class FunctionError : public std::runtime_error {
 double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
                          std::uint64_t* steps_left = nullptr);
 
-// The first part of `f` that evaluate_function would refuse (a noise-based internal function, a pattern, a
-// spline…), as its description(); nothing when f can be evaluated everywhere. Lets a shape that evaluates f while
+// The first part of `f` that evaluate_function would refuse (a noise-based internal function, a pattern…), as its description(); nothing when f can be evaluated everywhere. Lets a shape that evaluates f while
 // rendering (isosurface) be refused by name when it is parsed.
 std::optional<std::string> unevaluable_part(const FunctionValue& f);
 

@@ -119,6 +119,12 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
       out[2] = r.z;
       return;
     }
+    case FunctionValue::Kind::spline: {
+      // Only the spline's own components: POV-Ray's f_spline leaves the others as they were (zero).
+      const std::array<double, 5> v = evaluate_spline(*f.spline, f.spline->type, args[0]);
+      std::copy(v.begin(), v.begin() + f.spline->terms, out);
+      return;
+    }
     case FunctionValue::Kind::pigment:
       if (f.colour) {
         out[0] = f.colour->r;
@@ -304,7 +310,8 @@ std::optional<std::string> unevaluable_part(const FunctionValue& f) {
     case FunctionValue::Kind::internal:
       if (internal_function_info(f.internal_id).evaluable) return std::nullopt;
       return f.description();
-    case FunctionValue::Kind::transform: return std::nullopt;
+    case FunctionValue::Kind::transform:
+    case FunctionValue::Kind::spline: return std::nullopt;
     case FunctionValue::Kind::pigment:
       if (f.colour) return std::nullopt;
       return f.description();

@@ -332,6 +332,14 @@ class Interpreter {
   std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
   bool function_budget_set_ = false;
 
+  // ---- spline values (spline_values.cpp; the interpolation is splines.cpp) ----
+  // `spline { … }` (a definition), `S(…)` (a call of a declared spline) or `S` (a copy) as a right-hand value.
+  std::optional<Value> try_parse_spline_rvalue(const Token& first);
+  // `{ [S] [type…] T, V … }` after the keyword `spline`: the spline it makes.
+  SplineValue parse_spline_block();
+  // `(t [, type])` after the spline identifier `name`: its value at t.
+  Numeric call_spline_from_sdl(const Token& name, Boxed<SplineValue> spline);
+
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
   Finish parse_finish_block(const Token& keyword, const Finish& start);

@@ -9,7 +9,7 @@
 // - Then: accuracy ≤ 0 becomes 0.001, max_gradient ≤ 0 becomes 1.1, max_trace above 10 becomes 10 and below 1
 //   becomes 1, each with a warning.
 // - `evaluate` makes POV-Ray adapt max_gradient while it renders, so each thread's pixel order shapes the image:
-//   refused by name. A function povtrace cannot evaluate (noise-based internal functions, patterns, splines) is
+//   refused by name. A function povtrace cannot evaluate (noise-based internal functions, patterns) is
 //   refused by name too.
 #include "parser/function_value.hpp"
 #include "parser/int_cast.hpp"

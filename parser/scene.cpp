@@ -241,6 +241,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     return Value(MaterialValue{holder.texture, holder.interior});
   }
   if (k == "array") return parse_array_declaration(first);
+  if (auto s = try_parse_spline_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
   if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
       v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
@@ -248,7 +249,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     return *v;
   }
   if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
-  // Any other block value (color_map, normal, media, fog, sky_sphere, spline, array, function, …): parsed
+  // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
   // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
   if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
     Token after = peek_raw();

@@ -34,6 +34,7 @@ struct Namer {
     return m.textures ? "texture_map" : m.pigments ? "pigment_map" : "color_map";
   }
   std::string operator()(const Normal&) const { return "normal"; }
+  std::string operator()(const SplineValue&) const { return "spline"; }
 };
 }  // namespace
 

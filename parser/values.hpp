@@ -11,6 +11,7 @@
 
 #include "parser/description.hpp"
 #include "parser/lexer.hpp"
+#include "parser/splines.hpp"
 
 namespace povtrace::sdl {
 
@@ -99,7 +100,8 @@ using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem
                            Boxed<Pigment>, Boxed<Finish>, Boxed<Interior>, Boxed<Camera>, Boxed<MacroDefinition>,
                            Alias, Boxed<Matrix>, Boxed<OpaqueValue>, Boxed<MaterialValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
-                           std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue, Boxed<Normal>>;
+                           std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue, Boxed<Normal>,
+                           Boxed<SplineValue>>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies
