@@ -228,6 +228,66 @@ const char* number_end(const char* c, const char* end) {
   return p;
 }
 
+namespace {
+// 10^k for the exact decimal fast path below (every one exactly a double).
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+// One token of lex_quick at `c` (blanks already skipped): its kind and end, and a number's value. False where
+// lex_quick leaves the token to lex_token.
+bool scan_quick_token(const char* c, const char* end, TokenKind& kind, const char*& token_end, double& number) {
+  if (c == end || *c == '"') return false;                                    // the end, a string
+  if (*c == '/' && c + 1 < end && (c[1] == '/' || c[1] == '*')) return false;   // a comment
+  token_end = number_end(c, end);
+  if (token_end != c) {
+    kind = TokenKind::number;
+    // lex_token's checks: a second '.' is an error, a value from_chars cannot give exactly is handled there.
+    if (token_end < end && *token_end == '.' && token_end + 1 < end && is_digit(token_end[1])) return false;
+    // Digits with at most one '.', as most numbers of a scene are, at most 15 digits in all: the digits as an
+    // integer M (exact, below 2^53) divided by 10^k for k digits after the '.', one correctly rounded division of
+    // two exact doubles, so the very double from_chars gives (Clinger's fast path). Digits only were 6% of the
+    // first reading of a 7 MB scene through from_chars, decimals like 0.25 another 2%.
+    double whole = 0;
+    int digits = 0, fraction_digits = -1;
+    const char* d = c;
+    for (; d < token_end && digits <= 15; ++d) {
+      if (*d == '.') {
+        if (fraction_digits >= 0) break;
+        fraction_digits = 0;
+        continue;
+      }
+      if (!is_digit(*d)) break;
+      whole = whole * 10 + (*d - '0');
+      ++digits;
+      if (fraction_digits >= 0) ++fraction_digits;
+    }
+    if (d == token_end && digits <= 15) {
+      number = fraction_digits > 0 ? whole / kExactPowersOfTen[fraction_digits] : whole;
+      return true;
+    }
+    const auto [ptr, ec] = std::from_chars(c, token_end, number);
+    (void)ptr;
+    return ec == std::errc();
+  }
+  if (is_identifier_first(*c)) {
+    kind = TokenKind::identifier;
+    for (token_end = c + 1; token_end < end && is_identifier_other(*token_end);) ++token_end;
+    return true;
+  }
+  if (c + 1 < end && c[1] == '=' && (*c == '<' || *c == '>' || *c == '!')) {
+    kind = TokenKind::symbol;
+    token_end = c + 2;
+    return true;
+  }
+  if (is_one_char_symbol(*c)) {
+    kind = TokenKind::symbol;
+    token_end = c + 1;
+    return true;
+  }
+  return false;   // an illegal character: lex_token reports it
+}
+}  // namespace
+
 bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out) {
   const char* base = file.text.data();
   const char* end = base + file.text.size();
@@ -236,42 +296,52 @@ bool lex_quick(const SourceFile& file, LexPosition at, QuickToken& out) {
     ++at.offset;
     if (*c == '\n') { ++at.line; at.column = 1; } else { ++at.column; }
   }
-  if (c == end || *c == '"') return false;                                    // the end, a string
-  if (*c == '/' && c + 1 < end && (c[1] == '/' || c[1] == '*')) return false;   // a comment
-  const char* token_end = number_end(c, end);
+  const char* token_end = c;
   TokenKind kind = TokenKind::number;
-  if (token_end != c) {
-    // lex_token's checks: a second '.' is an error, a value from_chars cannot give exactly is handled there.
-    if (token_end < end && *token_end == '.' && token_end + 1 < end && is_digit(token_end[1])) return false;
-    // Digits only, as most numbers of a scene are: their value summed by hand, exact below 10^15 (every step an
-    // integer below 2^53), so the same double from_chars gives — which a profile of a 7 MB scene had at 6%.
-    const char* d = c;
-    double whole = 0;
-    if (token_end - c <= 15)
-      for (; d < token_end && is_digit(*d); ++d) whole = whole * 10 + (*d - '0');
-    if (d == token_end) {
-      out.number = whole;
-    } else {
-      const auto [ptr, ec] = std::from_chars(c, token_end, out.number);
-      if (ec != std::errc()) return false;
-      (void)ptr;
-    }
-  } else if (is_identifier_first(*c)) {
-    kind = TokenKind::identifier;
-    for (token_end = c + 1; token_end < end && is_identifier_other(*token_end);) ++token_end;
-  } else if (c + 1 < end && c[1] == '=' && (*c == '<' || *c == '>' || *c == '!')) {
-    kind = TokenKind::symbol;
-    token_end = c + 2;
-  } else if (is_one_char_symbol(*c)) {
-    kind = TokenKind::symbol;
-    token_end = c + 1;
-  } else {
-    return false;   // an illegal character: lex_token reports it
-  }
+  double number = 0;
+  if (!scan_quick_token(c, end, kind, token_end, number)) return false;
   out.kind = kind;
   out.begin = at;
   out.length = static_cast<std::size_t>(token_end - c);
+  out.number = number;
   return true;
+}
+
+std::size_t FileTokens::lex_quick_run(std::size_t until, NameInterner& names) {
+  const char* base = file_->text.data();
+  const char* end = base + file_->text.size();
+  // The position as a line and the offset its line starts at: the column is needed only once per token.
+  std::size_t offset = lexed_to.offset;
+  int line = lexed_to.line;
+  std::size_t line_start = offset - static_cast<std::size_t>(lexed_to.column - 1);
+  std::size_t count = 0;
+  while (size_ < until) {
+    const char* c = base + offset;
+    int token_line = line;
+    std::size_t token_line_start = line_start;
+    for (; c < end && is_blank(*c); ++c)
+      if (*c == '\n') {
+        ++token_line;
+        token_line_start = static_cast<std::size_t>(c - base) + 1;
+      }
+    const char* token_end = c;
+    TokenKind kind = TokenKind::number;
+    double number = 0;
+    if (!scan_quick_token(c, end, kind, token_end, number)) break;   // left to lex_token, blanks and all
+    const auto begin = static_cast<std::size_t>(c - base);
+    const auto length = static_cast<std::size_t>(token_end - c);
+    if (static_cast<std::uint64_t>(begin) + length > UINT32_MAX || length > LexedToken::kMaxLength) break;
+    const std::uint32_t name =
+        kind == TokenKind::identifier ? names.intern(std::string_view(c, length)) : 0;
+    append(kind, static_cast<std::uint32_t>(begin), token_line, static_cast<std::uint32_t>(token_line_start),
+           static_cast<std::uint32_t>(length), name, number);
+    offset = begin + length;
+    line = token_line;
+    line_start = token_line_start;
+    ++count;
+  }
+  if (count > 0) lexed_to = LexPosition{offset, line, static_cast<int>(offset - line_start) + 1};
+  return count;
 }
 
 std::string string_value(const Token& token, const SourceFile& file, bool decode_escapes) {

@@ -77,20 +77,31 @@ class FileTokens {
     push_back(t.kind, t.begin, static_cast<std::uint32_t>(t.text.size()), name, t.number);
   }
   void push_back(TokenKind kind, const LexPosition& begin, std::uint32_t length, std::uint32_t name, double number) {
-    if ((size_ >> kChunkBits) == chunks_.size()) chunks_.push_back(std::make_unique<LexedToken[]>(kChunkSize));
-    LexedToken& k = chunks_[size_ >> kChunkBits][size_ & kChunkMask];
-    k.offset = static_cast<std::uint32_t>(begin.offset);
-    k.line = begin.line;
-    k.kind_length = length << 3 | static_cast<std::uint32_t>(kind);
-    k.payload = name;
-    if (kind == TokenKind::number) {
-      k.payload = static_cast<std::uint32_t>(numbers_.size());
-      numbers_.push_back(number);
-    }
-    const auto line = static_cast<std::size_t>(begin.line);
-    if (line_starts_.size() <= line) line_starts_.resize(line + 1, 0);
-    line_starts_[line] = static_cast<std::uint32_t>(begin.offset) - static_cast<std::uint32_t>(begin.column - 1);
-    ++size_;
+    append(kind, static_cast<std::uint32_t>(begin.offset), begin.line,
+           static_cast<std::uint32_t>(begin.offset) - static_cast<std::uint32_t>(begin.column - 1), length, name,
+           number);
+  }
+  // Reads the common tokens lex_quick reads from `lexed_to` on, keeping them, until `until` tokens are kept or the
+  // next token is one lex_quick leaves to lex_token (which the caller then reads); identifiers get their names from
+  // `names`. Returns how many it kept. The first reading of a large scene: one loop, no Token, no QuickToken.
+  struct NameInterner {
+    virtual std::uint32_t intern(std::string_view name) = 0;
+
+   protected:
+    ~NameInterner() = default;
+  };
+  std::size_t lex_quick_run(std::size_t until, NameInterner& names);
+  // Drops the tokens from `index` on, lexed ahead and read by nobody yet: lexing goes on from the first byte of
+  // token `index`, and reads the same tokens again (the mesh literal scanner reads that text itself instead).
+  void forget_from(std::size_t index) {
+    const LexedToken& k = (*this)[index];
+    lexed_to = LexPosition{k.offset, k.line, column(k)};
+    for (std::size_t i = index; i < size_; ++i)
+      if ((*this)[i].kind() == TokenKind::number) {
+        numbers_.resize((*this)[i].payload);
+        break;
+      }
+    size_ = index;
   }
   double number(const LexedToken& k) const { return numbers_[k.payload]; }
   int column(const LexedToken& k) const {
@@ -127,6 +138,23 @@ class FileTokens {
   }
 
  private:
+  void append(TokenKind kind, std::uint32_t offset, int line, std::uint32_t line_start, std::uint32_t length,
+              std::uint32_t name, double number) {
+    if ((size_ >> kChunkBits) == chunks_.size()) chunks_.push_back(std::make_unique<LexedToken[]>(kChunkSize));
+    LexedToken& k = chunks_[size_ >> kChunkBits][size_ & kChunkMask];
+    k.offset = offset;
+    k.line = line;
+    k.kind_length = length << 3 | static_cast<std::uint32_t>(kind);
+    k.payload = name;
+    if (kind == TokenKind::number) {
+      k.payload = static_cast<std::uint32_t>(numbers_.size());
+      numbers_.push_back(number);
+    }
+    const auto l = static_cast<std::size_t>(line);
+    if (line_starts_.size() <= l) line_starts_.resize(l + 1, 0);
+    line_starts_[l] = line_start;
+    ++size_;
+  }
   static constexpr unsigned kChunkBits = 12;
   static constexpr std::size_t kChunkSize = std::size_t{1} << kChunkBits;
   static constexpr std::size_t kChunkMask = kChunkSize - 1;

@@ -400,14 +400,14 @@ std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
   for (const Control& c : controls_)
     if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == frames_.size() - 1)
       return std::nullopt;
-  const FileTokens& tokens = *f.tokens;
-  if (f.index == tokens.size()) return LiteralScanStart{tokens.lexed_to, 0};
-  if (f.index + 1 == tokens.size()) {   // one token lexed ahead (accept() looked at it): the scan starts there
-    const LexedToken& k = tokens[f.index];
-    if (k.kind() == TokenKind::end_of_input) return std::nullopt;
-    return LiteralScanStart{LexPosition{k.offset, k.line, tokens.column(k)}, 1};
+  FileTokens& tokens = *f.tokens;
+  // Tokens the lexer read ahead (lex_more reads in runs; accept() may have looked at the first) are dropped: the
+  // scan reads their text itself, from the first of them.
+  if (f.index < tokens.size()) {
+    if (tokens[f.index].kind() == TokenKind::end_of_input) return std::nullopt;
+    tokens.forget_from(f.index);
   }
-  return std::nullopt;
+  return LiteralScanStart{tokens.lexed_to, 0};
 }
 
 void Interpreter::literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {

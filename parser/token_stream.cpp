@@ -16,11 +16,25 @@ constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested fil
 constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
 }  // namespace
 
+namespace {
+// The symbol table's names for the identifiers the lexer keeps.
+struct SymbolNames final : FileTokens::NameInterner {
+  explicit SymbolNames(SymbolTable& s) : symbols(s) {}
+  std::uint32_t intern(std::string_view name) override { return symbols.intern(name); }
+  SymbolTable& symbols;
+};
+// How far the lexer reads ahead of the token asked for, in one run of lex_quick_run: lexing is context free (the
+// grammar's tokens never depend on the parse), and what it cannot read quickly — a comment, a string, an error —
+// stops the run, so that lex_token reads it, and reports it, only when the parse reaches it.
+constexpr std::size_t kLexAhead = 256;
+}  // namespace
+
 const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
   const SourceFile& file = tokens.file();
   while (tokens.size() <= index) {
     if (tokens.size() > 0 && tokens[tokens.size() - 1].kind() == TokenKind::end_of_input)
       return tokens[tokens.size() - 1];   // the end of a file reads as the end however often it is asked for
+    if (SymbolNames names(symbols_); tokens.lex_quick_run(index + kLexAhead, names) > 0) continue;
     if (QuickToken q; lex_quick(file, tokens.lexed_to, q)) {   // most tokens: no grammar run, no Token made
       if (q.begin.offset + q.length > UINT32_MAX || q.length > LexedToken::kMaxLength)
         fail(SourceLoc{file.name, q.begin.line, q.begin.column},
