@@ -201,7 +201,14 @@ Numeric Interpreter::parse_expression() {
 // there runs only once the value is finished — e.g. the next `#declare` after a value without ';' (§1 item 6).
 Numeric Interpreter::parse_additive() {
   if (Numeric n; run_expression_program(false, n)) return n;
-  Numeric value = parse_multiplicative();
+  return parse_additive_rest(parse_multiplicative());
+}
+
+Numeric Interpreter::parse_additive_after(Numeric first_operand) {
+  return parse_additive_rest(parse_multiplicative_rest(parse_postfix(first_operand)));
+}
+
+Numeric Interpreter::parse_additive_rest(Numeric value) {
   while (true) {
     const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
     const bool plus = op.is("+");
@@ -212,8 +219,9 @@ Numeric Interpreter::parse_additive() {
   }
 }
 
-Numeric Interpreter::parse_multiplicative() {
-  Numeric value = parse_unary();
+Numeric Interpreter::parse_multiplicative() { return parse_multiplicative_rest(parse_unary()); }
+
+Numeric Interpreter::parse_multiplicative_rest(Numeric value) {
   while (true) {
     const Ahead look = raw_ahead();
     const bool times = look.is("*");

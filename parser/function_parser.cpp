@@ -814,18 +814,20 @@ void FunctionParser::compile_call(int i) {
 std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) {
   if (first.is("function")) return Value(FunctionParser(*this).parse_definition(first));
   const Value* v = lookup(first);
-  if (!v || !std::holds_alternative<std::shared_ptr<const FunctionValue>>(*v)) return std::nullopt;
-  const Token after = peek_raw();
-  if (after.is("(")) {
-    unget(first);   // a call: the value is an expression (F(1,2,3) + 1)
-    return Value(parse_additive().stored());
+  const auto* found = v ? std::get_if<std::shared_ptr<const FunctionValue>>(v) : nullptr;
+  if (!found) return std::nullopt;
+  // Held before looking further: the look may end the macro whose local `first` is (`#local F = function {…} F`
+  // as a macro's result, or `A()(2)`), after which the name no longer resolves.
+  std::shared_ptr<const FunctionValue> held = *found;
+  const Token after = peek_raw();   // raw: a directive after `#declare G = F` runs once G is stored
+  if (after.is("(")) {   // a call: the value is an expression (F(1,2,3) + 1), its first operand this call
+    return Value(parse_additive_after(call_function_from_sdl(first, std::move(held))).stored());
   }
-  // `#declare G = F;` copies the function; `F + 1` or `F.x` is a call without its arguments (POV-Ray: "incomplete
-  // function call").
+  // `F + 1` or `F.x` is a call without its arguments (POV-Ray: "incomplete function call").
   if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
     fail_expected(after, "'(' and the arguments of the function '" + std::string(first.text) +
                              "' (an incomplete function call)");
-  return std::nullopt;
+  return Value(std::move(held));   // `#declare G = F;`: G is a copy (an immutable value, so shared)
 }
 
 std::shared_ptr<const FunctionValue> Interpreter::parse_function_definition(const Token& keyword) {

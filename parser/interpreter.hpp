@@ -236,6 +236,11 @@ class Interpreter {
   Numeric parse_expression();            // full level: ?:, & |, comparisons, + -
   Numeric parse_additive();              // parameter level (Parse_Rel_Factor)
   Numeric parse_multiplicative();
+  // The rest of an additive expression whose first operand the caller has already read (a call of a function or
+  // spline it held, the identifier of which may no longer resolve): its postfix, then * / and + - as usual.
+  Numeric parse_additive_after(Numeric first_operand);
+  Numeric parse_additive_rest(Numeric value);         // + - after the operand `value`
+  Numeric parse_multiplicative_rest(Numeric value);   // * / after the operand `value`
   Numeric parse_unary();
   Numeric parse_postfix(Numeric value);
   Numeric parse_primary(const Token& t);   // t: the operand's first token, already read
@@ -322,7 +327,7 @@ class Interpreter {
 
   // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
   friend class FunctionParser;
-  // `function …` (a definition) or `F(…)` (a call of a declared function) as a right-hand value.
+  // `function …` (a definition), `F(…)` (a call of a declared function) or `F` (a copy) as a right-hand value.
   std::optional<Value> try_parse_function_rvalue(const Token& first);
   Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
   // `function [(params)] { … }` after its keyword: the compiled function.

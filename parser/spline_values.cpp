@@ -38,12 +38,11 @@ std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
   const Value* found = lookup(first);
   if (!spline_of(found)) return std::nullopt;
   // Held before looking further: the look may end the macro whose local `first` is (`#local L = spline {…} L`
-  // as a macro's result), after which the name no longer resolves.
+  // as a macro's result, or `M()(0.5)`), after which the name no longer resolves.
   Value held = *found;
   const Token after = peek_raw();   // raw: a directive after `#declare T = S` runs once T is stored
-  if (after.is("(")) {
-    unget(first);   // a call: the value is an expression (S(0.5) + y)
-    return Value(parse_additive().stored());
+  if (after.is("(")) {   // a call: the value is an expression (S(0.5) + y), its first operand this call
+    return Value(parse_additive_after(call_spline_from_sdl(first, std::get<Boxed<SplineValue>>(held))).stored());
   }
   if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
     fail_expected(after, "'(' and the argument of the spline '" + std::string(first.text) +

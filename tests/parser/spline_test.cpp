@@ -178,6 +178,16 @@ TEST(Spline, MacrosArraysAndLoopsHoldAndCallSplines) {
             "3.000000,1.000000,0.000000 3.000000,3.000000 2.000000,2.000000,0.000000\n");
 }
 
+TEST(Spline, ALocalSplineReturnedByAMacroMayBeCalledAtOnce) {
+  // `S()(1)` in a #declare: the call's '(' ends the macro whose local the spline is. POV-Ray 3.7.0.10 printed
+  // this line for the same scene.
+  EXPECT_EQ(debug_output("#version 3.7;\n"
+                         "#macro S() #local Q = spline { 0, <1,0,0> 2, <5,0,0> } Q #end\n"
+                         "#declare V = S()(1) + 1;\n"
+                         "#debug concat(vstr(3, V, \",\", 0, 3), \" \", vstr(3, S()(0.5) * 2, \",\", 0, 3), \"\\n\")\n"),
+            "4.000,1.000,1.000 4.000,0.000,0.000\n");
+}
+
 TEST(Spline, FunctionOfASplineIsAVectorFunctionOfT) {
   const std::string g = "#declare U = spline { 3, <3,3,3>, 1, <1,1,1>, 2, <2,2,2> }\n"
                         "#declare G = function { spline { U } }\n";
