@@ -314,31 +314,59 @@ std::size_t FileTokens::lex_quick_run(std::size_t until, NameInterner& names) {
   std::size_t offset = lexed_to.offset;
   int line = lexed_to.line;
   std::size_t line_start = offset - static_cast<std::size_t>(lexed_to.column - 1);
+  // Tokens are read in groups, their names prepared for the whole group before any is interned.
+  struct Read {
+    TokenKind kind;
+    std::uint32_t begin, length, line_start;
+    int line;
+    double number;
+    std::uint64_t prepared;
+  };
+  constexpr std::size_t kGroup = 64;
+  Read group[kGroup];
   std::size_t count = 0;
-  while (size_ < until) {
-    const char* c = base + offset;
-    int token_line = line;
-    std::size_t token_line_start = line_start;
-    for (; c < end && is_blank(*c); ++c)
-      if (*c == '\n') {
-        ++token_line;
-        token_line_start = static_cast<std::size_t>(c - base) + 1;
+  bool more = true;
+  while (more && size_ < until) {
+    std::size_t n = 0;
+    while (n < kGroup && size_ + n < until) {
+      const char* c = base + offset;
+      int token_line = line;
+      std::size_t token_line_start = line_start;
+      for (; c < end && is_blank(*c); ++c)
+        if (*c == '\n') {
+          ++token_line;
+          token_line_start = static_cast<std::size_t>(c - base) + 1;
+        }
+      const char* token_end = c;
+      TokenKind kind = TokenKind::number;
+      double number = 0;
+      // Anything else is left to lex_token, blanks and all.
+      if (!scan_quick_token(c, end, kind, token_end, number)) {
+        more = false;
+        break;
       }
-    const char* token_end = c;
-    TokenKind kind = TokenKind::number;
-    double number = 0;
-    if (!scan_quick_token(c, end, kind, token_end, number)) break;   // left to lex_token, blanks and all
-    const auto begin = static_cast<std::size_t>(c - base);
-    const auto length = static_cast<std::size_t>(token_end - c);
-    if (static_cast<std::uint64_t>(begin) + length > UINT32_MAX || length > LexedToken::kMaxLength) break;
-    const std::uint32_t name =
-        kind == TokenKind::identifier ? names.intern(std::string_view(c, length)) : 0;
-    append(kind, static_cast<std::uint32_t>(begin), token_line, static_cast<std::uint32_t>(token_line_start),
-           static_cast<std::uint32_t>(length), name, number);
-    offset = begin + length;
-    line = token_line;
-    line_start = token_line_start;
-    ++count;
+      const auto begin = static_cast<std::size_t>(c - base);
+      const auto length = static_cast<std::size_t>(token_end - c);
+      if (static_cast<std::uint64_t>(begin) + length > UINT32_MAX || length > LexedToken::kMaxLength) {
+        more = false;
+        break;
+      }
+      group[n++] = Read{kind, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(length),
+                        static_cast<std::uint32_t>(token_line_start), token_line, number, 0};
+      offset = begin + length;
+      line = token_line;
+      line_start = token_line_start;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (group[i].kind == TokenKind::identifier)
+        group[i].prepared = names.prepare(std::string_view(base + group[i].begin, group[i].length));
+    for (std::size_t i = 0; i < n; ++i) {
+      const Read& r = group[i];
+      const std::uint32_t name =
+          r.kind == TokenKind::identifier ? names.intern(std::string_view(base + r.begin, r.length), r.prepared) : 0;
+      append(r.kind, r.begin, r.line, r.line_start, r.length, name, r.number);
+    }
+    count += n;
   }
   if (count > 0) lexed_to = LexPosition{offset, line, static_cast<int>(offset - line_start) + 1};
   return count;

@@ -85,7 +85,10 @@ class FileTokens {
   // next token is one lex_quick leaves to lex_token (which the caller then reads); identifiers get their names from
   // `names`. Returns how many it kept. The first reading of a large scene: one loop, no Token, no QuickToken.
   struct NameInterner {
-    virtual std::uint32_t intern(std::string_view name) = 0;
+    // What intern() needs of the name, computed ahead (prepare() is called for the identifiers of a run before
+    // intern() is called for any of them).
+    virtual std::uint64_t prepare(std::string_view name) = 0;
+    virtual std::uint32_t intern(std::string_view name, std::uint64_t prepared) = 0;
 
    protected:
     ~NameInterner() = default;

@@ -69,15 +69,22 @@ std::size_t SymbolTable::slot_of(std::string_view name, std::uint64_t h) const {
   }
 }
 
-SymbolTable::NameId SymbolTable::intern(std::string_view name) {
+std::uint64_t SymbolTable::prefetch(std::string_view name) const {
   const std::uint64_t h = hash(name);
+  __builtin_prefetch(&ids_[static_cast<std::size_t>(h ^ (h >> 29)) & (ids_.size() - 1)]);
+  return h;
+}
+
+SymbolTable::NameId SymbolTable::intern(std::string_view name) { return intern(name, hash(name)); }
+
+SymbolTable::NameId SymbolTable::intern(std::string_view name, std::uint64_t h) {
   std::size_t slot = slot_of(name, h);
   if (ids_[slot].id != 0) return ids_[slot].id;
   const auto id = static_cast<NameId>(names_.size());
   names_.emplace_back(name);
   hashes_.push_back(h);
   reserved_.push_back(is_reserved_word(name) ? 1 : 0);
-  bindings_.emplace_back();
+  bindings_.push_back(nullptr);
   if (2 * names_.size() > ids_.size()) {   // at most half full: probes stay short
     ids_.assign(ids_.size() * 2, Slot{});
     // The names are distinct: each goes to the first empty slot of its probe, no text compared.
@@ -98,11 +105,10 @@ SymbolTable::NameId SymbolTable::id_of(std::string_view name) const { return ids
 void SymbolTable::pop_scope() {
   const std::size_t level = depth_ - 1;
   for (const NameId id : scopes_[level]) {
-    auto& stack = bindings_[id];
+    Entry* e = bindings_[id];
     // #undef may have removed the entry already (a name is listed again when it is bound again).
-    if (stack.empty() || stack.back()->level != level) continue;
-    Entry* e = stack.back();
-    stack.pop_back();
+    if (!e || e->level != level) continue;
+    bindings_[id] = e->below;
     e->value = Numeric{};   // release what it held now, not when the entry is reused
     free_.push_back(e);
   }
@@ -121,13 +127,13 @@ void SymbolTable::add_entry(NameId id, std::size_t level, Value value) {
   }
   e->level = level;
   e->value = std::move(value);
-  auto& stack = bindings_[id];
-  // Levels increase along a name's entries. A new entry is usually made in the innermost level, or global; an
+  // Levels decrease along a name's chain. A new entry is usually made in the innermost level, or global; an
   // assignment whose target was fixed before a macro call in its value ran (assign_at) may add one below entries
   // of deeper levels.
-  auto at = stack.end();
-  while (at != stack.begin() && (*(at - 1))->level > level) --at;
-  stack.insert(at, e);
+  Entry** at = &bindings_[id];
+  while (*at && (*at)->level > level) at = &(*at)->below;
+  e->below = *at;
+  *at = e;
   scopes_[level].push_back(id);
 }
 
@@ -142,9 +148,11 @@ Value* SymbolTable::resolve_alias(Value* v) const {
     const Alias& a = std::get<Alias>(*v);
     const NameId id = a.id;
     v = nullptr;
-    if (id < bindings_.size())
-      for (Entry* e : bindings_[id])
-        if (e->level == a.table) v = &e->value;
+    for (Entry* e = top(id); e; e = e->below)
+      if (e->level == a.table) {
+        v = &e->value;
+        break;
+      }
   }
   return v;
 }
@@ -170,19 +178,18 @@ void SymbolTable::local(NameId id, Value value) {
 
 void SymbolTable::assign_at(NameId id, std::size_t level, Value value) {
   if (level >= depth()) return local(id, std::move(value));
-  if (id < bindings_.size())
-    for (Entry* e : bindings_[id])
-      if (e->level == level) {
-        if (Value* target = resolve_alias(&e->value)) *target = std::move(value);
-        else e->value = std::move(value);
-        return;
-      }
+  for (Entry* e = top(id); e; e = e->below)
+    if (e->level == level) {
+      if (Value* target = resolve_alias(&e->value)) *target = std::move(value);
+      else e->value = std::move(value);
+      return;
+    }
   add_entry(id, level, std::move(value));
 }
 
 void SymbolTable::assign_numeric_at(NameId id, std::size_t level, const Numeric& n) {
-  if (level < depth() && id < bindings_.size())
-    for (Entry* e : bindings_[id])
+  if (level < depth())
+    for (Entry* e = top(id); e; e = e->below)
       if (e->level == level) {
         // assign_at's target: through the alias, or the entry itself where the alias leads nowhere.
         Value* target = resolve_alias(&e->value);
@@ -205,7 +212,7 @@ bool SymbolTable::undefine(const std::string& name) {
   Entry* e = top(id);
   if (!e) return false;
   deprecations_[e->level].erase(name);
-  bindings_[id].pop_back();
+  bindings_[id] = e->below;
   e->value = Numeric{};
   free_.push_back(e);
   return true;

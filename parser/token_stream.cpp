@@ -20,7 +20,8 @@ namespace {
 // The symbol table's names for the identifiers the lexer keeps.
 struct SymbolNames final : FileTokens::NameInterner {
   explicit SymbolNames(SymbolTable& s) : symbols(s) {}
-  std::uint32_t intern(std::string_view name) override { return symbols.intern(name); }
+  std::uint64_t prepare(std::string_view name) override { return symbols.prefetch(name); }
+  std::uint32_t intern(std::string_view name, std::uint64_t hash) override { return symbols.intern(name, hash); }
   SymbolTable& symbols;
 };
 // How far the lexer reads ahead of the token asked for, in one run of lex_quick_run: lexing is context free (the
