@@ -50,14 +50,15 @@ bool texture_ignores_transforms(const Texture& texture) {
 }
 
 void apply_deferred_texture_transforms(Object& object) {
-  for (const Matrix& m : object.deferred_texture_transforms) transform_texture(object.texture, m);
-  object.deferred_texture_transforms.clear();
+  if (object.deferred_texture_transform) transform_texture(object.texture, *object.deferred_texture_transform);
+  object.deferred_texture_transform.reset();
 }
 
 void transform_object(Object& object, const Matrix& m, TransformKind kind) {
   if (!object.uv_mapping && object.texture) {
     if (texture_ignores_transforms(*object.texture)) {
-      object.deferred_texture_transforms.push_back(m);
+      object.deferred_texture_transform =
+          object.deferred_texture_transform ? *object.deferred_texture_transform * m : m;
     } else {
       apply_deferred_texture_transforms(object);
       transform_texture(object.texture, m);

@@ -17,8 +17,8 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
 // pattern space is ever read for them) and which have no normal.
 bool texture_ignores_transforms(const Texture& texture);
 
-// Applies the transforms deferred for the object's texture (Object::deferred_texture_transforms) one by one, in
-// written order, as they would have been applied when written; the texture is then the object's own copy.
+// Applies the transforms deferred for the object's texture (Object::deferred_texture_transform, their composition
+// in written order), as they would have been applied when written; the texture is then the object's own copy.
 void apply_deferred_texture_transforms(Object& object);
 
 // How a transform was written: boxes fold translations and scalings into their corners until they are rotated

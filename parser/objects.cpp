@@ -144,7 +144,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   if (holder.texture) {
     object.texture = holder.texture;
-    object.deferred_texture_transforms.clear();   // they belonged to the texture replaced
+    object.deferred_texture_transform.reset();   // they belonged to the texture replaced
   }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);

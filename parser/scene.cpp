@@ -308,7 +308,7 @@ Unsupported first_unsupported(const Object& o) {
 // sources' looks_like objects are settled when the lights are added).
 void settle_deferred_texture_transforms(Object& o) {
   if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
-  o.deferred_texture_transforms.clear();
+  o.deferred_texture_transform.reset();
   if (auto* csg = std::get_if<Csg>(&o.shape))
     for (Object& child : csg->children) settle_deferred_texture_transforms(child);
   for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})

@@ -562,7 +562,7 @@ TEST(Objects, MovedCopiesOfASolidTexturedObjectShareItsTexture) {
       "object { S translate x material { texture { pigment { checker } } } }\n");
   ASSERT_EQ(s.objects.size(), 6u);
   EXPECT_EQ(s.objects[0].texture, s.objects[1].texture);
-  for (const Object& o : s.objects) EXPECT_TRUE(o.deferred_texture_transforms.empty());
+  for (const Object& o : s.objects) EXPECT_FALSE(o.deferred_texture_transform.has_value());
   expect_matrix_near(top_layer(s.objects[2]).pigment.world_from_pattern,
                      Matrix::translation({1, 0, 0}) * Matrix::scaling({2, 2, 2}));
   expect_matrix_near(top_layer(s.objects[3]).pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
