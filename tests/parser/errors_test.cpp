@@ -95,7 +95,17 @@ INSTANTIATE_TEST_SUITE_P(
                   "#version 3.7;\n#macro M()\n  sphere { 0, Q }\n#end\nM()\n", 3, 15, "undeclared identifier 'Q'"},
         ErrorCase{"UnterminatedString", "#version 3.7;\n#debug \"abc\n", 2, 8, "unterminated string"},
         ErrorCase{"UnterminatedComment", "#version 3.7;\n/* a /* b */\nsphere{0,1}\n", 2, 1,
-                  "unterminated block comment"}),
+                  "unterminated block comment"},
+        // The lexer reads ahead of the parse (FileTokens::lex_quick_run), but what it cannot read quickly — an
+        // illegal character, an unterminated string — is reported only when the parse reaches it: an earlier
+        // error in the parse comes first, at its own place.
+        ErrorCase{"ParseErrorBeforeALexicalErrorAhead", "#version 3.7;\nsphere { 0, Q }\n#declare A = 1 \x01 2;\n",
+                  2, 13, "undeclared identifier 'Q'"},
+        ErrorCase{"ErrorDirectiveBeforeAnUnterminatedStringAhead",
+                  "#version 3.7;\n#declare A = 1;\n#error \"stop here\"\n#declare B = 2 + 3;\n#debug \"open\n", 3, 2,
+                  "stop here"},
+        ErrorCase{"LexicalErrorAfterTokensReadAhead", "#declare A = <1, 2, 3> * 2;\n#declare B = A + 1; /* open\n", 2,
+                  21, "unterminated block comment"}),
     [](const auto& p) { return p.param.name; });
 
 // Features povtrace does not render: they parse, and placing them in the scene is the error — at the position
