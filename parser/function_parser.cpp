@@ -813,7 +813,13 @@ void FunctionParser::compile_call(int i) {
         return;
       }
       break;
-    default: break;
+    case FunctionValue::Kind::pattern:   // a float function of x, y, z: its value is component 0
+      if (f.pattern) {
+        emit(FnOp::vector_call, callee_index(n.fn), 0);
+        depth_ += 1 - argc;
+        return;
+      }
+      break;
   }
   // Evaluating it is refused (noise, patterns); defining a function that calls it is not.
   emit(FnOp::unsupported, callee_index(n.fn));
