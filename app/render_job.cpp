@@ -13,6 +13,7 @@
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
 #include "renderer/object_geometry.hpp"
+#include "renderer/pattern_evaluator.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -30,6 +31,7 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
   p.object_geometry = render::object_geometry();
+  p.pattern_evaluator = render::pattern_evaluator();
   p.povray_tolerances = o.povray_tolerances;
   return p;
 }

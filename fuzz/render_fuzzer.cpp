@@ -11,6 +11,7 @@
 
 #include "parser/parse_scene.hpp"
 #include "renderer/object_geometry.hpp"
+#include "renderer/pattern_evaluator.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -21,6 +22,7 @@ const povtrace::ParseOptions& fuzz_options() {
     o.message_sink = [](const std::string&) {};   // #debug and warnings are dropped
     o.max_tokens = 200000;                          // every input ends (a runaway #while is legal SDL)
     o.object_geometry = povtrace::render::object_geometry();   // trace() and inside() as povtrace runs them
+    o.pattern_evaluator = povtrace::render::pattern_evaluator();   // pattern functions likewise
     return o;
   }();
   return options;

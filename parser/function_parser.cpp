@@ -213,9 +213,20 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     f->parameter_count = 1;
     f->return_size = f->spline->terms;
   } else if (k == "pattern") {
+    // function { pattern { PATTERN MODIFIERS } }: a float function of x, y, z (POV-Ray's Parse_PatternFunction,
+    // f_pattern): the pattern's value after its warps and wave step. Its syntax is a pigment's without colours,
+    // so it is read as a pigment; the renderer evaluates it (ParseOptions::pattern_evaluator).
     no_parameters("pattern");
     f->kind = FunctionValue::Kind::pattern;
-    in_.skip_balanced(in_.expect("{", " after 'pattern'"));
+    if (!in_.peek().is("{")) in_.fail_expected(in_.peek(), "'{' after 'pattern'");
+    const Pigment p = in_.parse_pigment_block(first, Pigment{});
+    f->pigment = std::make_shared<const Pigment>(p);
+    if (p.unsupported) f->pattern_refusal = p.unsupported;
+    else if (const PatternEvaluator* evaluator = in_.pattern_evaluator()) {
+      auto prepared = evaluator->prepare(p);
+      if (auto* ready = std::get_if<std::shared_ptr<const PreparedPattern>>(&prepared)) f->pattern = *ready;
+      else f->pattern_refusal = UnsupportedFeature{std::get<std::string>(prepared), first.loc};
+    }
   } else {
     in_.unget(first);
     if (parameters_.empty()) parameters_ = {"x", "y", "z"};
@@ -802,7 +813,13 @@ void FunctionParser::compile_call(int i) {
         return;
       }
       break;
-    default: break;
+    case FunctionValue::Kind::pattern:   // a float function of x, y, z: its value is component 0
+      if (f.pattern) {
+        emit(FnOp::vector_call, callee_index(n.fn), 0);
+        depth_ += 1 - argc;
+        return;
+      }
+      break;
   }
   // Evaluating it is refused (noise, patterns); defining a function that calls it is not.
   emit(FnOp::unsupported, callee_index(n.fn));

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "parser/description.hpp"
+#include "parser/pattern_evaluator.hpp"
 #include "parser/source_location.hpp"
 #include "parser/splines.hpp"
 #include "parser/vecmath.hpp"
@@ -88,7 +89,12 @@ struct FunctionValue {
 
   Matrix transform;                // Kind::transform
   std::optional<Colour> colour;    // Kind::pigment when the pigment is a plain colour
-  std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment (the renderer evaluates patterns)
+  std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment; Kind::pattern: the pattern block
+                                            // (the renderer evaluates patterns)
+  // Kind::pattern: the pattern made ready by ParseOptions::pattern_evaluator; null without an evaluator or when
+  // the pattern cannot be evaluated, and then `pattern_refusal` names what is refused ("" without an evaluator).
+  std::shared_ptr<const PreparedPattern> pattern;
+  Unsupported pattern_refusal;
   std::shared_ptr<const SplineValue> spline;   // Kind::spline: its one parameter is the spline's t
 
   // What the function is called in an "unsupported" message.

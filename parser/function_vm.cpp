@@ -134,9 +134,14 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
         out[4] = f.colour->t;
         return;
       }
-      [[fallthrough]];
-    default: throw FunctionError(unsupported_message(f));
+      throw FunctionError(unsupported_message(f));
+    case FunctionValue::Kind::pattern:
+      if (!f.pattern) throw FunctionError(unsupported_message(f));
+      out[0] = f.pattern->value({args[0], args[1], args[2]}, scene_noise_generator(f));
+      return;
+    case FunctionValue::Kind::expression: break;
   }
+  throw FunctionError(unsupported_message(f));
 }
 
 class Machine {
@@ -302,6 +307,13 @@ std::string FunctionValue::description() const {
   }
   if (!name.empty()) what += " '" + name + "'";
   if (loc.file) what += " (written at " + loc.to_string() + ")";
+  // A pattern function the renderer was asked about and cannot evaluate: the part of its pattern it refuses.
+  if (kind == Kind::pattern && pattern_refusal) {
+    std::string part = pattern_refusal->name;
+    if (pattern_refusal->loc.file && pattern_refusal->loc.to_string() != loc.to_string())
+      part += " (at " + pattern_refusal->loc.to_string() + ")";
+    what = part + " in " + what;
+  }
   return what;
 }
 
@@ -314,6 +326,9 @@ std::optional<std::string> unevaluable_part(const FunctionValue& f) {
     case FunctionValue::Kind::spline: return std::nullopt;
     case FunctionValue::Kind::pigment:
       if (f.colour) return std::nullopt;
+      return f.description();
+    case FunctionValue::Kind::pattern:
+      if (f.pattern) return std::nullopt;
       return f.description();
     case FunctionValue::Kind::expression:
       for (const FnInstr& in : f.code) {

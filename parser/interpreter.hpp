@@ -183,6 +183,8 @@ class Interpreter {
   [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
   // The cell a function keeps to read the scene's noise generator (noise_generator_cell_), kept up to date.
   std::shared_ptr<const int> noise_generator_cell() const { return noise_generator_cell_; }
+  // The renderer's pattern values for pattern functions (ParseOptions::pattern_evaluator); may be null.
+  const PatternEvaluator* pattern_evaluator() const { return options_.pattern_evaluator.get(); }
   void update_noise_generator_cell() {
     *noise_generator_cell_ = scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
   }

@@ -16,6 +16,7 @@
 
 #include "parser/description.hpp"
 #include "parser/object_geometry.hpp"
+#include "parser/pattern_evaluator.hpp"
 #include "parser/source.hpp"
 
 namespace povtrace {
@@ -36,6 +37,9 @@ struct ParseOptions {
   // Ray-object geometry for trace() and for inside() of shapes the parser does not test itself; the program passes
   // the renderer's (render::object_geometry()). Null: those are refused by name.
   std::shared_ptr<const ObjectGeometry> object_geometry;
+  // Pattern values for `function { pattern { … } }`; the program passes the renderer's
+  // (render::pattern_evaluator()). Null: pattern functions are refused by name when they are evaluated.
+  std::shared_ptr<const PatternEvaluator> pattern_evaluator;
   // --povray-tolerances: the parser's own absolute tolerances as POV-Ray applies them, which matter only for
   // scenes far below unit size (the renderer otherwise draws those as a rescaled twin, renderer/scene_scale.hpp):
   // a camera whose look_at is closer than 1e-5 to its location is an error.

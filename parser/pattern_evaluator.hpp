@@ -1,0 +1,35 @@
+// Pattern values for `function { pattern { … } }` (POV-Ray's f_pattern): the value of the pattern at a point, after
+// the pattern's own transforms, warps and turbulence and its frequency/phase/wave step, before any colour map.
+// Evaluating patterns is the renderer's work, and the parser never includes renderer code: it asks through this
+// interface, which the program hands it in ParseOptions::pattern_evaluator (renderer/pattern_evaluator.hpp
+// implements it). Without one, a pattern function is refused by name when it is evaluated.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "parser/description.hpp"
+
+namespace povtrace {
+
+// One pattern made ready for repeated evaluation (isosurfaces and height fields evaluate it many times). Shared
+// by every thread that renders: value() must not change it.
+class PreparedPattern {
+ public:
+  virtual ~PreparedPattern() = default;
+  // The pattern's value at `point` (function space = the pattern's world space). `noise_generator` is the scene's
+  // (1, 2 or 3), read when the function runs.
+  virtual double value(Vec3 point, int noise_generator) const = 0;
+};
+
+class PatternEvaluator {
+ public:
+  virtual ~PatternEvaluator() = default;
+  // The pattern block parsed as a pigment (its colour map, if any, is not used). A pattern the renderer cannot
+  // evaluate gives what it is called in an "unsupported" message instead (the pigment is never tainted: the
+  // caller refuses tainted ones first).
+  virtual std::variant<std::shared_ptr<const PreparedPattern>, std::string> prepare(const Pigment& pattern) const = 0;
+};
+
+}  // namespace povtrace

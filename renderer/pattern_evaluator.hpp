@@ -1,0 +1,14 @@
+// The renderer's side of pattern functions (parser/pattern_evaluator.hpp): `function { pattern { … } }` evaluated
+// with the renderer's own pattern code, the same that colours pigments.
+#pragma once
+
+#include <memory>
+
+#include "parser/pattern_evaluator.hpp"
+
+namespace povtrace::render {
+
+// The implementation to hand the parser in ParseOptions::pattern_evaluator. Stateless and shareable.
+std::shared_ptr<const PatternEvaluator> pattern_evaluator();
+
+}  // namespace povtrace::render
