@@ -71,7 +71,11 @@ void Interpreter::parse_array_initialiser(ArrayValue& a, std::size_t dim, std::s
     if (first.is("}"))
       fail_at(first, "too few initialisers: dimension " + std::to_string(dim + 1) + " of this array has size " +
                          std::to_string(count) + ", found " + std::to_string(i));
-    auto value = try_parse_rvalue(first);
+    std::optional<Value> value;
+    {
+      const RawOperatorLook raw_look(*this);   // as in POV-Ray, whose Ok_To_Declare is off in an initialiser
+      value = try_parse_rvalue(first);
+    }
     if (!value) fail_expected(first, "a value in the array initialiser");
     store_element(a, base + i, std::move(*value), first, "this array");
     accept(",");
@@ -141,7 +145,11 @@ void Interpreter::directive_declare_element(const Token& name, bool local) {
   Token eq = next();
   if (!eq.is("=")) fail_expected(eq, "'=' after #" + std::string(local ? "local " : "declare ") + shown + "[…]");
   Token first = next();
-  auto value = try_parse_rvalue(first);
+  std::optional<Value> value;
+  {
+    const RawOperatorLook raw_look(*this);   // the value of a #declare
+    value = try_parse_rvalue(first);
+  }
   if (!value) fail_expected(first, "a value for an element of " + shown);
   const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
   // POV-Ray stores `#local A[i] = …` of an array that is not in the innermost table (a global array, from inside

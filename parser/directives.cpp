@@ -152,6 +152,7 @@ void Interpreter::directive_declare(bool local) {
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
+  const RawOperatorLook raw_look(*this);   // the value of a #declare: POV-Ray's Ok_To_Declare is off
   call_macros_ahead();
   if (numeric_ahead()) {
     // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
@@ -170,6 +171,12 @@ void Interpreter::directive_declare(bool local) {
   std::optional<Value> value;
   {
     Token first = next();
+    // Only a numeric value keeps the raw look: in a block (`#declare S = sphere { 0, M() * 0.5 }`) POV-Ray runs a
+    // directive met after an operand, as it does outside a #declare.
+    const Value* held = first.kind == TokenKind::identifier ? lookup(first) : nullptr;
+    const bool numeric = first.kind == TokenKind::number || first.kind == TokenKind::symbol ||
+                         (held && std::holds_alternative<Numeric>(*held));
+    const RawOperatorLook look(*this, numeric);
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
                                      "interior or camera) for " + std::string(name));
@@ -239,6 +246,7 @@ void Interpreter::directive_include(const Token& at) {
 }
 
 bool Interpreter::condition_in_parens() {
+  const RawOperatorLook raw_look(*this);   // POV-Ray's Parse_Cond_Param
   skip_expected('(', " (conditions are written in parentheses)");
   const double v = parse_float_full();
   skip_expected(')', " closing the condition");
@@ -364,6 +372,7 @@ void Interpreter::directive_switch(const Token& at) {
   c.frame = frames_.size() - 1;
   c.loc = at.loc;
   c.switch_value = [&] {
+    const RawOperatorLook raw_look(*this);
     expect("(", " (conditions are written in parentheses)");
     const double v = parse_float_full();
     expect(")", " closing the condition");
@@ -378,6 +387,7 @@ void Interpreter::directive_switch(const Token& at) {
 }
 
 bool Interpreter::case_matches(const Token& word) {
+  const RawOperatorLook raw_look(*this);
   const double v = controls_.back().switch_value;
   expect("(", " (conditions are written in parentheses)");
   const double a = parse_float_full();

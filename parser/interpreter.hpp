@@ -149,6 +149,26 @@ class Interpreter {
     return raw_ahead_full();
   }
   Ahead raw_ahead_full();
+  // Whether a directive ahead of a complete operand waits until the value is finished (§1 item 6, POV-Ray's
+  // Ok_To_Declare off): in the value of a #declare or #local, a macro argument, an array initialiser and the
+  // condition of #if/#elseif/#while/#switch/#case/#range — where POV-Ray reads '#' there as a plain token and
+  // reports it. Elsewhere (object, pigment, transform arguments, #debug) POV-Ray's Get_Token runs the directive
+  // while it looks for an operator: `pigment { M() * 0.5 }` with M's value inside an #if … #end goes on with `* 0.5`
+  // after the directives and the macro's #end (advanced/isocacti.pov).
+  bool raw_operator_look_ = false;
+  class RawOperatorLook {
+   public:
+    explicit RawOperatorLook(Interpreter& in, bool raw = true) : in_(in), saved_(in.raw_operator_look_) {
+      in_.raw_operator_look_ = raw;
+    }
+    ~RawOperatorLook() { in_.raw_operator_look_ = saved_; }
+    RawOperatorLook(const RawOperatorLook&) = delete;
+    RawOperatorLook& operator=(const RawOperatorLook&) = delete;
+
+   private:
+    Interpreter& in_;
+    bool saved_;
+  };
   // Reading without making Tokens, where next() would return the frame's next kept token unchanged: nothing is
   // pushed back, and that token is neither '#', nor the end of a file, nor an identifier that runs something or
   // resolves to something else when read (a macro call, an array that subscripts may follow, a deprecated name).

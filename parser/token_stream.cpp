@@ -342,8 +342,14 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
     const LexedToken& k = lexed(*caller.tokens, caller.index);
     if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
   }
-  const Token& t = peek_raw();   // a frame ends or a directive may follow: the full look
-  return {t.kind, t.text};
+  const Token& raw_look = peek_raw();   // a frame ends or a directive may follow: the full look
+  if (!raw_operator_look_ && raw_look.is("#")) {
+    // Outside the contexts of RawOperatorLook the directive runs now, as POV-Ray's Get_Token runs it, and the
+    // look goes on after it: next() takes the '#' peek_raw() left pushed back and runs its directive.
+    const Token& t = peek();
+    return {t.kind, t.text};
+  }
+  return {raw_look.kind, raw_look.text};
 }
 
 const LexedToken* Interpreter::plain_ahead() {
@@ -583,7 +589,11 @@ void Interpreter::invoke_macro(const Token& name) {
         continue;
       }
     }
-    auto value = try_parse_rvalue(first);
+    std::optional<Value> value;
+    {
+      const RawOperatorLook raw_look(*this);   // POV-Ray's Ok_To_Declare is off in a macro's arguments
+      value = try_parse_rvalue(first);
+    }
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
     macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
   }

@@ -550,6 +550,34 @@ INSTANTIATE_TEST_SUITE_P(
                                 "datetime() needs a non-empty format string"}),
     [](const auto& p) { return p.param.name; });
 
+// ---- directives met while looking for an operator (§1 item 6) ---------------------------------------------------
+TEST(OperatorLook, DirectivesAfterAnOperandRunOutsideDeclaresAndConditions) {
+  // povray 3.7.0.10 prints these lines for the same scene: in an expression of #debug, an object or a transform, a
+  // directive ahead of a complete operand (here the #else of the macro's #if, then the macro's #end) runs, and the
+  // expression goes on with `* 2` in the caller (advanced/isocacti.pov's `pigment { Rand_Array_Item(…) * … }`).
+  EXPECT_EQ(out("#macro M6() #if (1) 2 #else 3 #end #end\n"
+                "#debug concat(str(M6() * 2, 0, 3), \"\\n\")\n"
+                "#declare S = sphere { 0, M6() * 0.5 }\n"
+                "#debug concat(vstr(3, max_extent(S), \",\", 0, 3), \"\\n\")\n"
+                "#declare T = sphere { 0, 1 translate <M6() * 2, 0, 0> }\n"
+                "#debug concat(vstr(3, max_extent(T), \",\", 0, 3), \"\\n\")\n"),
+            "4.000\n1.000,1.000,1.000\n5.000,1.000,1.000\n");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    OperatorLook, LanguageErrors,
+    ::testing::Values(
+        // povray: "All #declares of float, vector, and color require semicolon" at the macro's '#else': in the
+        // number of a #declare the '#' is a plain token (Ok_To_Declare off).
+        ErrorCase{"DirectiveAfterTheNumberOfADeclare",
+                  "#macro M6() #if (1) 2 #else 3 #end #end\n#declare V = M6() * 0.5;\n", 2, 23,
+                  "expected ';' after the value of V, found '#'"},
+        // povray: "Expected ')', # found instead" (Parse_Cond_Param keeps the raw look too).
+        ErrorCase{"DirectiveAfterAnOperandOfACondition",
+                  "#macro M6() #if (1) 2 #else 3 #end #end\n#if (M6() * 2 > 3) #end\n", 3, 11,
+                  "expected ')' closing the condition, found '*'"}),
+    [](const auto& p) { return p.param.name; });
+
 // ---- inside, min_extent, max_extent ------------------------------------------------------------------------------
 TEST(ObjectQueries, ExtentsAsPovRayComputesThem) {
   // Every line is povray's output for the same scene: single-precision boxes, a tight box around a sphere moved by a
