@@ -200,8 +200,15 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     no_parameters("pigment");
     f->kind = FunctionValue::Kind::pigment;
     const Pigment p = in_.parse_pigment_block(first, Pigment{});
-    // A plain colour can be evaluated without the renderer's patterns.
+    // A plain colour can be evaluated without the renderer's patterns; any other pigment is evaluated by the
+    // renderer (POV-Ray's f_pigment: Compute_Pigment at the point, without an intersection).
     if (p.pattern == PatternKind::solid && !p.unsupported) f->colour = p.colour;
+    else if (p.unsupported) f->refusal = p.unsupported;
+    else if (const PatternEvaluator* evaluator = in_.pattern_evaluator()) {
+      auto prepared = evaluator->prepare_pigment(p);
+      if (auto* ready = std::get_if<std::shared_ptr<const PreparedPigment>>(&prepared)) f->prepared_pigment = *ready;
+      else f->refusal = UnsupportedFeature{std::get<std::string>(prepared), first.loc};
+    }
     f->pigment = std::make_shared<const Pigment>(p);
     f->return_size = 5;
   } else if (k == "spline") {
@@ -221,11 +228,11 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     if (!in_.peek().is("{")) in_.fail_expected(in_.peek(), "'{' after 'pattern'");
     const Pigment p = in_.parse_pigment_block(first, Pigment{});
     f->pigment = std::make_shared<const Pigment>(p);
-    if (p.unsupported) f->pattern_refusal = p.unsupported;
+    if (p.unsupported) f->refusal = p.unsupported;
     else if (const PatternEvaluator* evaluator = in_.pattern_evaluator()) {
       auto prepared = evaluator->prepare(p);
       if (auto* ready = std::get_if<std::shared_ptr<const PreparedPattern>>(&prepared)) f->pattern = *ready;
-      else f->pattern_refusal = UnsupportedFeature{std::get<std::string>(prepared), first.loc};
+      else f->refusal = UnsupportedFeature{std::get<std::string>(prepared), first.loc};
     }
   } else {
     in_.unget(first);
@@ -807,7 +814,7 @@ void FunctionParser::compile_call(int i) {
       depth_ += 1 - argc;
       return;
     case FunctionValue::Kind::pigment:
-      if (f.colour) {
+      if (f.colour || f.prepared_pigment) {
         emit(FnOp::vector_call, callee_index(n.fn), n.member);
         depth_ += 1 - argc;
         return;

@@ -92,9 +92,11 @@ struct FunctionValue {
   std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment; Kind::pattern: the pattern block
                                             // (the renderer evaluates patterns)
   // Kind::pattern: the pattern made ready by ParseOptions::pattern_evaluator; null without an evaluator or when
-  // the pattern cannot be evaluated, and then `pattern_refusal` names what is refused ("" without an evaluator).
+  // the pattern cannot be evaluated, and then `refusal` names what is refused (nothing without an evaluator).
   std::shared_ptr<const PreparedPattern> pattern;
-  Unsupported pattern_refusal;
+  // Kind::pigment other than a plain colour: the pigment made ready the same way, or null and `refusal` says why.
+  std::shared_ptr<const PreparedPigment> prepared_pigment;
+  Unsupported refusal;
   std::shared_ptr<const SplineValue> spline;   // Kind::spline: its one parameter is the spline's t
 
   // What the function is called in an "unsupported" message.

@@ -134,6 +134,15 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
         out[4] = f.colour->t;
         return;
       }
+      if (f.prepared_pigment) {
+        const Colour c = f.prepared_pigment->colour({args[0], args[1], args[2]}, scene_noise_generator(f));
+        out[0] = c.r;
+        out[1] = c.g;
+        out[2] = c.b;
+        out[3] = c.f;
+        out[4] = c.t;
+        return;
+      }
       throw FunctionError(unsupported_message(f));
     case FunctionValue::Kind::pattern:
       if (!f.pattern) throw FunctionError(unsupported_message(f));
@@ -308,10 +317,10 @@ std::string FunctionValue::description() const {
   if (!name.empty()) what += " '" + name + "'";
   if (loc.file) what += " (written at " + loc.to_string() + ")";
   // A pattern function the renderer was asked about and cannot evaluate: the part of its pattern it refuses.
-  if (kind == Kind::pattern && pattern_refusal) {
-    std::string part = pattern_refusal->name;
-    if (pattern_refusal->loc.file && pattern_refusal->loc.to_string() != loc.to_string())
-      part += " (at " + pattern_refusal->loc.to_string() + ")";
+  if ((kind == Kind::pattern || kind == Kind::pigment) && refusal) {
+    std::string part = refusal->name;
+    if (refusal->loc.file && refusal->loc.to_string() != loc.to_string())
+      part += " (at " + refusal->loc.to_string() + ")";
     what = part + " in " + what;
   }
   return what;
@@ -325,7 +334,7 @@ std::optional<std::string> unevaluable_part(const FunctionValue& f) {
     case FunctionValue::Kind::transform:
     case FunctionValue::Kind::spline: return std::nullopt;
     case FunctionValue::Kind::pigment:
-      if (f.colour) return std::nullopt;
+      if (f.colour || f.prepared_pigment) return std::nullopt;
       return f.description();
     case FunctionValue::Kind::pattern:
       if (f.pattern) return std::nullopt;

@@ -1,8 +1,12 @@
 // Pattern values for `function { pattern { … } }` (POV-Ray's f_pattern): the value of the pattern at a point, after
 // the pattern's own transforms, warps and turbulence and its frequency/phase/wave step, before any colour map.
-// Evaluating patterns is the renderer's work, and the parser never includes renderer code: it asks through this
-// interface, which the program hands it in ParseOptions::pattern_evaluator (renderer/pattern_evaluator.hpp
-// implements it). Without one, a pattern function is refused by name when it is evaluated.
+// Colours for `function { pigment { … } }` (POV-Ray's f_pigment): the pigment's colour at the point as shading
+// computes it (transforms, warps, colour or pigment map), without an intersection, all five of r, g, b, filter,
+// transmit.
+// Evaluating patterns and pigments is the renderer's work, and the parser never includes renderer code: it asks
+// through this interface, which the program hands it in ParseOptions::pattern_evaluator
+// (renderer/pattern_evaluator.hpp implements it). Without one, a pattern or pigment function other than a plain
+// colour is refused by name when it is evaluated.
 #pragma once
 
 #include <memory>
@@ -23,6 +27,14 @@ class PreparedPattern {
   virtual double value(Vec3 point, int noise_generator) const = 0;
 };
 
+// One pigment made ready for repeated evaluation, shared like PreparedPattern: colour() must not change it.
+class PreparedPigment {
+ public:
+  virtual ~PreparedPigment() = default;
+  // The pigment's colour at `point` (function space = the pigment's world space); `noise_generator` as above.
+  virtual Colour colour(Vec3 point, int noise_generator) const = 0;
+};
+
 class PatternEvaluator {
  public:
   virtual ~PatternEvaluator() = default;
@@ -30,6 +42,9 @@ class PatternEvaluator {
   // evaluate gives what it is called in an "unsupported" message instead (the pigment is never tainted: the
   // caller refuses tainted ones first).
   virtual std::variant<std::shared_ptr<const PreparedPattern>, std::string> prepare(const Pigment& pattern) const = 0;
+  // The pigment of a pigment function, or what the renderer cannot evaluate in it (as prepare()).
+  virtual std::variant<std::shared_ptr<const PreparedPigment>, std::string> prepare_pigment(
+      const Pigment& pigment) const = 0;
 };
 
 }  // namespace povtrace

@@ -31,6 +31,34 @@ class RendererPattern final : public PreparedPattern {
   std::array<RenderPigment, 3> by_generator_;
 };
 
+// POV-Ray's f_pigment: Compute_Pigment at the point with no intersection and no ray, the same colour shading
+// computes there (transforms, warps, colour and pigment maps), all five channels.
+class RendererPigment final : public PreparedPigment {
+ public:
+  explicit RendererPigment(const Pigment& p) {
+    const RenderPigment built = build_render_pigment(p);
+    for (int g = 0; g < 3; ++g) {   // one copy per noise generator, chosen when the function runs
+      by_generator_[static_cast<std::size_t>(g)] = built;
+      set_generator(by_generator_[static_cast<std::size_t>(g)], static_cast<NoiseGenerator>(g + 1));
+    }
+  }
+  Colour colour(Vec3 point, int noise_generator) const override {
+    const int g = noise_generator >= 1 && noise_generator <= 3 ? noise_generator : 2;
+    return evaluate_pigment(by_generator_[static_cast<std::size_t>(g - 1)], point);
+  }
+
+ private:
+  std::array<RenderPigment, 3> by_generator_;
+};
+
+// Whether the pigment or a pigment of its maps is uv_mapped: a pigment function has no surface, so no u, v.
+bool uses_uv_mapping(const Pigment& p) {
+  if (p.pattern == PatternKind::uv_mapping) return true;
+  for (const MapEntry& e : p.entries)
+    if (e.pigment && uses_uv_mapping(*e.pigment)) return true;
+  return false;
+}
+
 class RendererPatterns final : public PatternEvaluator {
  public:
   std::variant<std::shared_ptr<const PreparedPattern>, std::string> prepare(const Pigment& p) const override {
@@ -42,6 +70,10 @@ class RendererPatterns final : public PatternEvaluator {
       default: break;
     }
     return std::shared_ptr<const PreparedPattern>(std::make_shared<RendererPattern>(p));
+  }
+  std::variant<std::shared_ptr<const PreparedPigment>, std::string> prepare_pigment(const Pigment& p) const override {
+    if (uses_uv_mapping(p)) return std::string("uv_mapping (a pigment function has no surface, so no u, v)");
+    return std::shared_ptr<const PreparedPigment>(std::make_shared<RendererPigment>(p));
   }
 };
 

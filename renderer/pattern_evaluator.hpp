@@ -1,5 +1,5 @@
-// The renderer's side of pattern functions (parser/pattern_evaluator.hpp): `function { pattern { … } }` evaluated
-// with the renderer's own pattern code, the same that colours pigments.
+// The renderer's side of pattern and pigment functions (parser/pattern_evaluator.hpp): `function { pattern { … } }`
+// and `function { pigment { … } }` evaluated with the renderer's own pattern code, the same that colours pigments.
 #pragma once
 
 #include <memory>
