@@ -44,7 +44,10 @@ class RendererPigment final : public PreparedPigment {
   }
   Colour colour(Vec3 point, int noise_generator) const override {
     const int g = noise_generator >= 1 && noise_generator <= 3 ? noise_generator : 2;
-    return evaluate_pigment(by_generator_[static_cast<std::size_t>(g - 1)], point);
+    const Colour c = evaluate_pigment(by_generator_[static_cast<std::size_t>(g - 1)], point);
+    // POV-Ray's colours are single precision: F(…).red of a pigment that gives 0.7 is 0.699999988.
+    auto single = [](double v) { return static_cast<double>(static_cast<float>(v)); };
+    return {single(c.r), single(c.g), single(c.b), single(c.f), single(c.t)};
   }
 
  private:
