@@ -10,48 +10,54 @@ namespace povtrace::render {
 
 namespace {
 
+// A built pigment in one copy per noise generator (1 to 3), since the scene's generator is read when a function
+// runs, not when it is prepared; anything else counts as 2, POV-Ray's default.
+class PigmentPerGenerator {
+ public:
+  explicit PigmentPerGenerator(const Pigment& p) {
+    const RenderPigment built = build_render_pigment(p);
+    for (int g = 0; g < 3; ++g) {
+      copies_[static_cast<std::size_t>(g)] = built;
+      set_generator(copies_[static_cast<std::size_t>(g)], static_cast<NoiseGenerator>(g + 1));
+    }
+  }
+  const RenderPigment& with(int noise_generator) const {
+    const int g = noise_generator >= 1 && noise_generator <= 3 ? noise_generator : 2;
+    return copies_[static_cast<std::size_t>(g - 1)];
+  }
+
+ private:
+  std::array<RenderPigment, 3> copies_;
+};
+
 // POV-Ray's f_pattern: the point through the pattern's transforms and warps (Warp_EPoint), then the pattern and
 // its frequency/phase/wave step (Evaluate_TPat). No colour map is looked at.
 class RendererPattern final : public PreparedPattern {
  public:
-  explicit RendererPattern(const Pigment& p) {
-    const RenderPigment built = build_render_pigment(p);
-    for (int g = 0; g < 3; ++g) {   // one copy per noise generator, chosen when the function runs
-      by_generator_[static_cast<std::size_t>(g)] = built;
-      set_generator(by_generator_[static_cast<std::size_t>(g)], static_cast<NoiseGenerator>(g + 1));
-    }
-  }
+  explicit RendererPattern(const Pigment& p) : pigment_(p) {}
   double value(Vec3 point, int noise_generator) const override {
-    const int g = noise_generator >= 1 && noise_generator <= 3 ? noise_generator : 2;
-    const RenderPigment& r = by_generator_[static_cast<std::size_t>(g - 1)];
+    const RenderPigment& r = pigment_.with(noise_generator);
     return apply_wave(pattern_value(r.params, to_pattern_space(r, point)), r.wave);
   }
 
  private:
-  std::array<RenderPigment, 3> by_generator_;
+  PigmentPerGenerator pigment_;
 };
 
 // POV-Ray's f_pigment: Compute_Pigment at the point with no intersection and no ray, the same colour shading
 // computes there (transforms, warps, colour and pigment maps), all five channels.
 class RendererPigment final : public PreparedPigment {
  public:
-  explicit RendererPigment(const Pigment& p) {
-    const RenderPigment built = build_render_pigment(p);
-    for (int g = 0; g < 3; ++g) {   // one copy per noise generator, chosen when the function runs
-      by_generator_[static_cast<std::size_t>(g)] = built;
-      set_generator(by_generator_[static_cast<std::size_t>(g)], static_cast<NoiseGenerator>(g + 1));
-    }
-  }
+  explicit RendererPigment(const Pigment& p) : pigment_(p) {}
   Colour colour(Vec3 point, int noise_generator) const override {
-    const int g = noise_generator >= 1 && noise_generator <= 3 ? noise_generator : 2;
-    const Colour c = evaluate_pigment(by_generator_[static_cast<std::size_t>(g - 1)], point);
+    const Colour c = evaluate_pigment(pigment_.with(noise_generator), point);
     // POV-Ray's colours are single precision: F(…).red of a pigment that gives 0.7 is 0.699999988.
     auto single = [](double v) { return static_cast<double>(static_cast<float>(v)); };
     return {single(c.r), single(c.g), single(c.b), single(c.f), single(c.t)};
   }
 
  private:
-  std::array<RenderPigment, 3> by_generator_;
+  PigmentPerGenerator pigment_;
 };
 
 // Whether the pigment or a pigment of its maps is uv_mapped: a pigment function has no surface, so no u, v.
