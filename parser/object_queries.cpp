@@ -13,61 +13,13 @@
 
 #include <stdexcept>
 
+#include "parser/extent_box.hpp"
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
 
 namespace {
 constexpr double kInsideEpsilon = 1e-10;
-constexpr double kBoundHuge = 2.0e10;        // POV-Ray's BOUND_HUGE
-constexpr double kCriticalLength = 1.0e6;    // CRITICAL_LENGTH: wider CSG boxes become the huge box
-
-// POV-Ray's BBOX: lower-left corner and lengths, single precision.
-struct BBox {
-  std::array<float, 3> lower{}, lengths{};
-
-  static BBox make(Vec3 lower, Vec3 lengths) {
-    BBox b;
-    for (int i = 0; i < 3; ++i) {
-      b.lower[i] = static_cast<float>(lower[i]);
-      b.lengths[i] = static_cast<float>(lengths[i]);
-    }
-    return b;
-  }
-  static BBox from_min_max(Vec3 lo, Vec3 hi) { return make(lo, hi - lo); }
-  static BBox huge() {
-    return make({-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2}, {kBoundHuge, kBoundHuge, kBoundHuge});
-  }
-  Vec3 lo() const { return {lower[0], lower[1], lower[2]}; }
-  // As POV-Ray's Make_min_max_from_BBox on doubles: the lower corner plus the lengths.
-  Vec3 hi() const {
-    return {double(lower[0]) + lengths[0], double(lower[1]) + lengths[1], double(lower[2]) + lengths[2]};
-  }
-  // max_extent(): the float sum, as POV-Ray computes it.
-  Vec3 max_extent() const {
-    return {lower[0] + lengths[0], lower[1] + lengths[1], lower[2] + lengths[2]};
-  }
-
-  // Recompute_BBox: the box of the 8 transformed corners, clipped to ±BOUND_HUGE/2. In POV-Ray's order (corners
-  // 1 to 8, the lower corner last) keeping the first of equal values, so that a -0 and a +0 end as in POV-Ray.
-  BBox transformed(const Matrix& m) const {
-    double lo_w[3] = {kBoundHuge, kBoundHuge, kBoundHuge}, hi_w[3] = {-kBoundHuge, -kBoundHuge, -kBoundHuge};
-    for (int i = 1; i <= 8; ++i) {
-      const Vec3 corner{double(lower[0]) + ((i & 1) ? double(lengths[0]) : 0.0),
-                        double(lower[1]) + ((i & 2) ? double(lengths[1]) : 0.0),
-                        double(lower[2]) + ((i & 4) ? double(lengths[2]) : 0.0)};
-      const Vec3 p = m.point(corner);
-      const double c[3] = {p.x, p.y, p.z};
-      for (int k = 0; k < 3; ++k) {
-        if (c[k] < lo_w[k]) lo_w[k] = c[k];
-        if (c[k] > hi_w[k]) hi_w[k] = c[k];
-      }
-    }
-    const Vec3 lo_v{lo_w[0], lo_w[1], lo_w[2]}, hi_v{hi_w[0], hi_w[1], hi_w[2]};
-    const Vec3 limit{kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
-    return from_min_max(max(lo_v, -1.0 * limit), min(hi_v, limit));
-  }
-};
 
 bool is_identity(const Matrix& m) { return m == Matrix::identity(); }
 
@@ -96,13 +48,13 @@ Matrix canonical_to_shape(Vec3 origin, Vec3 up, double radius, double length) {
 // Cone::Compute_Cone_Data / Compute_Cylinder_Data, then Compute_BBox: the canonical box from z = dist to 1 (0 for a
 // cylinder, and for a cone whose radii differ by less than EPSILON), carried by the canonical transform and the
 // object's own. A cone is turned so that its wider end is at z = 1, the narrow end at dist, the apex at 0.
-BBox cone_box(Vec3 base, double base_radius, Vec3 apex, double apex_radius, const Matrix& object) {
+ExtentBox cone_box(Vec3 base, double base_radius, Vec3 apex, double apex_radius, const Matrix& object) {
   Vec3 axis = apex - base;
   const double len = length(axis);
   axis = axis / len;   // the parser refuses coincident end points
   auto cylinder = [&]() {
     const Vec3 a = normalize(apex - base);
-    return BBox::make({-1, -1, 0}, {2, 2, 1}).transformed(canonical_to_shape(base, a, apex_radius, len) * object);
+    return ExtentBox::make({-1, -1, 0}, {2, 2, 1}).transformed(canonical_to_shape(base, a, apex_radius, len) * object);
   };
   if (std::fabs(apex_radius - base_radius) < kEpsilon) return cylinder();
   if (apex_radius < base_radius) {
@@ -115,7 +67,7 @@ BBox cone_box(Vec3 base, double base_radius, Vec3 apex, double apex_radius, cons
   const double total = to_origin + len;
   if ((apex_radius - base_radius) * len / total < kEpsilon) return cylinder();
   const double dist = to_origin / total;
-  return BBox::make({-1, -1, dist}, {2, 2, 1 - dist}).transformed(canonical_to_shape(origin, axis, apex_radius, total) *
+  return ExtentBox::make({-1, -1, dist}, {2, 2, 1 - dist}).transformed(canonical_to_shape(origin, axis, apex_radius, total) *
                                                                   object);
 }
 
@@ -269,7 +221,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
 // The union of the glyphs' boxes as POV-Ray builds it (TrueType::Compute_BBox: the header box in em units,
 // z from −1e-6 to thickness + 1e-6, carried by the glyph's translation; CSG::Compute_BBox), then carried through
 // each transform applied since, one after the other (CSG::Transform).
-BBox text_box(const Text& text) {
+ExtentBox text_box(const Text& text) {
   constexpr double kTextTolerance = 1e-6;   // truetype.cpp TTF_Tolerance
   Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
   for (const TextGlyph& g : text.glyphs) {
@@ -277,107 +229,107 @@ BBox text_box(const Text& text) {
     const double funit = 1.0 / outline.units_per_em;
     const Vec3 min{outline.x_min * funit, outline.y_min * funit, -kTextTolerance};
     const Vec3 max{outline.x_max * funit, outline.y_max * funit, text.thickness + kTextTolerance};
-    const BBox b = BBox::make(min, max - min).transformed(Matrix::translation({g.x, g.y, 0.0}));
+    const ExtentBox b = ExtentBox::make(min, max - min).transformed(Matrix::translation({g.x, g.y, 0.0}));
     lo = povtrace::min(lo, b.lo());
     hi = povtrace::max(hi, b.hi());
   }
-  BBox box = BBox::huge();
+  ExtentBox box = ExtentBox::huge();
   if (lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) {
-    box = BBox::from_min_max(lo, hi);
+    box = ExtentBox::from_min_max(lo, hi);
     for (int i = 0; i < 3; ++i)
-      if (box.lengths[i] > kCriticalLength) box = BBox::huge();
+      if (box.lengths[i] > kCriticalLength) box = ExtentBox::huge();
   }
   for (const Matrix& m : text.box_transforms) box = box.transformed(m);
   return box;
 }
 
-BBox bounding_box(const Object& o) {
+ExtentBox bounding_box(const Object& o) {
   struct Box_ {
     const Object& o;
-    BBox operator()(const Sphere& s) const {
+    ExtentBox operator()(const Sphere& s) const {
       const Matrix& m = o.world_from_object;
       if (const double k = similarity_scale(m); k > 0) {
         const Vec3 c = m.point(s.centre);
         const double r = s.radius * k;
-        return BBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r});
+        return ExtentBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r});
       }
-      const BBox local = BBox::make(s.centre - Vec3{s.radius, s.radius, s.radius},
+      const ExtentBox local = ExtentBox::make(s.centre - Vec3{s.radius, s.radius, s.radius},
                                     {2 * s.radius, 2 * s.radius, 2 * s.radius});
       return local.transformed(m);
     }
-    BBox operator()(const Box& b) const {
-      const BBox local = BBox::make(b.corner1, b.corner2 - b.corner1);
+    ExtentBox operator()(const Box& b) const {
+      const ExtentBox local = ExtentBox::make(b.corner1, b.corner2 - b.corner1);
       return is_identity(o.world_from_object) ? local : local.transformed(o.world_from_object);
     }
-    BBox operator()(const Plane&) const { return BBox::huge(); }
+    ExtentBox operator()(const Plane&) const { return ExtentBox::huge(); }
     // Triangles: the box of the world corners grown by EPSILON; polygons and meshes: the object-space box of
     // their points carried to world space (POV-Ray's Compute_BBox, then Recompute_BBox for each transform).
-    BBox operator()(const Triangle& t) const {
+    ExtentBox operator()(const Triangle& t) const {
       Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
       for (const Vec3& c : t.corners) {
         lo = min(lo, o.world_from_object.point(c));
         hi = max(hi, o.world_from_object.point(c));
       }
       const Vec3 e{kInsideEpsilon, kInsideEpsilon, kInsideEpsilon};
-      return BBox::from_min_max(lo - e, hi + e);
+      return ExtentBox::from_min_max(lo - e, hi + e);
     }
-    BBox operator()(const Polygon& poly) const {
+    ExtentBox operator()(const Polygon& poly) const {
       Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
       for (const auto& q : poly.points) {
         const Vec3 w = (poly.world_from_plane * o.world_from_object).point({q[0], q[1], 0});
         lo = min(lo, w);
         hi = max(hi, w);
       }
-      return BBox::from_min_max(lo, hi);
+      return ExtentBox::from_min_max(lo, hi);
     }
-    BBox operator()(const Mesh& m) const {
+    ExtentBox operator()(const Mesh& m) const {
       Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi = -lo;
       for (std::uint32_t i = 0; i < m.data->vertices.size() / 3; ++i) {
         lo = min(lo, m.data->vertex(i));
         hi = max(hi, m.data->vertex(i));
       }
-      const BBox local = BBox::from_min_max(lo, hi);
+      const ExtentBox local = ExtentBox::from_min_max(lo, hi);
       return is_identity(o.world_from_object) ? local : local.transformed(o.world_from_object);
     }
-    BBox operator()(const Csg& c) const {
+    ExtentBox operator()(const Csg& c) const {
       Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
       for (const auto& child : c.children) {
-        const BBox b = bounding_box(child);
+        const ExtentBox b = bounding_box(child);
         lo = min(lo, b.lo());
         hi = max(hi, b.hi());
       }
-      if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return BBox::huge();   // no children: the initial box
-      BBox u = BBox::from_min_max(lo, hi);
+      if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return ExtentBox::huge();   // no children: the initial box
+      ExtentBox u = ExtentBox::from_min_max(lo, hi);
       for (int i = 0; i < 3; ++i)
-        if (u.lengths[i] > kCriticalLength) return BBox::huge();
+        if (u.lengths[i] > kCriticalLength) return ExtentBox::huge();
       return u;
     }
     // Refused (or handed to the renderer's geometry) by shape_outside_parser before any visit.
     // Parse_Cone and Parse_Cylinder read the first end point as the apex, the second as the base.
-    BBox operator()(const Cylinder& c) const { return cone_box(c.end2, c.radius, c.end1, c.radius, o.world_from_object); }
-    BBox operator()(const Cone& c) const { return cone_box(c.end2, c.radius2, c.end1, c.radius1, o.world_from_object); }
+    ExtentBox operator()(const Cylinder& c) const { return cone_box(c.end2, c.radius, c.end1, c.radius, o.world_from_object); }
+    ExtentBox operator()(const Cone& c) const { return cone_box(c.end2, c.radius2, c.end1, c.radius1, o.world_from_object); }
     // Disc::Compute_BBox: the unit disc's square, SMALL_TOLERANCE thick, scaled by the outer radius, placed by the
     // disc's canonical transform (radius and length 1) and the object's.
-    BBox operator()(const Disc& d) const {
+    ExtentBox operator()(const Disc& d) const {
       const double r = d.radius;
-      return BBox::make({-r, -r, -kSmallTolerance}, {2 * r, 2 * r, 2 * kSmallTolerance})
+      return ExtentBox::make({-r, -r, -kSmallTolerance}, {2 * r, 2 * r, 2 * kSmallTolerance})
           .transformed(canonical_to_shape(d.centre, d.normal, 1.0, 1.0) * o.world_from_object);
     }
     // Torus::Compute_BBox: the box of radius R + r around the centre, r high, carried by the torus's transform.
-    BBox operator()(const Torus& t) const {
+    ExtentBox operator()(const Torus& t) const {
       const double r1 = t.minor, r2 = t.major + t.minor;
-      return BBox::make({-r2, -r1, -r2}, {2.0 * r2, 2.0 * r1, 2.0 * r2}).transformed(o.world_from_object);
+      return ExtentBox::make({-r2, -r1, -r2}, {2.0 * r2, 2.0 * r1, 2.0 * r2}).transformed(o.world_from_object);
     }
-    BBox operator()(const Poly&) const { throw std::logic_error("extent of a poly"); }
-    BBox operator()(const Quadric&) const { throw std::logic_error("extent of a quadric"); }
-    BBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
-    BBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
-    BBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
-    BBox operator()(const Text& text) const { return text_box(text); }
-    BBox operator()(const Lathe&) const { throw std::logic_error("extent of a lathe"); }
-    BBox operator()(const Prism&) const { throw std::logic_error("extent of a prism"); }
-    BBox operator()(const Sor&) const { throw std::logic_error("extent of a sor"); }
-    BBox operator()(const Isosurface&) const { throw std::logic_error("extent of an isosurface"); }
+    ExtentBox operator()(const Poly&) const { throw std::logic_error("extent of a poly"); }
+    ExtentBox operator()(const Quadric&) const { throw std::logic_error("extent of a quadric"); }
+    ExtentBox operator()(const Superellipsoid&) const { throw std::logic_error("extent of a superellipsoid"); }
+    ExtentBox operator()(const HeightField&) const { throw std::logic_error("extent of a height_field"); }
+    ExtentBox operator()(const Blob&) const { throw std::logic_error("extent of a blob"); }
+    ExtentBox operator()(const Text& text) const { return text_box(text); }
+    ExtentBox operator()(const Lathe&) const { throw std::logic_error("extent of a lathe"); }
+    ExtentBox operator()(const Prism&) const { throw std::logic_error("extent of a prism"); }
+    ExtentBox operator()(const Sor&) const { throw std::logic_error("extent of a sor"); }
+    ExtentBox operator()(const Isosurface&) const { throw std::logic_error("extent of an isosurface"); }
   };
   return std::visit(Box_{o}, o.shape);
 }
@@ -428,7 +380,7 @@ Numeric Interpreter::parse_object_query(const Token& name) {
   if (const auto* csg = std::get_if<Csg>(&object.shape); csg && csg->kind != CsgKind::union_ &&
                                                           csg->kind != CsgKind::merge)
     fail_unsupported(id, n + "() of a CSG " + csg_name(csg->kind));
-  const BBox box = bounding_box(object);
+  const ExtentBox box = bounding_box(object);
   return Numeric::vector(n == "min_extent" ? box.lo() : box.max_extent());
 }
 
