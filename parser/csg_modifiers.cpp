@@ -28,6 +28,7 @@ void Interpreter::invert_object(Object& object) {
     object.inverse = !object.inverse;
     return;
   }
+  csg->inverted = !csg->inverted;
   if (csg->kind == CsgKind::difference) {   // only in descriptions built in code: parse_csg converts differences
     for (std::size_t i = 1; i < csg->children.size(); ++i) invert_object(csg->children[i]);
     csg->kind = CsgKind::intersection;
@@ -76,6 +77,7 @@ void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
   }
   std::vector<Object> objects = parse_bound_clip_objects(keyword);
   for (auto& o : objects) list.push_back(std::move(o));
+  if (clip && std::holds_alternative<Quadric>(object.shape)) extents().quadric_clipped(object);
 }
 
 void Interpreter::remove_unnecessary_bounds(Object& object) {

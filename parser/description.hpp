@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "extent_box.hpp"
 #include "mesh_description.hpp"
 #include "sweep_description.hpp"
 #include "source_location.hpp"
@@ -293,7 +294,9 @@ struct Interior {
 // non-uniform scale, a matrix or a transform block reaches the sphere. Until then POV-Ray moves the centre and
 // scales the radius itself, so its tolerances apply in world units (what --povray-tolerances reproduces).
 struct Sphere { Vec3 centre; double radius = 1; bool ellipsoid = false; };
-struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; };   // normal as written (unit-normalised by parser)
+// Normal as written (unit-normalised by the parser). `moved_by_matrix`: a matrix or transform block reached the plane,
+// which POV-Ray then keeps as a transform instead of moving its normal and distance (Plane::Transform).
+struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; bool moved_by_matrix = false; };
 // Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
 // and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a
 // transform (`rotated`); the object's matrix holds only the transforms from then on. uv_mapping sees the difference.
@@ -311,6 +314,9 @@ struct Csg {
   CsgKind kind = CsgKind::union_;
   std::vector<Object> children;
   std::vector<Light> lights;      // light sources written inside the CSG move with it
+  // POV-Ray's INVERTED_FLAG on the CSG node, toggled by each inversion (which also turns the kind and the children):
+  // an intersection leaves inverted children out of its bounding box (CSG::Compute_BBox).
+  bool inverted = false;
 };
 
 // The quadric-like shapes, as written (POV-Ray's canonical transforms are the renderer's business). The parser has
@@ -326,6 +332,9 @@ struct Poly {
   int order = 4;
   std::shared_ptr<const std::vector<double>> coefficients;
   bool sturm = false;
+  // POV-Ray's Poly::Compute_BBox, run when the poly is made and at each transform, takes the first clip object's
+  // box (else the huge box): set once a transform has met a clipped poly.
+  bool box_from_first_clip = false;
 };
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
@@ -347,6 +356,9 @@ struct HeightField {
   int samples_width = 0, samples_depth = 0;
   bool smooth = false;
   double water_level = 0;
+  // POV-Ray computes a height field's box after its own modifiers (Parse_HField), so clip and bounding objects
+  // written inside it do not narrow the box until a later object { } block's modifiers end.
+  bool box_ignores_clips = false;
 };
 
 // One blob component as POV-Ray's parser leaves it: a sphere keeps its centre and squared radius through
@@ -422,6 +434,12 @@ struct Object {
   // but the bounding box they gave the object stays, and rays that miss that box miss the object (see
   // renderer/csg_build.cpp).
   std::vector<Object> removed_bounds;
+  // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
+  // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
+  // made with the object, then transformed, clipped and bounded as POV-Ray does, for min_extent()/max_extent().
+  // Unset for the other shapes, whose box follows from the shape and world_from_object (object_queries.cpp), and
+  // for a CSG whose box needs data only the renderer reads (a height field's image) when the parser has none.
+  std::optional<ExtentBox> carried_extent;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------

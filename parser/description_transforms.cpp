@@ -64,6 +64,9 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
       transform_texture(object.texture, m);
     }
   }
+  if (object.carried_extent) object.carried_extent = object.carried_extent->transformed(m);
+  if (auto* poly = std::get_if<Poly>(&object.shape); poly && !object.clipped_by.empty()) poly->box_from_first_clip = true;
+  if (auto* plane = std::get_if<Plane>(&object.shape); plane && kind == TransformKind::other) plane->moved_by_matrix = true;
   for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
   for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
   for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);
@@ -74,7 +77,6 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
-  if (auto* text = std::get_if<Text>(&object.shape)) text->box_transforms.push_back(m);   // extents, as CSG::Transform
   if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !keeps_sphere(kind, m)) sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {
     if (!box->rotated && (kind == TransformKind::translate || kind == TransformKind::scale)) {

@@ -6,7 +6,7 @@
 
 #include <array>
 
-#include "parser/vecmath.hpp"
+#include "vecmath.hpp"
 
 namespace povtrace {
 

@@ -144,6 +144,7 @@ Object Interpreter::parse_height_field(const Token& keyword) {
   }
   o.shape = h;
   parse_object_modifiers(o);
+  std::get<HeightField>(o.shape).box_ignores_clips = true;   // Parse_HField computes the box after the modifiers
   return o;
 }
 

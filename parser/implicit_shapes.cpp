@@ -128,6 +128,7 @@ Object Interpreter::parse_blob(const Token& keyword) {
   b.components = std::move(components);
   o.shape = b;
   parse_object_modifiers(o);
+  extents().made(o);   // Make_Blob computes the box after the blob's own modifiers
   return o;
 }
 

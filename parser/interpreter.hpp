@@ -33,6 +33,7 @@
 
 #include "parser/description_transforms.hpp"
 #include "parser/lexer.hpp"
+#include "parser/object_extents.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/reserved_words.hpp"
 #include "parser/symbols.hpp"
@@ -346,6 +347,8 @@ class Interpreter {
   void store_trace_normal(Vec3 normal);
   const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
   const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
+  // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
+  ObjectExtents extents() const { return ObjectExtents(options_.object_geometry.get()); }
 
   // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
   friend class FunctionParser;

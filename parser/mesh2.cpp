@@ -345,6 +345,7 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
   if (data.faces.empty()) fail_at(keyword, "no triangles in the mesh2");
   mesh.data = std::make_shared<const MeshData>(std::move(data));
   o.shape = std::move(mesh);
+  extents().made(o);
   parse_object_modifiers(o);
   return o;
 }

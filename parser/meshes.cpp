@@ -494,6 +494,7 @@ Object Interpreter::parse_mesh(const Token& keyword) {
   if (mesh.data.triangle_count() == 0) fail_at(keyword, "no triangles in the mesh");
   mesh.data.inside_vector = inside_vector;
   o.shape = Mesh{std::make_shared<const MeshData>(std::move(mesh.data)), std::move(mesh.textures)};
+  extents().made(o);
   parse_object_modifiers(o);
   return o;
 }

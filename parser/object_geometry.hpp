@@ -1,5 +1,6 @@
-// Ray-object geometry the SDL needs at parse time: trace(O, Start, Dir [, Normal]) and inside(O, P) of shapes whose
-// inside test the parser does not carry itself (object_queries.cpp). Intersecting objects is the renderer's work,
+// Ray-object geometry the SDL needs at parse time: trace(O, Start, Dir [, Normal]), inside(O, P) of shapes whose
+// inside test the parser does not carry itself (object_queries.cpp), and the samples behind a height field's
+// bounding box (object_extents.cpp). Intersecting objects is the renderer's work,
 // and the parser never includes renderer code: it asks through this interface, which the program hands it in
 // ParseOptions::object_geometry (renderer/object_geometry.hpp implements it). Without one, trace() is refused by
 // name.
@@ -31,9 +32,18 @@ class PreparedObject {
   virtual bool inside(Vec3 point) const = 0;
 };
 
+// A height field's sample grid and its bounding box's y range in sample units, as POV-Ray's Compute_HField makes
+// them: from the lowest sample (or the water level, if higher) less 0.001 to the highest sample plus 0.001.
+struct HeightFieldExtent {
+  int width = 0, depth = 0;
+  double bottom = 0, top = 0;
+};
+
 class ObjectGeometry {
  public:
   virtual ~ObjectGeometry() = default;
+  // The height field's samples read as for rendering (its image, or its pigment function sampled).
+  virtual HeightFieldExtent height_field_extent(const HeightField& h) const = 0;
   // The object as placed (its transforms composed, CSG children inverted as POV-Ray inverts them). The object
   // carries no unsupported geometry (the caller refuses those by name first).
   virtual std::unique_ptr<const PreparedObject> prepare(const Object& object) const = 0;

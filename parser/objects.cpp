@@ -154,10 +154,14 @@ void Interpreter::parse_object_modifiers(Object& object) {
   while (true) {
     if (plain_symbol(plain_ahead(), '}')) {   // the closing brace, without making its Token
       consume_plain();
+      extents().modifiers_ended(object);
       return;
     }
     Token t = next();
-    if (t.is("}")) return;
+    if (t.is("}")) {
+      extents().modifiers_ended(object);
+      return;
+    }
     if (try_object_modifier(t, object)) continue;
     // Any other keyword here (often the next object after a missing '}') is a syntax error.
     fail_expected(t, "an object modifier (translate, rotate, scale, matrix, transform, texture, pigment, finish, "
@@ -245,6 +249,7 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   if (csg.children.size() + csg.lights.size() < 2)
     warn(keyword.loc, "a CSG " + csg_name(kind) + " should have at least two objects");
   o.shape = std::move(csg);
+  extents().made(o);
   parse_object_modifiers(o);
   return o;
 }

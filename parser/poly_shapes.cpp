@@ -65,6 +65,7 @@ Object Interpreter::parse_quadric(const Token& keyword) {
   accept(",");
   q.constant = parse_float();
   o.shape = q;
+  extents().made(o);
   parse_object_modifiers(o);
   return o;
 }

@@ -124,9 +124,9 @@ Object Interpreter::parse_text(const Token& keyword) {
     fail_at(string_at, "cannot lay out this text with the font: " + std::string(e.what()));
   }
   const Matrix anti_crack = Matrix::rotation({kAntiCrackRotation, kAntiCrackRotation, kAntiCrackRotation});
-  text.box_transforms.push_back(anti_crack);
-  o.world_from_object = anti_crack;
   o.shape = std::move(text);
+  extents().made(o);
+  transform_object(o, anti_crack);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
   parse_object_modifiers(o);
   return o;
 }

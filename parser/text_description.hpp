@@ -38,13 +38,12 @@ struct TextGlyph {
   double x = 0, y = 0;
 };
 
-// text { … }: the laid-out glyphs, each extruded over 0 <= z <= thickness. `box_transforms` lists every transform
-// applied to the object since it was built (POV-Ray's tiny anti-crack rotation first): POV-Ray carries the union's
-// bounding box through each one in turn (CSG::Transform → Recompute_BBox), which min_extent/max_extent report.
+// text { … }: the laid-out glyphs, each extruded over 0 <= z <= thickness. POV-Ray makes a text a CSG union of its
+// glyphs, so its bounding box is carried through each later transform (Object::carried_extent), starting with the
+// tiny anti-crack rotation.
 struct Text {
   std::vector<TextGlyph> glyphs;
   double thickness = 1;
-  std::vector<Matrix> box_transforms;
 };
 
 // POV-Ray's point-in-glyph test (TrueType::Inside_Glyph): the parity of the outline crossings of the ray from

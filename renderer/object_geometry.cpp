@@ -4,6 +4,7 @@
 
 #include "renderer/csg_build.hpp"
 #include "renderer/object_primitives.hpp"
+#include "renderer/shapes/height_field.hpp"
 
 namespace povtrace::render {
 
@@ -59,6 +60,16 @@ class RendererGeometry final : public ObjectGeometry {
     std::vector<Primitive> primitives;
     add_geometry(object, primitives);
     return std::make_unique<PreparedPrimitives>(std::move(primitives));
+  }
+
+  // The samples as the render reads them: the height field's primitive, built alone.
+  HeightFieldExtent height_field_extent(const HeightField& h) const override {
+    Object o;
+    o.shape = h;
+    std::vector<Primitive> primitives;
+    add_shape_primitives(o, 0, 0, primitives);
+    const auto& d = static_cast<const HeightFieldData&>(*primitives.at(0).data);
+    return {d.width, d.depth, d.bottom, d.top};
   }
 };
 
