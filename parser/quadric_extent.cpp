@@ -1,0 +1,129 @@
+// POV-Ray 3.7's quadric bounding box (shape/quadrics.cpp: Quadric::Transform, Compute_BBox, Compute_Plane_Min_Max),
+// reproduced for min_extent()/max_extent(). The box is kept in float, so the arithmetic below follows POV-Ray's
+// order of operations (and its std::max/std::min argument order, which decides the sign of a zero) wherever a last
+// bit could reach it.
+#include "parser/quadric_extent.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace povtrace {
+
+namespace {
+
+constexpr double kEpsilon = 1e-10;   // POV-Ray's EPSILON
+
+using Matrix4 = std::array<std::array<double, 4>, 4>;
+
+// A 4×3 affine matrix with its implied fourth column (0, 0, 0, 1), as POV-Ray's TRANSFORM holds it.
+Matrix4 full(const Matrix& m) {
+  Matrix4 r{};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 3; ++j) r[i][j] = m.m[i][j];
+    r[i][3] = i == 3 ? 1.0 : 0.0;
+  }
+  return r;
+}
+
+// a·b, each entry summed over k = 0..3 in order (POV-Ray's MTimesA and MTimesB compute the same sums).
+Matrix4 product(const Matrix4& a, const Matrix4& b) {
+  Matrix4 r{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j] + a[i][3] * b[3][j];
+  return r;
+}
+
+Matrix4 transpose(const Matrix4& a) {
+  Matrix4 r{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) r[i][j] = a[j][i];
+  return r;
+}
+
+// The inverse of a `matrix` transform as POV-Ray's MInvers evaluates it for an affine matrix. Its linear part comes
+// out bit for bit as Matrix::inverse computes it (the same 2×2 minors over the same determinant); the translation
+// row differs: MInvers takes each entry as a 3×3 minor over the determinant, the six products summed in the order
+// of the rule of Sarrus, where Matrix::inverse carries the translation through the inverted linear part.
+Matrix general_inverse(const Matrix& m) {
+  Matrix r = m.inverse();
+  const auto& a = m.m;
+  const double det = m.determinant();
+  // Row 3 of the inverse is (-d03, d13, -d23)/D, di3 being the 3×3 minor without row i and the fourth column,
+  // its six products in MInvers's order: the three along the diagonals, then the three along the anti-diagonals.
+  const double m00 = a[0][0], m01 = a[0][1], m02 = a[0][2];
+  const double m10 = a[1][0], m11 = a[1][1], m12 = a[1][2];
+  const double m20 = a[2][0], m21 = a[2][1], m22 = a[2][2];
+  const double m30 = a[3][0], m31 = a[3][1], m32 = a[3][2];
+  const double d03 = m10 * m21 * m32 + m11 * m22 * m30 + m12 * m20 * m31 - m30 * m21 * m12 - m31 * m22 * m10 -
+                     m32 * m20 * m11;
+  const double d13 = m00 * m21 * m32 + m01 * m22 * m30 + m02 * m20 * m31 - m30 * m21 * m02 - m31 * m22 * m00 -
+                     m32 * m20 * m01;
+  const double d23 = m00 * m11 * m32 + m01 * m12 * m30 + m02 * m10 * m31 - m30 * m11 * m02 - m31 * m12 * m00 -
+                     m32 * m10 * m01;
+  r.m[3] = {-d03 / det, d13 / det, -d23 / det};
+  return r;
+}
+
+}  // namespace
+
+ExtentBox initial_quadric_box() { return ExtentBox::huge(); }
+
+Quadric transformed_quadric(const Quadric& q, const Matrix& m, TransformKind kind) {
+  // The special inverses hold only for matrices of their kind's shape; anything else takes the general one.
+  const bool no_translation = m.m[3][0] == 0.0 && m.m[3][1] == 0.0 && m.m[3][2] == 0.0;
+  bool diagonal = true, identity_linear = true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (i != j && m.m[i][j] != 0.0) diagonal = false;
+      if (m.m[i][j] != (i == j ? 1.0 : 0.0)) identity_linear = false;
+    }
+  if ((kind == TransformKind::scale && !(diagonal && no_translation)) ||
+      (kind == TransformKind::rotate && !no_translation) ||
+      (kind == TransformKind::translate && !identity_linear))
+    kind = TransformKind::other;
+  Matrix inverse;
+  switch (kind) {
+    case TransformKind::scale:   // Compute_Scaling_Transform: the reciprocals of the factors
+      inverse = Matrix::scaling({1.0 / m.m[0][0], 1.0 / m.m[1][1], 1.0 / m.m[2][2]});
+      break;
+    case TransformKind::rotate:   // Compute_Rotation_Transform: the transpose of the rotation
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) inverse.m[i][j] = m.m[j][i];
+      break;
+    case TransformKind::translate:   // Compute_Translation_Transform: the negated vector
+      inverse = Matrix::translation({-m.m[3][0], -m.m[3][1], -m.m[3][2]});
+      break;
+    case TransformKind::other:
+      inverse = general_inverse(m);
+      break;
+  }
+  return transformed_quadric_by_inverse(q, inverse);
+}
+
+Quadric transformed_quadric_by_inverse(const Quadric& q, const Matrix& inverse) {
+  // The quadric as the row-vector form p·Q·pᵀ, p = [x y z 1], each cross term once, above the diagonal
+  // (Quadric_To_Matrix). With p = p'·inverse for a world point p', the world quadric is inverse·Q·inverseᵀ.
+  Matrix4 c{};
+  c[0][0] = q.square.x;
+  c[1][1] = q.square.y;
+  c[2][2] = q.square.z;
+  c[0][1] = q.mixed.x;
+  c[0][2] = q.mixed.y;
+  c[1][2] = q.mixed.z;
+  c[0][3] = q.linear.x;
+  c[1][3] = q.linear.y;
+  c[2][3] = q.linear.z;
+  c[3][3] = q.constant;
+  const Matrix4 inv = full(inverse);
+  const Matrix4 r = product(product(inv, c), transpose(inv));   // POV-Ray's order: inverse·Q first
+  // Matrix_To_Quadric: the product is no longer triangular; each term is the sum of its symmetric pair.
+  Quadric out;
+  out.square = {r[0][0], r[1][1], r[2][2]};
+  out.mixed = {r[0][1] + r[1][0], r[0][2] + r[2][0], r[1][2] + r[2][1]};
+  out.linear = {r[0][3] + r[3][0], r[1][3] + r[3][1], r[2][3] + r[3][2]};
+  out.constant = r[3][3];
+  return out;
+}
+
+}  // namespace povtrace

@@ -1,0 +1,45 @@
+// The bounding box POV-Ray 3.7 gives a quadric (shape/quadrics.cpp), as min_extent() and max_extent() report it,
+// and the pieces it is made from: the coefficients a transform leaves, the half space an axis-aligned plane gives
+// a CSG intersection, the box the coefficients give inside a clip range. Pure computations on the parser's
+// description types; the interpreter decides when POV-Ray runs each (below).
+//
+// When POV-Ray computes a quadric's box:
+//   - Parse_Quadric: once, from the coefficients as written, clip range ±BOUND_HUGE (not ±BOUND_HUGE/2), the old box
+//     being the constructor's huge one: parsed_quadric_box().
+//   - Each later transform (Quadric::Transform) transforms the coefficients (transformed_quadric) and only carries
+//     the box along (ExtentBox::transformed, Recompute_BBox); the box is not recomputed from the new coefficients.
+//   - clipped_by on a quadric (Parse_Object_Mods): quadric_box() from the coefficients as they are then, the clip
+//     range ±BOUND_HUGE narrowed by the non-inverted clip objects (plane_min_max for planes, their boxes otherwise),
+//     the old box being the quadric's current one.
+//   - A CSG intersection (CSG::Compute_BBox): the children other than quadrics and height fields narrow a range from
+//     ±BOUND_HUGE (planes by plane_min_max, the rest by their boxes); then each quadric child, in order, gets
+//     quadric_box() of its current (transformed) coefficients in that range with its current box as the old one —
+//     the child's own box is replaced — and narrows the range in turn. Children with INVERTED_FLAG are skipped: an
+//     inverted quadric or box is, an inverted plane is not (Plane::Invert flips it without the flag).
+#pragma once
+
+#include "parser/description.hpp"
+#include "parser/description_transforms.hpp"
+#include "parser/extent_box.hpp"
+
+namespace povtrace {
+
+// The box of a newly constructed POV-Ray object (ObjectBase's constructor; Quadric's constructor leaves it): the
+// huge box, lower corner -BOUND_HUGE/2, lengths BOUND_HUGE. The `old` box of Parse_Quadric's computation.
+ExtentBox initial_quadric_box();
+
+// Quadric::Transform's coefficients (with Quadric_To_Matrix and Matrix_To_Quadric): the 4×4 coefficient matrix,
+// upper triangular as the terms are written, multiplied by the transform's inverse on the left and its transpose on
+// the right, the symmetric pairs then summed back into the mixed and linear terms. `m` is one transform in
+// povtrace's row-vector layout (points p' = p·m). POV-Ray transforms the coefficients once per transform written,
+// with the inverse each kind of transform carries (scale: the reciprocals, rotate: the transpose, translate: the
+// negated vector, matrix: MInvers); `kind` picks that inverse, so applying this per transform in written order
+// reproduces POV-Ray's coefficients to the last bit, and applying it once to a composition agrees to rounding.
+// TransformKind::other stands for `matrix` (and a transform block, whose inverse POV-Ray composes from its parts'
+// inverses — agreeing to rounding); a matrix not of its kind's shape (a scale with a translation, say) is treated
+// as `other`. Cannot fail for the non-singular transforms the parser accepts.
+Quadric transformed_quadric(const Quadric& q, const Matrix& m, TransformKind kind = TransformKind::other);
+// The same with the inverse given (its 4×3 layout; the fourth column is taken as 0, 0, 0, 1).
+Quadric transformed_quadric_by_inverse(const Quadric& q, const Matrix& inverse);
+
+}  // namespace povtrace
