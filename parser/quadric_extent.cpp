@@ -126,4 +126,45 @@ Quadric transformed_quadric_by_inverse(const Quadric& q, const Matrix& inverse) 
   return out;
 }
 
+namespace {
+
+// The axis rule of Compute_Plane_Min_Max for a plane N·p = d: an axis whose normal is the only non-negligible
+// component is bounded on the side the normal points to. POV-Ray does not normalise N here (in the Trans form it
+// need not be unit), and with a unit N a negative component bounds from below at -d.
+void axis_plane_range(Vec3 normal, double d, Vec3& min, Vec3& max) {
+  min = {-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2};
+  max = {kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    if (std::fabs(normal[i]) < kEpsilon && std::fabs(normal[j]) < kEpsilon) {
+      if (normal[k] > 0.0)
+        max[k] = d;
+      else
+        min[k] = -d;
+    }
+  }
+}
+
+}  // namespace
+
+void plane_min_max(Vec3 normal, double distance, const Matrix& world_from_object, Vec3& min, Vec3& max) {
+  if (world_from_object == Matrix::identity()) return axis_plane_range(normal, distance, min, max);
+  // The world plane: the normal by the inverse transpose, made unit as Plane::Scale does (times the reciprocal of
+  // its length), and the distance of the moved point normal·distance along it.
+  const Vec3 n = world_from_object.inverse().normal_from_inverse(normal);
+  const Vec3 unit = n * (1.0 / length(n));
+  const Vec3 on = world_from_object.point(normal * distance);
+  axis_plane_range(unit, dot(unit, on), min, max);
+}
+
+void plane_min_max_with_trans(Vec3 normal, double distance, const Matrix& trans, Vec3& min, Vec3& max) {
+  // MInvTransNormal: each component the dot product of the normal with a row of Trans's linear part.
+  const Vec3 n = trans.normal_from_inverse(normal);
+  // MInvTransPoint: that vector carried back by Trans's inverse, as a point.
+  const Vec3 p = general_inverse(trans).point(n);
+  // POV-Ray's Distance is the negated written distance, so its -Distance is `distance`.
+  const double d = distance - p.x * n.x - p.y * n.y - p.z * n.z + 1.0;
+  axis_plane_range(n, d, min, max);
+}
+
 }  // namespace povtrace

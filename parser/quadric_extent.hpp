@@ -42,4 +42,26 @@ Quadric transformed_quadric(const Quadric& q, const Matrix& m, TransformKind kin
 // The same with the inverse given (its 4×3 layout; the fourth column is taken as 0, 0, 0, 1).
 Quadric transformed_quadric_by_inverse(const Quadric& q, const Matrix& inverse);
 
+// Quadric::Compute_Plane_Min_Max: the range a plane confines a CSG intersection (or a quadric's clipped_by) to.
+// Only a plane perpendicular to an axis (the normal's other two components below EPSILON) limits that axis, from
+// above when the normal's component is positive (max = d), from below when negative (min = -d); every other bound is
+// ±BOUND_HUGE/2.
+//
+// While no `matrix` or `transform` block has reached the plane, POV-Ray keeps it in world space (Plane::Translate,
+// Rotate, Scale move its unit normal and distance): this form takes the plane as povtrace's description holds it —
+// `normal` (unit, as written) and `distance` as written — and the object's composed world_from_object, finds the
+// world unit normal and distance (as inside() does), and applies the rule. An inverted plane (a difference's later
+// child; POV-Ray's Plane::Invert negates both and sets no INVERTED_FLAG, so the plane still counts) is passed with
+// `normal` and `distance` negated.
+void plane_min_max(Vec3 normal, double distance, const Matrix& world_from_object, Vec3& min, Vec3& max);
+// Once a `matrix` or `transform` block has reached the plane, POV-Ray keeps the normal and distance it had then and
+// composes every transform since into the plane's Trans; Compute_Plane_Min_Max then uses the normal multiplied by
+// Trans's forward linear part (MInvTransNormal — not the inverse transpose a normal needs), and the distance
+// -Distance - P·N + 1 with P that normal carried back by Trans's inverse as a point. That is not the transformed
+// plane's half space in general (a translation along the normal and the identity come out right); reproduced as is.
+// `normal` and `distance` are the unit normal and the distance (as written, not POV-Ray's negated Distance) the
+// plane had when its Trans was created — negated for an inverted plane —, `trans` the composition of the transforms
+// since.
+void plane_min_max_with_trans(Vec3 normal, double distance, const Matrix& trans, Vec3& min, Vec3& max);
+
 }  // namespace povtrace
