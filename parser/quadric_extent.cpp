@@ -167,4 +167,164 @@ void plane_min_max_with_trans(Vec3 normal, double distance, const Matrix& trans,
   axis_plane_range(n, d, min, max);
 }
 
+namespace {
+
+// Compute_BBox's first step: coefficients below EPSILON in magnitude count as 0.
+double zeroed(double v) { return std::fabs(v) < kEpsilon ? 0.0 : v; }
+
+// The largest of the two radii a cone or hyperboloid along an axis has at the two ends of the clip range.
+template <typename RadiusAt>
+double wider_end(double lo, double hi, RadiusAt radius_at) {
+  return std::max(radius_at(lo), radius_at(hi));
+}
+
+}  // namespace
+
+ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old,
+                      bool* automatic_bounds) {
+  // Compute_BBox names the coefficients of the symmetric form A x² + E y² + H z² + 2B xy + 2C xz + 2F yz +
+  // 2D x + 2G y + 2I z + J; here square[k] plays A, E, H and half_linear[k] D, G, I.
+  double square[3] = {zeroed(current.square.x), zeroed(current.square.y), zeroed(current.square.z)};
+  const double half_mixed[3] = {zeroed(current.mixed.x / 2.0), zeroed(current.mixed.y / 2.0),
+                                zeroed(current.mixed.z / 2.0)};
+  double half_linear[3] = {zeroed(current.linear.x / 2.0), zeroed(current.linear.y / 2.0),
+                           zeroed(current.linear.z / 2.0)};
+  double constant = zeroed(current.constant);
+
+  // A quadric with a cross term is not in the axis-aligned normal form the cases below need (bringing it there
+  // means diagonalising its matrix, which POV-Ray does not do): the clip range itself is the box, if smaller.
+  if (half_mixed[0] != 0.0 || half_mixed[1] != 0.0 || half_mixed[2] != 0.0) {
+    const double clip_volume =
+        (clip_max.x - clip_min.x) * (clip_max.y - clip_min.y) * (clip_max.z - clip_min.z);
+    return clip_volume < old.volume() ? ExtentBox::from_min_max(clip_min, clip_max) : old;
+  }
+
+  // Linear terms: move the quadric so that they vanish along each axis with a square term (its centre there);
+  // along an axis with a linear term only (a paraboloid's axis) to where the surface meets the axis. The
+  // constant follows the move; the clip range moves the other way, and the box comes back at the end.
+  Vec3 shift{0.0, 0.0, 0.0};
+  if (half_linear[0] != 0.0 || half_linear[1] != 0.0 || half_linear[2] != 0.0) {
+    for (int k = 0; k < 3; ++k) {
+      if (square[k] != 0.0)
+        shift[k] = -half_linear[k] / square[k];
+      else if (half_linear[k] != 0.0)
+        shift[k] = constant / (2.0 * half_linear[k]);
+      else
+        shift[k] = 0.0;
+    }
+    for (int k = 0; k < 3; ++k) half_linear[k] += square[k] * shift[k];
+    constant -= shift.x * (square[0] * shift.x + 2.0 * half_linear[0]) +
+                shift.y * (square[1] * shift.y + 2.0 * half_linear[1]) +
+                shift.z * (square[2] * shift.z + 2.0 * half_linear[2]);
+  }
+  clip_min -= shift;
+  clip_max -= shift;
+
+  // The sign of the whole equation is free; the cases below take A (the x² term) non-negative.
+  if (square[0] < 0.0) {
+    for (int k = 0; k < 3; ++k) {
+      square[k] = -square[k];
+      half_linear[k] = -half_linear[k];
+    }
+    constant = -constant;
+  }
+
+  Vec3 lo{-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2}, hi{kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
+  const double a = square[0], e = square[1], h = square[2], j = constant;
+
+  // Ellipsoid x²/a² + y²/b² + z²/c² = 1 and the cylinders along x, y, z (that axis's square term 0): the
+  // semi-axes √(-J/coefficient) on every axis with a square term.
+  const bool ellipsoid = a > 0.0 && e > 0.0 && h > 0.0 && j < 0.0;
+  const bool cylinder = j < 0.0 && ((a == 0.0 && e > 0.0 && h > 0.0) || (a > 0.0 && e == 0.0 && h > 0.0) ||
+                                    (a > 0.0 && e > 0.0 && h == 0.0));
+  if (ellipsoid || cylinder)
+    for (int k = 0; k < 3; ++k)
+      if (square[k] != 0.0) {
+        const double semi = std::sqrt(-j / square[k]);
+        lo[k] = -semi;
+        hi[k] = semi;
+      }
+
+  // Cones (J = 0) and one-sheet hyperboloids along an axis: that axis's square term has the opposite sign to the
+  // other two (with A non-negative: x when E and H are negative, y when only E is, z when only H is). The other
+  // axes are bounded by the wider of the cross-sections at the two ends of the clip range along it.
+  int axis = -1;
+  if (a > 0.0 && e < 0.0 && h < 0.0) axis = 0;
+  if (a > 0.0 && e < 0.0 && h > 0.0) axis = 1;
+  if (a > 0.0 && e > 0.0 && h < 0.0) axis = 2;
+  if (axis >= 0) {
+    const double odd = square[axis];
+    if (j == 0.0) {
+      // The cone's semi-axes at unit distance: √(1/|coefficient|) each, the radius at t along the axis
+      // |t·r_other/r_axis|.
+      const double r_axis = std::sqrt(1.0 / std::fabs(odd));
+      for (int k = 0; k < 3; ++k) {
+        if (k == axis) continue;
+        const double r_k = std::sqrt(1.0 / std::fabs(square[k]));
+        const double r = wider_end(clip_min[axis], clip_max[axis],
+                                   [&](double t) { return std::fabs(t * r_k / r_axis); });
+        lo[k] = -r;
+        hi[k] = r;
+      }
+    } else if ((j > 0.0) == (odd > 0.0)) {
+      // One sheet: the cross-section at t satisfies |coefficient_k|·r² = 1 + |odd|·t². POV-Ray takes 1 for |J| here
+      // (right for the normalised form with J = ±1 only), so a hyperboloid with another constant gets the radii
+      // of x²/a² ... = 1 scaled as if J were ±1.
+      for (int k = 0; k < 3; ++k) {
+        if (k == axis) continue;
+        const double coefficient = std::fabs(square[k]);
+        const double r = wider_end(clip_min[axis], clip_max[axis], [&](double t) {
+          const double d = 1.0 + std::fabs(odd) * (t * t);
+          return std::sqrt(d / coefficient);
+        });
+        lo[k] = -r;
+        hi[k] = r;
+      }
+    }
+  }
+
+  // Paraboloids along an axis: no square term there, a linear term, the other two square terms of one sign,
+  // J = 0 (after the move, the vertex at the origin). 2·l·t = -(the other terms), so t has the sign opposite to
+  // l·(the other coefficients): the range along the axis is cut at 0 on the far side, and the cross-section is
+  // widest at one end of what remains, radius √|2·l·t/coefficient|.
+  for (int k = 0; k < 3; ++k) {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    const double l = half_linear[k];
+    if (!(square[k] == 0.0 && l != 0.0 && square[u] * square[v] > 0.0 && j == 0.0)) continue;
+    // Which side: POV-Ray tests l·E for x, and the sign of l alone for y and z (A is positive there); the same.
+    const double side = k == 0 ? l * square[1] : l;
+    // POV-Ray bounds the axis with max(0, t) and min(0, t) for x and y but max(t, 0) and min(t, 0) for z, which
+    // keeps a -0 differently (std::max and std::min return their first argument on a tie).
+    auto clamp_up = [&](double t) { return k == 2 ? std::max(t, 0.0) : std::max(0.0, t); };
+    auto clamp_down = [&](double t) { return k == 2 ? std::min(t, 0.0) : std::min(0.0, t); };
+    const double t_lo = side < 0 ? clamp_up(clip_min[k]) : clip_min[k];
+    const double t_hi = side > 0 ? clamp_down(clip_max[k]) : clip_max[k];
+    for (const int w : {u, v}) {
+      const double coefficient = square[w];
+      const double r = std::max(std::sqrt(std::fabs(2.0 * l * t_lo / coefficient)),
+                                std::sqrt(std::fabs(2.0 * l * t_hi / coefficient)));
+      lo[w] = -r;
+      hi[w] = r;
+    }
+    if (side < 0) lo[k] = clamp_up(clip_min[k]);
+    if (side > 0) hi[k] = clamp_down(clip_max[k]);
+  }
+
+  // The shape's box within the clip range (kept as it falls: an empty range gives negative lengths).
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::max(lo[k], clip_min[k]);
+    hi[k] = std::min(hi[k], clip_max[k]);
+  }
+  const double volume = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z);
+  if (!(volume < old.volume())) return old;
+  if (automatic_bounds) *automatic_bounds = true;
+  ExtentBox box = ExtentBox::from_min_max(lo + shift, hi + shift);
+  return box.wider_than_critical() ? ExtentBox::huge() : box;
+}
+
+ExtentBox parsed_quadric_box(const Quadric& written, bool* automatic_bounds) {
+  return quadric_box(written, {-kBoundHuge, -kBoundHuge, -kBoundHuge}, {kBoundHuge, kBoundHuge, kBoundHuge},
+                     initial_quadric_box(), automatic_bounds);
+}
+
 }  // namespace povtrace

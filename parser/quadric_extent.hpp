@@ -64,4 +64,23 @@ void plane_min_max(Vec3 normal, double distance, const Matrix& world_from_object
 // since.
 void plane_min_max_with_trans(Vec3 normal, double distance, const Matrix& trans, Vec3& min, Vec3& max);
 
+// Quadric::Compute_BBox(ClipMin, ClipMax) without its loop over the quadric's clip objects (the caller narrows
+// clip_min and clip_max by them first): the box POV-Ray holds after it, given the quadric's current coefficients and
+// its box on entry (`old`).
+//   - Coefficients below EPSILON in magnitude count as 0 (the mixed and linear terms halved first).
+//   - Any mixed term left: the clip range's box if its volume (in double) is below the old box's (BOUNDS_VOLUME,
+//     the product of the float lengths), else the old box — with no CRITICAL_LENGTH check.
+//   - Otherwise linear terms move the quadric to its centre (the vertex along an axis without a square term), A is
+//     made non-negative, and the centred ellipsoid, the cylinders, cones and one-sheet hyperboloids along each axis,
+//     and the paraboloids along each axis give a box (their remaining axes ±BOUND_HUGE/2), intersected with the clip
+//     range. It replaces the old box only when its volume is smaller; a box then wider than CRITICAL_LENGTH on an
+//     axis becomes the huge box.
+// `automatic_bounds`, when given, is set to true when the computed box is used (POV-Ray's Automatic_Bounds, which
+// lets Link_To_Frame drop a quadric's bounded_by; POV-Ray never clears it) and left alone otherwise.
+ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old,
+                      bool* automatic_bounds = nullptr);
+
+// Parse_Quadric's box: quadric_box(written, ±BOUND_HUGE, initial_quadric_box()).
+ExtentBox parsed_quadric_box(const Quadric& written, bool* automatic_bounds = nullptr);
+
 }  // namespace povtrace
