@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "parser/quadratic_roots.hpp"
+
 namespace povtrace::render::poly {
 
 namespace {
@@ -190,25 +192,8 @@ bool difficult_coefficients(int degree, const double* c) {
 }
 }  // namespace
 
-int solve_quadratic(const double c[3], double roots[2]) {
-  if (c[0] == 0.0) {
-    if (c[1] == 0.0) return 0;
-    roots[0] = -c[2] / c[1];
-    return 1;
-  }
-  const double b = c[1] / c[0], k = c[2] / c[0];
-  const double disc = b * b - 4.0 * k;
-  if (disc > -kSmallEnough && disc < kSmallEnough) {
-    roots[0] = -0.5 * b;
-    return 1;
-  }
-  if (disc < 0.0) return 0;
-  // The root of larger magnitude without cancellation, the other from the product of the roots.
-  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-  roots[0] = q;
-  roots[1] = k / q;
-  return 2;
-}
+// One definition shared with the parser (see polynomial_roots.hpp).
+int solve_quadratic(const double c[3], double roots[2]) { return povtrace::quadratic_roots(c, roots); }
 
 int solve_cubic(const double c[4], double roots[3]) {
   if (c[0] == 0.0) return solve_quadratic(c + 1, roots);

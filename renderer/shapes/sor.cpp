@@ -33,8 +33,6 @@ constexpr double depth_tolerance = 1e-4;   // sor.cpp DEPTH_TOLERANCE
 
 const SorData& data_of(const Primitive& p) { return static_cast<const SorData&>(*p.data); }
 
-double radius2_at(const SorSegment& s, double y) { return ((s.a * y + s.b) * y + s.c) * y + s.d; }
-
 void push_hit(double depth, std::uint32_t element, RootList& out) {
   if (depth > depth_tolerance && depth < tolerance::max_distance) out.push_back(Root{depth, element, 0.0});
 }
@@ -57,7 +55,7 @@ std::array<double, 4> segment_cubic(const SorSegment& s, Vec3 p, Vec3 v) {
   const double radial = v.x * v.x + v.z * v.z;
   return {s.a * v.y * v.y * v.y, v.y * v.y * (3.0 * s.a * p.y + s.b) - radial,
           v.y * (p.y * (3.0 * s.a * p.y + 2.0 * s.b) + s.c) - 2.0 * (p.x * v.x + p.z * v.z),
-          radius2_at(s, p.y) - p.x * p.x - p.z * p.z};
+          radius_squared(s, p.y) - p.x * p.x - p.z * p.z};
 }
 // The first segment whose heights hold y (POV-Ray's inside rule), or the segment count.
 std::uint32_t sor_segment_at(const SorData& d, double y) {
@@ -110,7 +108,7 @@ Vec3 sor_normal(const Primitive& p, Vec3 world_point) {
   const double r2 = q.x * q.x + q.z * q.z;
   const auto last = static_cast<std::uint32_t>(d.segments.size() - 1);
   std::uint32_t element = std::min(sor_segment_at(d, q.y), last);
-  double best = std::fabs(std::sqrt(std::max(0.0, radius2_at(d.segments[element], q.y))) - std::sqrt(r2));
+  double best = std::fabs(std::sqrt(std::max(0.0, radius_squared(d.segments[element], q.y))) - std::sqrt(r2));
   if (d.closed && r2 <= d.base_radius2 && std::fabs(q.y - d.height1) < best) {
     best = std::fabs(q.y - d.height1);
     element = base_element;
@@ -126,7 +124,7 @@ bool inside_sor(const Primitive& p, Vec3 world_point) {
   if (q.y >= d.height1 && q.y <= d.height2) {
     const double r2 = q.x * q.x + q.z * q.z;
     const std::uint32_t k = sor_segment_at(d, q.y);
-    in = r2 <= d.radius2 * d.radius2 && k < d.segments.size() && r2 <= radius2_at(d.segments[k], q.y);
+    in = r2 <= d.radius2 * d.radius2 && k < d.segments.size() && r2 <= radius_squared(d.segments[k], q.y);
   }
   return in != p.inverse;
 }

@@ -1,6 +1,8 @@
 // What lathe, prism and sor keep once built (sweep_build.cpp builds it, lathe.cpp, prism.cpp and sor.cpp intersect
 // it): POV-Ray's per-segment cubic polynomials of the profile, each segment's bounds, and the bounding rings of
-// POV-Ray's bcyl.cpp that decide which lathe and sor segments a ray is tested against (bounding_rings.cpp).
+// POV-Ray's bcyl.cpp that decide which lathe and sor segments a ray is tested against (bounding_rings.cpp). The
+// polynomials and ranges themselves come from parser/sweep_extents.hpp, which the parser's min_extent() and
+// max_extent() of these shapes are computed from too.
 #pragma once
 
 #include <array>
@@ -9,20 +11,18 @@
 #include <vector>
 
 #include "parser/description.hpp"
+#include "parser/sweep_extents.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/local_ray.hpp"
 
 namespace povtrace::render {
 
-// A cubic in the segment parameter w ∈ [0, 1], highest power first: ((c0·w + c1)·w + c2)·w + c3.
-using Cubic = std::array<double, 4>;
-inline double evaluate(const Cubic& c, double w) { return ((c[0] * w + c[1]) * w + c[2]) * w + c[3]; }
+// A segment's cubics in w ∈ [0, 1] (Cubic, evaluate) and profile segments (ProfileSegment: the point (x(w), y(w))),
+// as parser/sweep_extents.hpp defines them.
+using povtrace::Cubic;
+using povtrace::evaluate;
+using povtrace::ProfileSegment;
 inline double derivative(const Cubic& c, double w) { return (3.0 * c[0] * w + 2.0 * c[1]) * w + c[2]; }
-
-// One profile segment: the point (x(w), y(w)).
-struct ProfileSegment {
-  Cubic x{}, y{};
-};
 
 // A segment's bounding ring: radii r1 ≤ r ≤ r2 (as computed, so possibly negative: POV-Ray squares them) and
 // heights h1 ≤ y ≤ h2.
@@ -70,10 +70,9 @@ struct PrismData : ShapeData {
   double u1 = 0, u2 = 0, v1 = 0, v2 = 0;   // the same, unscaled
 };
 
-// A sor segment: r² = ((a·y + b)·y + c)·y + d for heights h1 ≤ y ≤ h2 (its ring's).
-struct SorSegment {
-  double a = 0, b = 0, c = 0, d = 0;
-};
+// A sor segment: r² = ((a·y + b)·y + c)·y + d (radius_squared) for heights h1 ≤ y ≤ h2 (its ring's).
+using povtrace::radius_squared;
+using povtrace::SorSegment;
 
 struct SorData : ShapeData {
   bool closed = true, sturm = false;
