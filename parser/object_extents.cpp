@@ -1,7 +1,8 @@
 // POV-Ray's bounding boxes for min_extent() and max_extent() (povray-sdl-and-geometry.md §5). Facts read from
 // POV-Ray 3.7's source (source/backend/shape/*.cpp Compute_BBox and Transform, csg.cpp CSG::Compute_BBox,
 // parser/parse.cpp Parse_Object_Mods, 3.7-stable):
-// - Boxes are single precision (ExtentBox). Most shapes recompute theirs from the shape and the composed transform
+// - Boxes are single precision (ExtentBox). Quadrics follow quadric_extent.hpp, lathes, sors and prisms
+//   sweep_extents.hpp. Most shapes recompute theirs from the shape and the composed transform
 //   whenever they are transformed (the box of the 8 transformed corners of an object-space box); a sphere moved by
 //   translations, rotations and uniform scales keeps a tight box around its moved centre; a plane's and a poly's
 //   box is the huge ±1e10 box (a poly's, once it has been transformed with clip objects, its first clip's box).
@@ -15,6 +16,9 @@
 //   (inverted ones left out), replaces the object's box when its volume is smaller.
 #include "parser/object_extents.hpp"
 
+#include "parser/quadric_extent.hpp"
+#include "parser/sweep_extents.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +28,11 @@ namespace {
 constexpr double kInsideEpsilon = 1e-10;
 
 bool is_identity(const Matrix& m) { return m == Matrix::identity(); }
+
+// Per component as std::min and std::max, which POV-Ray's box code calls: the first argument wins a tie, which
+// decides between a -0 and a +0.
+Vec3 std_min(Vec3 a, Vec3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
+Vec3 std_max(Vec3 a, Vec3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 
 constexpr double kEpsilon = 1e-10;          // POV-Ray's EPSILON
 constexpr double kSmallTolerance = 0.001;   // SMALL_TOLERANCE: a disc's box is this thick either side
@@ -90,9 +99,13 @@ double similarity_scale(const Matrix& m) {
 }
 
 
-// POV-Ray's INVERTED_FLAG: a leaf's inverse, a CSG node's own flag.
+// POV-Ray's INVERTED_FLAG: a CSG node's own flag, a leaf's inverse — except for planes, which Plane::Invert turns
+// over instead, and triangles and polygons, which ignore inverse.
 bool inverted(const Object& o) {
   if (const auto* csg = std::get_if<Csg>(&o.shape)) return csg->inverted;
+  if (std::holds_alternative<Plane>(o.shape) || std::holds_alternative<Triangle>(o.shape) ||
+      std::holds_alternative<Polygon>(o.shape))
+    return false;
   return o.inverse;
 }
 
@@ -100,12 +113,12 @@ bool inverted(const Object& o) {
 struct MinMax {
   Vec3 lo{kBoundHuge, kBoundHuge, kBoundHuge}, hi{-kBoundHuge, -kBoundHuge, -kBoundHuge};
   void enclose(const ExtentBox& b) {
-    lo = povtrace::min(lo, b.lo());
-    hi = povtrace::max(hi, b.hi());
+    lo = std_min(lo, b.lo());
+    hi = std_max(hi, b.hi());
   }
   void narrow(Vec3 l, Vec3 h) {
-    lo = povtrace::max(lo, l);
-    hi = povtrace::min(hi, h);
+    lo = std_max(lo, l);
+    hi = std_min(hi, h);
   }
   void narrow(const ExtentBox& b) { narrow(b.lo(), b.hi()); }
   bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
@@ -129,30 +142,22 @@ ExtentBox csg_result(const MinMax& m, const ExtentBox& old) {
 ExtentBox mesh_box(const MeshData& data) {
   MinMax m;
   for (const std::uint32_t v : data.faces) {
-    m.lo = povtrace::min(m.lo, data.vertex(v));
-    m.hi = povtrace::max(m.hi, data.vertex(v));
+    m.lo = std_min(m.lo, data.vertex(v));
+    m.hi = std_max(m.hi, data.vertex(v));
   }
   return ExtentBox::from_min_max(m.lo, m.hi);
 }
 
-// Quadric::Compute_Plane_Min_Max: a plane perpendicular to an axis bounds an intersection on one side of it (the
-// rest of the box stays ±BOUND_HUGE/2). POV-Ray keeps a plane moved by translate, rotate and scale as a unit normal
-// and a distance; one moved by matrix or transform keeps a transform, with its own formula, not modelled here.
+// A plane as a CSG intersection or a quadric's clip sees it (Quadric::Compute_Plane_Min_Max): a half space when it
+// is perpendicular to an axis. POV-Ray's Plane::Invert turns the plane over instead of flagging it, so an inverted
+// plane counts, turned. A plane moved by matrix or transform keeps a transform in POV-Ray, whose state at that
+// transform the description does not hold: refused by name.
 void narrow_by_plane(MinMax& m, const Plane& plane, const Object& o) {
   if (plane.moved_by_matrix)
     throw ExtentUnavailable("an intersection with a plane moved by 'matrix' or 'transform'");
-  const Matrix& w = o.world_from_object;
-  const Vec3 n = normalize(w.inverse().normal_from_inverse(plane.normal));
-  const double d = dot(n, w.point(plane.normal * plane.distance));
-  Vec3 lo{-kBoundHuge / 2, -kBoundHuge / 2, -kBoundHuge / 2}, hi{kBoundHuge / 2, kBoundHuge / 2, kBoundHuge / 2};
-  double* const lo_c[3] = {&lo.x, &lo.y, &lo.z};
-  double* const hi_c[3] = {&hi.x, &hi.y, &hi.z};
-  const double nc[3] = {n.x, n.y, n.z};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::fabs(nc[(axis + 1) % 3]) >= kEpsilon || std::fabs(nc[(axis + 2) % 3]) >= kEpsilon) continue;
-    if (nc[axis] > 0.0) *hi_c[axis] = d;
-    else *lo_c[axis] = -d;
-  }
+  const double side = o.inverse ? -1.0 : 1.0;
+  Vec3 lo, hi;
+  plane_min_max(side * plane.normal, side * plane.distance, o.world_from_object, lo, hi);
   m.narrow(lo, hi);
 }
 
@@ -169,8 +174,8 @@ void enclose_element_sphere(MinMax& m, Vec3 centre, double radius2, const Matrix
     radius2 = side * side + kEpsilon;
   }
   const double r = std::sqrt(radius2);
-  m.lo = povtrace::min(m.lo, centre - Vec3{r, r, r});
-  m.hi = povtrace::max(m.hi, centre + Vec3{r, r, r});
+  m.lo = std_min(m.lo, centre - Vec3{r, r, r});
+  m.hi = std_max(m.hi, centre + Vec3{r, r, r});
 }
 
 // Blob::Compute_BBox, run when the blob is made (after its own modifiers): the spheres bounding its elements of
@@ -206,8 +211,8 @@ ExtentBox text_box(const Text& text) {
     const Vec3 min{outline.x_min * funit, outline.y_min * funit, -kTextTolerance};
     const Vec3 max{outline.x_max * funit, outline.y_max * funit, text.thickness + kTextTolerance};
     const ExtentBox b = ExtentBox::make(min, max - min).transformed(Matrix::translation({g.x, g.y, 0.0}));
-    lo = povtrace::min(lo, b.lo());
-    hi = povtrace::max(hi, b.hi());
+    lo = std_min(lo, b.lo());
+    hi = std_max(hi, b.hi());
   }
   ExtentBox box = ExtentBox::huge();
   if (lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) {
@@ -258,7 +263,10 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
       }
       return ExtentBox::from_min_max(b.lo, b.hi);
     }
-    ExtentBox operator()(const Mesh& mesh) const { return mesh_box(*mesh.data).transformed(m); }
+    ExtentBox operator()(const Mesh& mesh) const {
+      const ExtentBox b = mesh_box(*mesh.data);
+      return is_identity(m) ? b : b.transformed(m);
+    }
     ExtentBox operator()(const Csg&) const { throw std::logic_error("a CSG box is made by csg_box"); }
     // Parse_Cone and Parse_Cylinder read the first end point as the apex, the second as the base.
     ExtentBox operator()(const Cylinder& c) const { return cone_box(c.end2, c.radius, c.end1, c.radius, m); }
@@ -280,7 +288,10 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
       if (p.box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
       return ExtentBox::huge();
     }
-    ExtentBox operator()(const Quadric&) const { throw ExtentUnavailable("the shape 'quadric'"); }
+    // Only when its carried box was lost to a clip object whose box is unavailable.
+    ExtentBox operator()(const Quadric&) const {
+      throw ExtentUnavailable("a quadric clipped by an object whose box needs the renderer");
+    }
     // Superellipsoid::Compute_BBox: the cube ±1.0001, carried by the transform.
     ExtentBox operator()(const Superellipsoid&) const {
       return ExtentBox::make({-1.0001, -1.0001, -1.0001}, {2.0002, 2.0002, 2.0002}).transformed(m);
@@ -288,9 +299,9 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     ExtentBox operator()(const HeightField& h) const { return self.height_field_box(o, h); }
     ExtentBox operator()(const Blob& b) const { return blob_box(b, m); }
     ExtentBox operator()(const Text& text) const { return text_box(text); }
-    ExtentBox operator()(const Lathe&) const { throw ExtentUnavailable("the shape 'lathe'"); }
-    ExtentBox operator()(const Prism&) const { throw ExtentUnavailable("the shape 'prism'"); }
-    ExtentBox operator()(const Sor&) const { throw ExtentUnavailable("the shape 'sor'"); }
+    ExtentBox operator()(const Lathe& sweep) const { return lathe_local_box(sweep).transformed(m); }
+    ExtentBox operator()(const Prism& sweep) const { return prism_local_box(sweep).transformed(m); }
+    ExtentBox operator()(const Sor& sweep) const { return sor_local_box(sweep).transformed(m); }
     // IsoSurface::Compute_BBox: the container's box (a sphere's cube), carried by the transform.
     ExtentBox operator()(const Isosurface& iso) const {
       const ExtentBox local =
@@ -341,7 +352,20 @@ ExtentBox ObjectExtents::csg_box(Object& o) const {
 
 // Quadric::Compute_BBox(ClipMin, ClipMax) with the quadric's current coefficients, within its clip objects and the
 // given range; the quadric keeps the new box when it is smaller.
-void ObjectExtents::recompute_quadric(Object&, Vec3, Vec3) const { throw ExtentUnavailable("the shape 'quadric'"); }
+void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) const {
+  MinMax range;
+  range.lo = clip_lo;
+  range.hi = clip_hi;
+  for (const Object& clip : o.clipped_by) {
+    if (inverted(clip)) continue;
+    if (const auto* plane = std::get_if<Plane>(&clip.shape)) narrow_by_plane(range, *plane, clip);
+    else range.narrow(box(clip));
+  }
+  // The coefficients POV-Ray holds now: the written ones carried by the composed transform (POV-Ray transforms
+  // them at each transform; the two agree to rounding).
+  const Quadric current = transformed_quadric(std::get<Quadric>(o.shape), o.world_from_object);
+  o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()));
+}
 
 ExtentBox ObjectExtents::box(const Object& o) const {
   if (o.carried_extent) return *o.carried_extent;
@@ -372,7 +396,7 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
 void ObjectExtents::made(Object& o) const {
   try {
     if (std::holds_alternative<Csg>(o.shape)) o.carried_extent = csg_box(o);
-    else if (std::holds_alternative<Quadric>(o.shape)) recompute_quadric(o, MinMax::everything().lo, MinMax::everything().hi);
+    else if (const auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q);
     else o.carried_extent = shape_box(o);
   } catch (const ExtentUnavailable&) {
     o.carried_extent.reset();

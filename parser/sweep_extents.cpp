@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "parser/quadratic_roots.hpp"
 
@@ -44,7 +45,8 @@ ProfileSegment spline_segment(SplineKind spline, const ProfilePoint* window, boo
 
 // The roots of slope[0]·t² + slope[1]·t + slope[2] as POV-Ray's Solve_Polynomial(2, …) finds the turning points of a
 // profile: leading coefficients below SMALL_ENOUGH are dropped first (a linear equation then has one root, a
-// constant none). The renderer's poly::solve_polynomial(2, …) gives the same roots, in the same order.
+// constant none), and two roots come larger first, as its solve_quadratic returns them. The order decides which
+// candidate a sor's NaN radius replaces (sor_radius_range).
 int turning_points(const double slope[3], double roots[2]) {
   int first = 0;
   while (first < 2 && std::fabs(slope[first]) < kSmallEnough) ++first;
@@ -53,7 +55,9 @@ int turning_points(const double slope[3], double roots[2]) {
     roots[0] = -slope[2] / slope[1];
     return 1;
   }
-  return quadratic_roots(slope, roots);
+  const int n = quadratic_roots(slope, roots);
+  if (n == 2 && roots[0] < roots[1]) std::swap(roots[0], roots[1]);
+  return n;
 }
 
 // The range of one coordinate over a lathe or prism segment (see sweep_extents.hpp); `axis` 0 is x, 1 is y.

@@ -167,5 +167,70 @@ TEST(Extents, OfHeightFieldsAndLateClipsAsPovRayComputesThem) {
                   "mp max 3.000000000,2.500000000,1.000000000\n");
 }
 
+// Quadrics: a written ellipsoid's box carried by its transforms; clipped_by recomputing the box within the clip
+// objects (planes as half spaces); shapes.inc's unbounded quadrics bounded inside intersections and differences,
+// where they are recomputed within the other children's common box; an inverted quadric left out.
+TEST(Extents, OfQuadricsAsPovRayComputesThem) {
+  EXPECT_EQ(extents(
+                  "#include \"shapes.inc\"\n"
+                  "#declare Q1 = quadric { <1,2,3>, <0,0,0>, <0,0,0>, -1 scale 2 rotate 30*y };\n"
+                  "E(\"q1\", Q1)\n"
+                  "#declare Q2 = quadric { <1,0,1>, <0,0,0>, <0,0,0>, -1 clipped_by { box { -2, 2 } } };\n"
+                  "E(\"q2\", Q2)\n"
+                  "#declare Q3 = intersection { object { Cylinder_Y } box { <-3,-1,-3>, <3,2,3> } };\n"
+                  "E(\"q3\", Q3)\n"
+                  "#declare Q4 = intersection { object { QCone_Y scale 2 } plane { y, 1 } plane { -y, 0 } };\n"
+                  "E(\"q4\", Q4)\n"
+                  "#declare Q5 = object { Q4 rotate 20*z };\n"
+                  "E(\"q5\", Q5)\n"
+                  "#declare Q6 = difference { box { -1, 1 } object { Cylinder_Z scale 0.5 } };\n"
+                  "E(\"q6\", Q6)\n"
+                  "#declare Q7 = intersection { object { Paraboloid_Y } sphere { 0, 3 } translate x };\n"
+                  "E(\"q7\", Q7)\n"
+                  "#declare Q8 = quadric { <1,1,0>, <0,0,0>, <0,0,0>, -1 translate <1,2,3> clipped_by { plane { z, 1 } plane { -z, 1 } } };\n"
+                  "E(\"q8\", Q8)\n"
+                  "#declare Q9 = intersection { quadric { <1,1,1>, <0,0,0>, <0,0,0>, -4 inverse } box { -3, 3 } };\n"
+                  "E(\"q9\", Q9)\n"),
+            "q1 min -2.309401035,-1.414213538,-2.000000000\n"
+            "q1 max 2.309401035,1.414213538,2.000000000\n"
+            "q2 min -1.000000000,-2.000000000,-1.000000000\n"
+            "q2 max 1.000000000,2.000000000,1.000000000\n"
+            "q3 min -1.000000000,-1.000000000,-1.000000000\n"
+            "q3 max 1.000000000,2.000000000,1.000000000\n"
+            "q4 min -1.000000000,-0.000000000,-1.000000000\n"
+            "q4 max 1.000000000,1.000000000,1.000000000\n"
+            "q5 min -1.281712770,-0.342020154,-1.000000000\n"
+            "q5 max 0.939692497,1.281712770,1.000000000\n"
+            "q6 min -1.000000000,-1.000000000,-1.000000000\n"
+            "q6 max 1.000000000,1.000000000,1.000000000\n"
+            "q7 min -0.732050776,0.000000000,-1.732050776\n"
+            "q7 max 2.732050896,3.000000000,1.732050776\n"
+            "q8 min 0.000000000,1.000000000,-1.000000000\n"
+            "q8 max 2.000000000,3.000000000,1.000000000\n"
+            "q9 min -3.000000000,-3.000000000,-3.000000000\n"
+            "q9 max 3.000000000,3.000000000,3.000000000\n");
+}
+
+// Lathe, sor and prism: their profile's extent (sweep_extents.hpp) carried by the transforms, alone and in a union.
+TEST(Extents, OfSweptShapesAsPovRayComputesThem) {
+  EXPECT_EQ(extents(
+                  "#declare L1 = lathe { cubic_spline 6, <0,0>,<1,0.2>,<1.5,1>,<0.5,1.7>,<1,2.5>,<0,3> rotate 30*x translate y };\n"
+                  "E(\"l1\", L1)\n"
+                  "#declare S1 = sor { 5, <0,0>, <1,0.2>, <0.5,1>, <1.2,2>, <0,3> scale <1,2,1> rotate 20*z };\n"
+                  "E(\"s1\", S1)\n"
+                  "#declare P1 = prism { conic_sweep linear_spline 0.5, 1, 4, <1,1>, <-1,1>, <-1,-1>, <1,-1> rotate 45*y };\n"
+                  "E(\"p1\", P1)\n"
+                  "#declare U = union { object { L1 } object { P1 } rotate 10*x };\n"
+                  "E(\"u\", U)\n"),
+            "l1 min -1.513051271,0.416679442,-1.210340858\n"
+            "l1 max 1.513051271,3.921589136,2.560340881\n"
+            "s1 min -2.503578424,-0.037410345,-1.208371520\n"
+            "s1 max 0.998689651,4.172058105,1.208371520\n"
+            "p1 min -1.414213538,0.500000000,-1.414213538\n"
+            "p1 max 1.414213538,1.000000000,1.414213538\n"
+            "u min -1.513051271,-0.034249362,-1.320372820\n"
+            "u max 1.513051271,4.107587337,3.202420473\n");
+}
+
 }  // namespace
 }  // namespace povtrace::test
