@@ -13,8 +13,11 @@
 // - When a finished object is placed in the scene (Link_To_Frame), with Remove_Bounds on (the default), the
 //   bounding objects of anything but a union, merge, intersection, poly (cubic, quartic) or quadric are dropped
 //   with the warning "Unnecessary bounding object removed."; a union that will be split into its children (no
-//   clip, no bound) gets the same treatment for each child. Objects inside CSG keep their bounds. (POV-Ray keeps
-//   a quadric's bounds unless it found automatic bounds for it, which povtrace does not model: they are kept.)
+//   clip, no bound) gets the same treatment for each child. Objects inside CSG keep their bounds. A text is a
+//   union in POV-Ray and keeps them; a quadric keeps them only when its box computation did not find a box itself
+//   (Quadric::Automatic_Bounds, see quadric_extent.hpp).
+// - A bounded union (text included) kept whole although all its children are finite gets the warning "CSG union
+//   unnecessarily bounded" (POV-Ray would only split it with Split_Unions on, which is off by default).
 // - A removed bound leaves behind the bounding box it gave the object (Parse_Object_Mods sets the object's box to
 //   the bounds' box when that is smaller, and Link_To_Frame does not recompute it), so it is kept as
 //   removed_bounds for the renderer.
@@ -80,10 +83,26 @@ void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
   if (clip && std::holds_alternative<Quadric>(object.shape)) extents().quadric_clipped(object);
 }
 
+// Link_To_Frame's test before it keeps a bounded union whole: every child's box has a volume of at most BOUND_HUGE.
+bool Interpreter::all_children_finite(const Csg& csg) const {
+  try {
+    for (const Object& child : csg.children)
+      if (extents().box(child).volume() > kBoundHuge) return false;
+  } catch (const ExtentUnavailable&) {
+    return false;
+  }
+  return true;
+}
+
 void Interpreter::remove_unnecessary_bounds(Object& object) {
   const auto* csg = std::get_if<Csg>(&object.shape);
   if (!csg) {
-    const bool kept = std::holds_alternative<Poly>(object.shape) || std::holds_alternative<Quadric>(object.shape);
+    // A text is a CSG union in POV-Ray; a quadric keeps its bounds unless its box computation found one itself.
+    const auto* quadric = std::get_if<Quadric>(&object.shape);
+    const bool kept = std::holds_alternative<Poly>(object.shape) || std::holds_alternative<Text>(object.shape) ||
+                      (quadric && !quadric->automatic_bounds);
+    if (!object.bounded_by.empty() && std::holds_alternative<Text>(object.shape))
+      warn(object.loc, "CSG union unnecessarily bounded");   // its glyphs are finite
     if (!object.bounded_by.empty() && !kept) {
       object.removed_bounds = std::move(object.bounded_by);
       object.bounded_by.clear();
@@ -95,6 +114,9 @@ void Interpreter::remove_unnecessary_bounds(Object& object) {
   // A union without clip or bound is split into its children, each placed as if on its own.
   if (csg->kind == CsgKind::union_ && object.clipped_by.empty() && object.bounded_by.empty())
     for (auto& child : std::get<Csg>(object.shape).children) remove_unnecessary_bounds(child);
+  if (csg->kind == CsgKind::union_ && object.clipped_by.empty() && !object.bounded_by.empty() &&
+      all_children_finite(*csg))
+    warn(object.loc, "CSG union unnecessarily bounded");
 }
 
 }  // namespace povtrace::sdl

@@ -338,7 +338,9 @@ struct Poly {
 };
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
-struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
+// `automatic_bounds`: POV-Ray's Automatic_Bounds, set once its box computation used the box it found (every quadric
+// without a mixed term, when parsed): a placed quadric then loses its bounded_by like most shapes.
+struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; bool automatic_bounds = false; };
 
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
 struct Superellipsoid { double e = 1, n = 1; };

@@ -489,6 +489,7 @@ class Interpreter {
   static void invert_object(Object& object);                  // De Morgan for CSG (§10)
   void parse_clip_or_bound(const Token& keyword, Object& object);
   std::vector<Object> parse_bound_clip_objects(const Token& keyword);
+  bool all_children_finite(const Csg& csg) const;
   void remove_unnecessary_bounds(Object& object);             // Link_To_Frame's Remove_Bounds, when placed
 
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----

@@ -363,8 +363,10 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
   }
   // The coefficients POV-Ray holds now: the written ones carried by the composed transform (POV-Ray transforms
   // them at each transform; the two agree to rounding).
-  const Quadric current = transformed_quadric(std::get<Quadric>(o.shape), o.world_from_object);
-  o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()));
+  Quadric& q = std::get<Quadric>(o.shape);
+  const Quadric current = transformed_quadric(q, o.world_from_object);
+  o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()),
+                                 &q.automatic_bounds);
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
@@ -396,7 +398,7 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
 void ObjectExtents::made(Object& o) const {
   try {
     if (std::holds_alternative<Csg>(o.shape)) o.carried_extent = csg_box(o);
-    else if (const auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q);
+    else if (auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q, &q->automatic_bounds);
     else o.carried_extent = shape_box(o);
   } catch (const ExtentUnavailable&) {
     o.carried_extent.reset();

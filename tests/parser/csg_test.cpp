@@ -125,6 +125,34 @@ TEST(BoundedBy, RemovedFromPlacedPrimitivesAndSplitUnionChildren) {
   EXPECT_EQ(warnings, 3);
 }
 
+// POV-Ray 3.7.0.10's warnings for the same scene: a text is a union and keeps its bounds ("CSG union unnecessarily
+// bounded"); quadrics without a mixed term lose theirs (their box was computed: Automatic_Bounds); one with a mixed
+// term keeps them, silently.
+TEST(BoundedBy, TextsKeepThemQuadricsWithAComputedBoxLoseThem) {
+  Messages m;
+  const SceneDescription s = scene(
+      "text { internal 1 \"Hi\" 0.2, 0 bounded_by { box { -1, 2 } } }\n"
+      "quadric { <1,1,1>, <0,0,0>, <0,0,0>, -1 bounded_by { box { -1, 2 } } }\n"
+      "quadric { <1,1,0>, <0,0,0>, <0,0,0>, -1 bounded_by { box { -1, 2 } } }\n"
+      "quadric { <1,1,0>, <1,0,0>, <0,0,0>, -1 bounded_by { box { -1, 2 } } }\n"
+      "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -1, 2 } } }\n"
+      "union { sphere { 0, 1 } plane { y, 0 } bounded_by { box { -1, 2 } } }\n",
+      &m);
+  ASSERT_EQ(s.objects.size(), 6u);
+  EXPECT_EQ(s.objects[0].bounded_by.size(), 1u);
+  EXPECT_TRUE(s.objects[1].bounded_by.empty());
+  EXPECT_TRUE(s.objects[2].bounded_by.empty());
+  EXPECT_EQ(s.objects[3].bounded_by.size(), 1u);
+  std::string warnings;   // line 1 is the #version the helper writes
+  for (const auto& item : m.items) warnings += item;
+  EXPECT_NE(warnings.find("2:1: warning: CSG union unnecessarily bounded"), std::string::npos);
+  EXPECT_NE(warnings.find("3:1: warning: unnecessary bounding object removed"), std::string::npos);
+  EXPECT_NE(warnings.find("4:1: warning: unnecessary bounding object removed"), std::string::npos);
+  EXPECT_EQ(warnings.find("5:1: warning"), std::string::npos);
+  EXPECT_NE(warnings.find("6:1: warning: CSG union unnecessarily bounded"), std::string::npos);
+  EXPECT_EQ(warnings.find("7:1: warning"), std::string::npos);   // a plane child is not finite
+}
+
 TEST(Csg, TexturesInheritThroughNestedCsgAndTheDefaultFillsTheRest) {
   const SceneDescription s = scene(
       "#default { pigment { rgb <0, 0, 1> } }\n"
