@@ -3,6 +3,8 @@
 // handled the same way here.
 #include "renderer/csg_build.hpp"
 
+#include "parser/object_extents.hpp"
+#include "renderer/object_geometry.hpp"
 #include "renderer/shapes/csg.hpp"
 
 namespace povtrace::render {
@@ -20,6 +22,21 @@ CsgOperation operation_of(CsgKind kind) {
 }
 
 Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf);
+
+// The box POV-Ray culls a clipped object's rays with: its bounding box as the parser makes it (parser/
+// object_extents.hpp) — for a quadric clipped by a height field, the quadric's own box within the clip's, where the
+// clip's box alone would let rays through that POV-Ray never tests. None for the huge box (nothing is culled);
+// nothing known when the box cannot be made.
+std::optional<std::optional<Bounds>> povray_culling_box(const Object& o) {
+  try {
+    const ExtentBox b = sdl::ObjectExtents(object_geometry().get()).box(o);
+    for (int i = 0; i < 3; ++i)
+      if (!(b.lengths[i] < kBoundHuge / 2)) return std::optional<Bounds>{};
+    return std::optional<Bounds>{Bounds{b.lo(), b.hi()}};
+  } catch (const sdl::ExtentUnavailable&) {
+    return std::nullopt;
+  }
+}
 
 // One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
 Primitive primitive_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
@@ -58,7 +75,10 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
   if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
   // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
   // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
-  if (!clips.empty()) p = with_clipping_box_from(p, clips);
+  if (!clips.empty()) {
+    const auto box = povray_culling_box(o);
+    p = box ? with_culling_box(p, *box) : with_clipping_box_from(p, clips);
+  }
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
   return p;

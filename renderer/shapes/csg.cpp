@@ -270,6 +270,14 @@ Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primit
   return p;
 }
 
+Primitive with_culling_box(const Primitive& node, const std::optional<Bounds>& box) {
+  auto copy = std::make_shared<CsgData>(csg_data(node));
+  copy->bounding_box = box ? *box : Bounds{};
+  Primitive p = node;
+  p.data = std::move(copy);
+  return p;
+}
+
 Primitive inverted(const Primitive& p) {
   if (p.type != ShapeType::csg) {
     Primitive q = p;

@@ -3,6 +3,7 @@
 // dispatches to renderer/shapes/csg.cpp. The render-scene builder and the tests construct nodes with these.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "renderer/geometry.hpp"
@@ -45,6 +46,10 @@ Primitive with_bounding_box_from(const Primitive& node, const std::vector<Primit
 // box before the clips (its children's, or the one bounded_by gave it). Rays that miss that box see nothing of the
 // node; the surface bounds stay as they are, since a clip's inside can reach beyond its box.
 Primitive with_clipping_box_from(const Primitive& node, const std::vector<Primitive>& clips);
+
+// `node` tested only for rays that meet `box` (POV-Ray's bounding box of the clipped object, which can be tighter
+// than its clips' box); with no box (POV-Ray's huge one), for every ray. Surface bounds stay as they are.
+Primitive with_culling_box(const Primitive& node, const std::optional<Bounds>& box);
 
 // `p` with inside and outside swapped. A leaf toggles its `inverse` flag; a CSG node follows De Morgan as POV-Ray
 // does (children inverted; union and merge become intersection, intersection becomes merge; clips and bounds stay).
