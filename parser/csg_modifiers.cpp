@@ -85,6 +85,7 @@ void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
 
 // Link_To_Frame's test before it keeps a bounded union whole: every child's box has a volume of at most BOUND_HUGE.
 bool Interpreter::all_children_finite(const Csg& csg) const {
+  if (!csg.lights.empty()) return false;   // a light source is a child with the huge box
   try {
     for (const Object& child : csg.children)
       if (extents().box(child).volume() > kBoundHuge) return false;
@@ -101,8 +102,10 @@ void Interpreter::remove_unnecessary_bounds(Object& object) {
     const auto* quadric = std::get_if<Quadric>(&object.shape);
     const bool kept = std::holds_alternative<Poly>(object.shape) || std::holds_alternative<Text>(object.shape) ||
                       (quadric && !quadric->automatic_bounds);
-    if (!object.bounded_by.empty() && std::holds_alternative<Text>(object.shape))
-      warn(object.loc, "CSG union unnecessarily bounded");   // its glyphs are finite
+    // Its glyphs are finite; a clipped text is placed before that test, an inverted one is an intersection.
+    if (!object.bounded_by.empty() && std::holds_alternative<Text>(object.shape) && object.clipped_by.empty() &&
+        !object.inverse)
+      warn(object.loc, "CSG union unnecessarily bounded");
     if (!object.bounded_by.empty() && !kept) {
       object.removed_bounds = std::move(object.bounded_by);
       object.bounded_by.clear();

@@ -293,10 +293,33 @@ struct Interior {
 // `ellipsoid` is POV-Ray's Do_Ellipsoid (shape/spheres.cpp Sphere::Scale, Sphere::Transform): set once a
 // non-uniform scale, a matrix or a transform block reaches the sphere. Until then POV-Ray moves the centre and
 // scales the radius itself, so its tolerances apply in world units (what --povray-tolerances reproduces).
-struct Sphere { Vec3 centre; double radius = 1; bool ellipsoid = false; };
-// Normal as written (unit-normalised by the parser). `moved_by_matrix`: a matrix or transform block reached the plane,
-// which POV-Ray then keeps as a transform instead of moving its normal and distance (Plane::Transform).
-struct Plane { Vec3 normal{0, 1, 0}; double distance = 0; bool moved_by_matrix = false; };
+// `ellipsoid_frame`: the centre and radius POV-Ray held when the sphere became an ellipsoid and the transforms
+// since, from which its bounding box is made (Sphere::Compute_BBox); shared by copies.
+struct SphereEllipsoidFrame {
+  Vec3 centre;
+  double radius = 1;
+  Matrix since;
+};
+struct Sphere {
+  Vec3 centre;
+  double radius = 1;
+  bool ellipsoid = false;
+  std::shared_ptr<const SphereEllipsoidFrame> ellipsoid_frame;
+};
+// Normal as written (unit-normalised by the parser). `matrix_frame`: set once a matrix or transform block reaches the
+// plane, which POV-Ray then keeps as a transform instead of moving its normal and distance (Plane::Transform): the
+// world unit normal and distance the plane had then, and the transforms since (for its bounds in an intersection).
+// Shared by copies.
+struct PlaneMatrixFrame {
+  Vec3 normal;
+  double distance = 0;
+  Matrix since;
+};
+struct Plane {
+  Vec3 normal{0, 1, 0};
+  double distance = 0;
+  std::shared_ptr<const PlaneMatrixFrame> matrix_frame;
+};
 // Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
 // and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a
 // transform (`rotated`); the object's matrix holds only the transforms from then on. uv_mapping sees the difference.
@@ -358,9 +381,6 @@ struct HeightField {
   int samples_width = 0, samples_depth = 0;
   bool smooth = false;
   double water_level = 0;
-  // POV-Ray computes a height field's box after its own modifiers (Parse_HField), so clip and bounding objects
-  // written inside it do not narrow the box until a later object { } block's modifiers end.
-  bool box_ignores_clips = false;
 };
 
 // One blob component as POV-Ray's parser leaves it: a sphere keeps its centre and squared radius through
@@ -442,6 +462,13 @@ struct Object {
   // Unset for the other shapes, whose box follows from the shape and world_from_object (object_queries.cpp), and
   // for a CSG whose box needs data only the renderer reads (a height field's image) when the parser has none.
   std::optional<ExtentBox> carried_extent;
+  // Why carried_extent could not be made (then unset for good: later boxes hang on it).
+  ExtentGap extent_gap = ExtentGap::none;
+  // A transform reached the object since its modifiers last ended: POV-Ray then holds the box its shape gives,
+  // without the narrowing by clip and bounding objects that the end of Parse_Object_Mods applies (a parent's or a
+  // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
+  // is remade from the shape read it.
+  bool box_skips_clips = false;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------

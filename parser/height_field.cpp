@@ -121,6 +121,7 @@ void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h,
 
 Object Interpreter::parse_height_field(const Token& keyword) {
   expect("{", " after 'height_field'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   HeightField h;
@@ -144,7 +145,7 @@ Object Interpreter::parse_height_field(const Token& keyword) {
   }
   o.shape = h;
   parse_object_modifiers(o);
-  std::get<HeightField>(o.shape).box_ignores_clips = true;   // Parse_HField computes the box after the modifiers
+  o.box_skips_clips = true;   // Parse_HField computes the box after its own modifiers
   return o;
 }
 

@@ -24,6 +24,7 @@ std::pair<double, double> Interpreter::parse_uv_vector(std::string_view context)
 
 Object Interpreter::parse_superellipsoid(const Token& keyword) {
   expect("{", " after 'superellipsoid'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Superellipsoid s;
@@ -103,6 +104,7 @@ BlobComponent Interpreter::parse_blob_cylinder(const Token& keyword) {
 
 Object Interpreter::parse_blob(const Token& keyword) {
   expect("{", " after 'blob'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Blob b;

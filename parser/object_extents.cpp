@@ -25,8 +25,6 @@
 namespace povtrace::sdl {
 
 namespace {
-constexpr double kInsideEpsilon = 1e-10;
-
 bool is_identity(const Matrix& m) { return m == Matrix::identity(); }
 
 // Per component as std::min and std::max, which POV-Ray's box code calls: the first argument wins a tie, which
@@ -150,14 +148,14 @@ ExtentBox mesh_box(const MeshData& data) {
 
 // A plane as a CSG intersection or a quadric's clip sees it (Quadric::Compute_Plane_Min_Max): a half space when it
 // is perpendicular to an axis. POV-Ray's Plane::Invert turns the plane over instead of flagging it, so an inverted
-// plane counts, turned. A plane moved by matrix or transform keeps a transform in POV-Ray, whose state at that
-// transform the description does not hold: refused by name.
+// plane counts, turned. A plane moved by matrix or transform has POV-Ray's other formula (quadric_extent.hpp).
 void narrow_by_plane(MinMax& m, const Plane& plane, const Object& o) {
-  if (plane.moved_by_matrix)
-    throw ExtentUnavailable("an intersection with a plane moved by 'matrix' or 'transform'");
   const double side = o.inverse ? -1.0 : 1.0;
   Vec3 lo, hi;
-  plane_min_max(side * plane.normal, side * plane.distance, o.world_from_object, lo, hi);
+  if (const auto& frame = plane.matrix_frame)
+    plane_min_max_with_trans(side * frame->normal, side * frame->distance, frame->since, lo, hi);
+  else
+    plane_min_max(side * plane.normal, side * plane.distance, o.world_from_object, lo, hi);
   m.narrow(lo, hi);
 }
 
@@ -226,20 +224,22 @@ ExtentBox text_box(const Text& text) {
 }  // namespace
 
 // The box of a shape whose box is remade from the shape and its composed transform (its Compute_BBox), before the
-// narrowing by bounding and clip objects. The carried shapes come here only while being made.
+// narrowing by bounding and clip objects. The carried shapes come here when they are made (or, built in code
+// without a carried box, each time).
 ExtentBox ObjectExtents::shape_box(const Object& o) const {
   struct Box_ {
     const ObjectExtents& self;
     const Object& o;
     const Matrix& m = o.world_from_object;
+    // Sphere::Compute_BBox: the cube around the centre and radius POV-Ray moves itself while the sphere stays a
+    // sphere (translations, rotations, uniform scales); an ellipsoid's cube as it was when it became one, carried
+    // by the transforms since.
     ExtentBox operator()(const Sphere& s) const {
-      if (const double k = similarity_scale(m); k > 0) {
-        const Vec3 c = m.point(s.centre);
-        const double r = s.radius * k;
-        return ExtentBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r});
-      }
-      const double r = s.radius;
-      return ExtentBox::make(s.centre - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r}).transformed(m);
+      auto cube = [](Vec3 c, double r) { return ExtentBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r}); };
+      if (s.ellipsoid && s.ellipsoid_frame)
+        return cube(s.ellipsoid_frame->centre, s.ellipsoid_frame->radius).transformed(s.ellipsoid_frame->since);
+      if (const double k = similarity_scale(m); k > 0 && !s.ellipsoid) return cube(m.point(s.centre), s.radius * k);
+      return cube(s.centre, s.radius).transformed(m);   // an ellipsoid built in code, all in one transform
     }
     ExtentBox operator()(const Box& b) const {
       const ExtentBox local = ExtentBox::make(b.corner1, b.corner2 - b.corner1);
@@ -250,7 +250,7 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     ExtentBox operator()(const Triangle& t) const {
       MinMax b;
       for (const Vec3& c : t.corners) b.enclose(ExtentBox::make(m.point(c), {0, 0, 0}));
-      const Vec3 e{kInsideEpsilon, kInsideEpsilon, kInsideEpsilon};
+      const Vec3 e{kEpsilon, kEpsilon, kEpsilon};
       return ExtentBox::from_min_max(b.lo - e, b.hi + e);
     }
     // Polygon::Compute_BBox: the box of its points carried to world space.
@@ -288,10 +288,7 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
       if (p.box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
       return ExtentBox::huge();
     }
-    // Only when its carried box was lost to a clip object whose box is unavailable.
-    ExtentBox operator()(const Quadric&) const {
-      throw ExtentUnavailable("a quadric clipped by an object whose box needs the renderer");
-    }
+    ExtentBox operator()(const Quadric&) const { throw std::logic_error("a quadric's box is carried"); }
     // Superellipsoid::Compute_BBox: the cube ±1.0001, carried by the transform.
     ExtentBox operator()(const Superellipsoid&) const {
       return ExtentBox::make({-1.0001, -1.0001, -1.0001}, {2.0002, 2.0002, 2.0002}).transformed(m);
@@ -318,7 +315,7 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
 // HField::Compute_BBox: x and z over the sample grid, y from the samples' range, all scaled into the unit cube
 // (Parse_HField's scaling by 1/(width − 1), 1/65536, 1/(depth − 1)), then the object's transforms.
 ExtentBox ObjectExtents::height_field_box(const Object& o, const HeightField& h) const {
-  if (!geometry_) throw ExtentUnavailable("a height_field (its samples are read by the renderer)");
+  if (!geometry_) throw ExtentUnavailable(ExtentGap::height_field_samples);
   const HeightFieldExtent e = geometry_->height_field_extent(h);
   const Vec3 lower{0, e.bottom, 0}, upper{e.width - 1.0, e.top, e.depth - 1.0};
   const Matrix unit = Matrix::scaling({1.0 / (e.width - 1.0), 1.0 / 65536.0, 1.0 / (e.depth - 1.0)});
@@ -363,21 +360,29 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
   }
   // The coefficients POV-Ray holds now: the written ones carried by the composed transform (POV-Ray transforms
   // them at each transform; the two agree to rounding).
+  // Quadric::Invert negates every coefficient, which the box computation sees when x² has none to make positive.
   Quadric& q = std::get<Quadric>(o.shape);
-  const Quadric current = transformed_quadric(q, o.world_from_object);
+  Quadric current = transformed_quadric(q, o.world_from_object);
+  if (o.inverse) {
+    current.square = -1.0 * current.square;
+    current.mixed = -1.0 * current.mixed;
+    current.linear = -1.0 * current.linear;
+    current.constant = -current.constant;
+  }
   o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()),
                                  &q.automatic_bounds);
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
   if (o.carried_extent) return *o.carried_extent;
-  if (std::holds_alternative<Csg>(o.shape)) {   // never made (it needed what the parser lacks): say what
+  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  if (std::holds_alternative<Csg>(o.shape)) {   // a CSG built in code, never made by the parser
     Object copy = o;
     return csg_box(copy);
   }
+  if (const auto* q = std::get_if<Quadric>(&o.shape)) return parsed_quadric_box(*q).transformed(o.world_from_object);
   const ExtentBox b = shape_box(o);
-  if (const auto* h = std::get_if<HeightField>(&o.shape); h && h->box_ignores_clips) return b;
-  return narrowed(o, b);
+  return o.box_skips_clips ? b : narrowed(o, b);
 }
 
 // The end of Parse_Object_Mods: the common box of the bounding objects, then of the clip objects, each left out
@@ -387,8 +392,11 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
   for (const std::vector<Object>* list : {&bounds, &o.clipped_by}) {
     if (list->empty()) continue;
     MinMax m = MinMax::everything();
-    for (const Object& sib : *list)
-      if (!inverted(sib)) m.narrow(box(sib));
+    for (const Object& sib : *list) {
+      if (inverted(sib)) continue;
+      const ExtentBox s = box(sib);
+      m.narrow(s.lo(), s.max_extent());   // Parse_Object_Mods adds the float corner and lengths in float
+    }
     const ExtentBox common = ExtentBox::from_min_max(m.lo, m.hi);
     if (common.volume() < b.volume()) b = common;
   }
@@ -400,26 +408,29 @@ void ObjectExtents::made(Object& o) const {
     if (std::holds_alternative<Csg>(o.shape)) o.carried_extent = csg_box(o);
     else if (auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q, &q->automatic_bounds);
     else o.carried_extent = shape_box(o);
-  } catch (const ExtentUnavailable&) {
+  } catch (const ExtentUnavailable& e) {
     o.carried_extent.reset();
+    o.extent_gap = e.gap;
   }
 }
 
 void ObjectExtents::quadric_clipped(Object& o) const {
   try {
     recompute_quadric(o, MinMax::everything().lo, MinMax::everything().hi);
-  } catch (const ExtentUnavailable&) {
+  } catch (const ExtentUnavailable& e) {
     o.carried_extent.reset();
+    o.extent_gap = e.gap;
   }
 }
 
 void ObjectExtents::modifiers_ended(Object& o) const {
-  if (auto* h = std::get_if<HeightField>(&o.shape)) h->box_ignores_clips = false;
+  o.box_skips_clips = false;
   if (!o.carried_extent || (o.clipped_by.empty() && o.bounded_by.empty())) return;
   try {
     o.carried_extent = narrowed(o, *o.carried_extent);
-  } catch (const ExtentUnavailable&) {
+  } catch (const ExtentUnavailable& e) {
     o.carried_extent.reset();
+    o.extent_gap = e.gap;
   }
 }
 

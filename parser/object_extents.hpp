@@ -11,7 +11,8 @@ namespace povtrace::sdl {
 
 // A box the parser cannot make without the renderer's geometry (a height field's image); the message names it.
 struct ExtentUnavailable : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit ExtentUnavailable(ExtentGap g) : std::runtime_error(extent_gap_name(g)), gap(g) {}
+  ExtentGap gap;
 };
 
 class ObjectExtents {
@@ -21,8 +22,8 @@ class ObjectExtents {
   // The object's box as POV-Ray holds it now. Throws ExtentUnavailable.
   ExtentBox box(const Object& o) const;
 
-  // Compute_BBox when the object is made (before its modifiers; a blob's and a height field's after them), for the
-  // shapes whose box each later transform carries (Object::carried_extent). Leaves it unset when unavailable.
+  // Compute_BBox when the object is made (before its modifiers; a blob's after them), for the shapes whose box each
+  // later transform carries (Object::carried_extent). When the box cannot be made, records why (extent_gap).
   void made(Object& o) const;
 
   // The end of an object's modifiers (Parse_Object_Mods): its bounding, then its clip objects narrow a carried

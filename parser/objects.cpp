@@ -171,6 +171,7 @@ void Interpreter::parse_object_modifiers(Object& object) {
 
 Object Interpreter::parse_sphere(const Token& keyword) {
   skip_expected('{', " after 'sphere'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Sphere s;
@@ -184,6 +185,7 @@ Object Interpreter::parse_sphere(const Token& keyword) {
 
 Object Interpreter::parse_plane(const Token& keyword) {
   skip_expected('{', " after 'plane'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Plane p;
@@ -201,6 +203,7 @@ Object Interpreter::parse_plane(const Token& keyword) {
 
 Object Interpreter::parse_box(const Token& keyword) {
   skip_expected('{', " after 'box'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   const Vec3 a = parse_vector();
@@ -227,6 +230,7 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
   const NestingGuard guard(*this, keyword);
   if (const Token open = next(); !open.is("{"))   // not expect(): its message would be built every time
     fail_expected(open, "'{' after '" + std::string(keyword.text) + "'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Csg csg;

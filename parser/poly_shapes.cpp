@@ -18,6 +18,7 @@ int term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; 
 
 Object Interpreter::parse_poly(const Token& keyword, int order) {
   expect("{", " after '" + std::string(keyword.text) + "'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   if (order == 0) {
@@ -54,6 +55,7 @@ Object Interpreter::parse_poly(const Token& keyword, int order) {
 // constant; commas optional.
 Object Interpreter::parse_quadric(const Token& keyword) {
   expect("{", " after 'quadric'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Quadric q;

@@ -46,6 +46,7 @@ void Interpreter::check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2) {
 
 Object Interpreter::parse_cylinder(const Token& keyword) {
   expect("{", " after 'cylinder'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Cylinder c;
@@ -63,6 +64,7 @@ Object Interpreter::parse_cylinder(const Token& keyword) {
 
 Object Interpreter::parse_cone(const Token& keyword) {
   expect("{", " after 'cone'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Cone c;
@@ -82,6 +84,7 @@ Object Interpreter::parse_cone(const Token& keyword) {
 
 Object Interpreter::parse_disc(const Token& keyword) {
   expect("{", " after 'disc'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Disc d;
@@ -110,6 +113,7 @@ Object Interpreter::parse_disc(const Token& keyword) {
 
 Object Interpreter::parse_torus(const Token& keyword) {
   expect("{", " after 'torus'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   Torus t;

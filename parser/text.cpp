@@ -101,6 +101,7 @@ ttf::Font& Interpreter::internal_font(const Token& at, int id) {
 
 Object Interpreter::parse_text(const Token& keyword) {
   expect("{", " after 'text'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
   o.loc = keyword.loc;
   const Token kind = next();

@@ -21,26 +21,33 @@ CsgOperation operation_of(CsgKind kind) {
   return CsgOperation::union_;
 }
 
-Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf);
+// `placed`: the object is placed in the scene itself, not inside a CSG.
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed);
 
-// The box POV-Ray culls a clipped object's rays with: its bounding box as the parser makes it (parser/
-// object_extents.hpp) — for a quadric clipped by a height field, the quadric's own box within the clip's, where the
-// clip's box alone would let rays through that POV-Ray never tests. None for the huge box (nothing is culled);
-// nothing known when the box cannot be made.
-std::optional<std::optional<Bounds>> povray_culling_box(const Object& o) {
+// The box POV-Ray culls the rays of an object placed in the scene with (its bounding slabs test each object's box):
+// the box as the parser makes it (parser/object_extents.hpp). It shows where the object's surface reaches beyond its
+// box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where the clip's box alone
+// would let rays through that POV-Ray never tests; a merge or an intersection holding such a child keeps its own
+// box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests only their bounded_by).
+struct CullingBox {
+  bool known = false;       // false: the parser cannot make the box (the clips' box is used instead)
+  std::optional<Bounds> box;   // empty: POV-Ray's huge box, nothing is culled
+};
+
+CullingBox povray_culling_box(const Object& o) {
   try {
     const ExtentBox b = sdl::ObjectExtents(object_geometry().get()).box(o);
     for (int i = 0; i < 3; ++i)
-      if (!(b.lengths[i] < kBoundHuge / 2)) return std::optional<Bounds>{};
-    return std::optional<Bounds>{Bounds{b.lo(), b.hi()}};
+      if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
+    return {true, Bounds{b.lo(), b.hi()}};
   } catch (const sdl::ExtentUnavailable&) {
-    return std::nullopt;
+    return {};
   }
 }
 
 // One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
 Primitive primitive_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
-  if (needs_csg_node(o)) return node_for(o, shaded, add_leaf);
+  if (needs_csg_node(o)) return node_for(o, shaded, add_leaf, false);
   std::vector<Primitive> leaves;
   add_leaf(o, shaded, leaves);
   for (Primitive& leaf : leaves) leaf.csg_child = true;
@@ -55,7 +62,7 @@ std::vector<Primitive> primitives_for(const std::vector<Object>& objects, bool s
   return out;
 }
 
-Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed) {
   CsgOperation operation = CsgOperation::union_;
   std::vector<Primitive> children;
   if (const auto* csg = std::get_if<Csg>(&o.shape)) {
@@ -75,9 +82,10 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
   if (!bounds.empty()) p = with_bounding_box_from(p, bounds);
   // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
   // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
-  if (!clips.empty()) {
-    const auto box = povray_culling_box(o);
-    p = box ? with_culling_box(p, *box) : with_clipping_box_from(p, clips);
+  if (placed) {
+    const CullingBox culling = povray_culling_box(o);
+    if (culling.known) p = with_culling_box(p, culling.box);
+    else if (!clips.empty()) p = with_clipping_box_from(p, clips);
   }
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
@@ -110,7 +118,7 @@ bool needs_csg_node(const Object& o) {
 }
 
 Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf) {
-  Primitive p = node_for(o, true, add_leaf);
+  Primitive p = node_for(o, true, add_leaf, true);
   if (const auto* csg = std::get_if<Csg>(&o.shape); csg && csg->kind == CsgKind::union_ && all_children_without_shadow(*csg))
     p.casts_shadow = false;
   return p;

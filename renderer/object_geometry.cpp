@@ -1,5 +1,9 @@
 #include "renderer/object_geometry.hpp"
 
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "renderer/csg_build.hpp"
@@ -62,15 +66,37 @@ class RendererGeometry final : public ObjectGeometry {
     return std::make_unique<PreparedPrimitives>(std::move(primitives));
   }
 
-  // The samples as the render reads them: the height field's primitive, built alone.
+  // The samples as the render reads them: the height field's data, built alone without smoothing (normals do not
+  // change the box). An image file's extent is kept per file, modification time and water level, since every CSG
+  // holding the height field asks for it when it is made.
   HeightFieldExtent height_field_extent(const HeightField& h) const override {
+    const bool from_file = !h.samples && !h.pigment_function;
+    std::string key;
+    if (from_file) {
+      std::error_code error;   // an unreadable file gets no time here and fails below, when it is read
+      const auto written = std::filesystem::last_write_time(h.file, error);
+      key = h.file + '\n' + std::to_string(written.time_since_epoch().count()) + '\n' + std::to_string(h.water_level);
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (const auto found = file_extents_.find(key); found != file_extents_.end()) return found->second;
+    }
     Object o;
-    o.shape = h;
+    HeightField unsmoothed = h;
+    unsmoothed.smooth = false;
+    o.shape = std::move(unsmoothed);
     std::vector<Primitive> primitives;
     add_shape_primitives(o, 0, 0, primitives);
     const auto& d = static_cast<const HeightFieldData&>(*primitives.at(0).data);
-    return {d.width, d.depth, d.bottom, d.top};
+    const HeightFieldExtent extent{d.width, d.depth, d.bottom, d.top};
+    if (from_file) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      file_extents_.emplace(key, extent);
+    }
+    return extent;
   }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::unordered_map<std::string, HeightFieldExtent> file_extents_;
 };
 
 }  // namespace

@@ -8,7 +8,8 @@
 
 namespace povtrace::render {
 
-// The implementation to hand the parser in ParseOptions::object_geometry. Stateless and shareable.
+// The implementation to hand the parser in ParseOptions::object_geometry. Shareable between threads; it remembers
+// the extents of the height-field images it has read (per file, modification time and water level).
 std::shared_ptr<const ObjectGeometry> object_geometry();
 
 }  // namespace povtrace::render

@@ -153,6 +153,20 @@ TEST(BoundedBy, TextsKeepThemQuadricsWithAComputedBoxLoseThem) {
   EXPECT_EQ(warnings.find("7:1: warning"), std::string::npos);   // a plane child is not finite
 }
 
+// POV-Ray's Parse_Object_Id: every shape block, CSG included, takes a declared object as its whole body and makes
+// a copy of it with the modifiers that follow (of whatever shape it is); another object after it is an error
+// (povray: "No matching } in 'intersection', sphere found instead").
+TEST(Csg, ADeclaredObjectAsTheWholeBodyIsACopyOfIt) {
+  const SceneDescription s = scene("#declare A = sphere { 0, 1 }\nunion { A translate x }\nbox { A scale 2 }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<Sphere>(s.objects[0].shape));
+  EXPECT_EQ(s.objects[0].world_from_object.point({0, 0, 0}).x, 1.0);
+  EXPECT_TRUE(std::holds_alternative<Sphere>(s.objects[1].shape));
+  const std::string error =
+      parse_error("#version 3.7;\n#declare A = sphere { 0, 1 }\nintersection { A sphere { x, 1 } }\n").what();
+  EXPECT_NE(error.find("3:18"), std::string::npos) << error;
+}
+
 TEST(Csg, TexturesInheritThroughNestedCsgAndTheDefaultFillsTheRest) {
   const SceneDescription s = scene(
       "#default { pigment { rgb <0, 0, 1> } }\n"

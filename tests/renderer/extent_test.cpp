@@ -232,5 +232,58 @@ TEST(Extents, OfSweptShapesAsPovRayComputesThem) {
             "u max 1.513051271,4.107587337,3.202420473\n");
 }
 
+// Planes moved by matrix or transform (POV-Ray's other half-space formula), in intersections, a difference and a
+// quadric's clips; spheres turned into ellipsoids by a transform block or a non-uniform scale (their cube as it
+// was then, carried by the transforms since); an inverted quadric (its coefficients negated); clip boxes whose
+// upper corners POV-Ray sums in float before a union carries them.
+TEST(Extents, OfMatrixPlanesEllipsoidsAndInvertedQuadricsAsPovRayComputesThem) {
+  EXPECT_EQ(extents(
+                  "#declare PM1 = intersection { sphere { 0, 5 } plane { y, 1 transform { scale 2 } } };\n"
+                  "E(\"pm1\", PM1)\n"
+                  "#declare PM2 = intersection { sphere { 0, 5 } plane { z, 0.5 translate 0.2*z transform { rotate 90*x } translate y } };\n"
+                  "E(\"pm2\", PM2)\n"
+                  "#declare PM3 = difference { sphere { 0, 5 } plane { -x, 1 matrix <1,0,0, 0,1,0, 0,0,1, 0.5,0,0> } };\n"
+                  "E(\"pm3\", PM3)\n"
+                  "#declare PM4 = quadric { <1,0,1>, <0,0,0>, <0,0,0>, -1 clipped_by { plane { y, 2 matrix <1,0,0, 0,1,0, 0,0,1, 0,1,0> } plane { -y, 1 } } };\n"
+                  "E(\"pm4\", PM4)\n"
+                  "#declare SP1 = sphere { 0, 1 transform { rotate 45*y } };\n"
+                  "E(\"sp1\", SP1)\n"
+                  "#declare SP2 = sphere { 0, 1 scale <1,2,1> scale <1,0.5,1> rotate 45*y };\n"
+                  "E(\"sp2\", SP2)\n"
+                  "#declare SP3 = sphere { <1,0,0>, 1 rotate 45*y scale <1,2,1> translate x };\n"
+                  "E(\"sp3\", SP3)\n"
+                  "#declare QI = quadric { <0,1,1>, <0,0,0>, <0,0,0>, -1 inverse clipped_by { box { -2, 2 } } };\n"
+                  "E(\"qi\", QI)\n"
+                  "#declare CU = union { sphere { 0, 1 clipped_by { box { <-2,-2,-0.5>, <2,2,0.5> } } } sphere { 3*x, 1 } translate y };\n"
+                  "E(\"cu\", CU)\n"
+                  "#declare CL = sphere { 0, 2 clipped_by { box { -1, 1 } translate <0.3, 0.2, 0.1> } };\n"
+                  "E(\"cl\", CL)\n"
+                  "#declare FS = sphere { 0, 100 clipped_by { box { <-2.1938,2.0846,1.5826>, <-0.911,4.5668,3.8356> } } };\n"
+                  "#declare FU = union { object { FS } object { FS } scale 1234.567 };\n"
+                  "E(\"fu\", FU)\n"),
+            "pm1 min -5.000000000,-5.000000000,-5.000000000\n"
+            "pm1 max 5.000000000,0.000000000,5.000000000\n"
+            "pm2 min -5.000000000,-5.000000000,-5.000000000\n"
+            "pm2 max 5.000000000,1.699999809,5.000000000\n"
+            "pm3 min -5.000000000,-5.000000000,-5.000000000\n"
+            "pm3 max -0.500000000,5.000000000,5.000000000\n"
+            "pm4 min -1.000000000,-1.000000000,-1.000000000\n"
+            "pm4 max 1.000000000,3.000000000,1.000000000\n"
+            "sp1 min -1.414213538,-1.000000000,-1.414213538\n"
+            "sp1 max 1.414213538,1.000000000,1.414213538\n"
+            "sp2 min -1.414213538,-1.000000000,-1.414213538\n"
+            "sp2 max 1.414213538,1.000000000,1.414213538\n"
+            "sp3 min 0.707106769,-2.000000000,-1.707106829\n"
+            "sp3 max 2.707106829,2.000000000,0.292893171\n"
+            "qi min -2.000000000,-2.000000000,-2.000000000\n"
+            "qi max 2.000000000,2.000000000,2.000000000\n"
+            "cu min -1.000000000,0.000000000,-1.000000000\n"
+            "cu max 4.000000000,2.000000000,1.000000000\n"
+            "cl min -0.699999988,-0.800000012,-0.899999976\n"
+            "cl max 1.299999952,1.200000048,1.100000024\n"
+            "fu min -2708.393066406,2573.578369141,1953.825683594\n"
+            "fu max -1124.690551758,5638.020507812,4735.304687500\n");
+}
+
 }  // namespace
 }  // namespace povtrace::test

@@ -60,7 +60,10 @@ inline std::shared_ptr<const Texture> texture(const Colour& pigment, const Finis
 
 inline Object plane_object(Vec3 normal, double distance, std::shared_ptr<const Texture> tex) {
   Object o;
-  o.shape = Plane{normalize(normal), distance};
+  Plane p;
+  p.normal = normalize(normal);
+  p.distance = distance;
+  o.shape = p;
   o.texture = std::move(tex);
   return o;
 }
@@ -74,7 +77,10 @@ inline Object box_object(Vec3 lo, Vec3 hi, std::shared_ptr<const Texture> tex) {
 
 inline Object sphere_object(Vec3 centre, double radius, std::shared_ptr<const Texture> tex) {
   Object o;
-  o.shape = Sphere{centre, radius};
+  Sphere s;
+  s.centre = centre;
+  s.radius = radius;
+  o.shape = s;
   o.texture = std::move(tex);
   return o;
 }
