@@ -9,7 +9,7 @@
 
 #include "app/options.hpp"
 #include "app/render_job.hpp"
-#include "parser/source.hpp"
+#include "scene/source.hpp"
 #include "renderer/image/image.hpp"
 
 namespace {

@@ -1,26 +1,26 @@
 // The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
 // owns the token stream (a stack of source frames), the symbol tables, the control-flow stack of directives,
 // and the statement parsers that fill the SceneDescription. Its member functions are implemented by area:
-//   token_stream.cpp  frames, raw tokens, directive dispatch, macro calls
-//   directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
-//   expressions.cpp   float/vector/colour/string expressions and built-in functions
-//   textures.cpp      pigment, finish, texture, interior
-//   normals.cpp       normal { } perturbations
-//   objects.cpp       shapes, CSG, object modifiers and transforms
-//   camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
-//   scene.cpp         top-level statements, global_settings, background, post-processing, entry points
-//   arrays.cpp        array declarations, subscripts, element assignment, dimensions()
-//   file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
-//   object_queries.cpp inside(), min_extent(), max_extent() on declared objects
-//   quadric_shapes.cpp cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
-//   implicit_shapes.cpp superellipsoid, blob
-//   height_field.cpp  height_field
-//   text.cpp          text (fonts read by truetype*.cpp, laid out by text_layout.cpp)
-//   image_map.cpp     image_map, bump_map
-//   texture_patterns.cpp patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
-//   csg_modifiers.cpp inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
-//   sweep_shapes.cpp  lathe, prism, sor
-//   isosurface.cpp    isosurface
+//   lexing/token_stream.cpp      frames, raw tokens, directive dispatch, macro calls
+//   directives/directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
+//   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
+//   textures/textures.cpp        pigment, finish, texture, interior
+//   textures/normals.cpp         normal { } perturbations
+//   objects/objects.cpp          shapes, CSG, object modifiers and transforms
+//   statements/camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
+//   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+//   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
+//   directives/file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
+//   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
+//   objects/quadric_shapes.cpp   cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
+//   objects/implicit_shapes.cpp  superellipsoid, blob
+//   objects/height_field.cpp     height_field
+//   objects/text.cpp             text (fonts read by runtime/truetype*.cpp, laid out by runtime/text_layout.cpp)
+//   textures/image_map.cpp       image_map, bump_map
+//   textures/texture_patterns.cpp patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
+//   objects/csg_modifiers.cpp    inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
+//   objects/sweep_shapes.cpp     lathe, prism, sor
+//   objects/isosurface.cpp       isosurface
 #pragma once
 
 #include <array>
@@ -31,14 +31,14 @@
 #include <unordered_map>
 #include <vector>
 
-#include "parser/description_transforms.hpp"
-#include "parser/lexer.hpp"
-#include "parser/object_extents.hpp"
+#include "scene/description_transforms.hpp"
+#include "parser/lexing/lexer.hpp"
+#include "runtime/object_extents.hpp"
 #include "parser/parse_scene.hpp"
-#include "parser/reserved_words.hpp"
-#include "parser/symbols.hpp"
-#include "parser/truetype.hpp"
-#include "parser/values.hpp"
+#include "parser/lexing/reserved_words.hpp"
+#include "parser/directives/symbols.hpp"
+#include "runtime/truetype.hpp"
+#include "parser/expressions/values.hpp"
 
 namespace povtrace::sdl {
 

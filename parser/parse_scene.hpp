@@ -14,10 +14,10 @@
 #include <utility>
 #include <vector>
 
-#include "parser/description.hpp"
-#include "parser/object_geometry.hpp"
-#include "parser/pattern_evaluator.hpp"
-#include "parser/source.hpp"
+#include "scene/description.hpp"
+#include "scene/object_geometry.hpp"
+#include "scene/pattern_evaluator.hpp"
+#include "scene/source.hpp"
 
 namespace povtrace {
 

@@ -3,7 +3,7 @@
 // handled the same way here.
 #include "renderer/csg_build.hpp"
 
-#include "parser/object_extents.hpp"
+#include "runtime/object_extents.hpp"
 #include "renderer/object_geometry.hpp"
 #include "renderer/shapes/csg.hpp"
 
@@ -25,7 +25,7 @@ CsgOperation operation_of(CsgKind kind) {
 Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed);
 
 // The box POV-Ray culls the rays of an object placed in the scene with (its bounding slabs test each object's box):
-// the box as the parser makes it (parser/object_extents.hpp). It shows where the object's surface reaches beyond its
+// the box as the parser makes it (runtime/object_extents.hpp). It shows where the object's surface reaches beyond its
 // box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where the clip's box alone
 // would let rays through that POV-Ray never tests; a merge or an intersection holding such a child keeps its own
 // box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests only their bounded_by).

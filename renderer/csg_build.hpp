@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {

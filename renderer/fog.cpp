@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parser/noise.hpp"
+#include "runtime/noise.hpp"
 #include "renderer/tracer.hpp"
 
 namespace povtrace::render {

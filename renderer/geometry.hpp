@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "parser/vecmath.hpp"
+#include "scene/vecmath.hpp"
 
 namespace povtrace::render {
 

@@ -12,7 +12,7 @@
 #include <array>
 #include <cstdint>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 
 namespace povtrace::render {
 

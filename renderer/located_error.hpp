@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "parser/source.hpp"
+#include "scene/source.hpp"
 
 namespace povtrace::render {
 

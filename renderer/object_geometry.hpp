@@ -1,10 +1,10 @@
-// The renderer's side of the parse-time geometry queries (parser/object_geometry.hpp): trace() and inside() on a
+// The renderer's side of the parse-time geometry queries (scene/object_geometry.hpp): trace() and inside() on a
 // declared object, answered by the same primitives, CSG nodes and intersection code that render the scene.
 #pragma once
 
 #include <memory>
 
-#include "parser/object_geometry.hpp"
+#include "scene/object_geometry.hpp"
 
 namespace povtrace::render {
 

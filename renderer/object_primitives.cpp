@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "parser/image_files.hpp"
+#include "runtime/image_files.hpp"
 #include "renderer/csg_build.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"

@@ -1,10 +1,10 @@
-// The renderer's side of pattern and pigment functions (parser/pattern_evaluator.hpp): `function { pattern { … } }`
+// The renderer's side of pattern and pigment functions (scene/pattern_evaluator.hpp): `function { pattern { … } }`
 // and `function { pigment { … } }` evaluated with the renderer's own pattern code, the same that colours pigments.
 #pragma once
 
 #include <memory>
 
-#include "parser/pattern_evaluator.hpp"
+#include "scene/pattern_evaluator.hpp"
 
 namespace povtrace::render {
 

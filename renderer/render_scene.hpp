@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/interior_list.hpp"
 #include "renderer/pattern/image_map.hpp"

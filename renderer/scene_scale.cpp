@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parser/description_transforms.hpp"
+#include "scene/description_transforms.hpp"
 
 namespace povtrace::render {
 

@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {

@@ -16,7 +16,7 @@
 #include <memory>
 #include <optional>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/pattern/map_image.hpp"
 
 namespace povtrace::render {

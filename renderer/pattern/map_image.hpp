@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/image/png_samples.hpp"
 
 namespace povtrace::render {

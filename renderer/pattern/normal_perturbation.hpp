@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/render_scene.hpp"
 
 namespace povtrace::render {

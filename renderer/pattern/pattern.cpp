@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "parser/function_value.hpp"
+#include "runtime/function_value.hpp"
 
 #include "renderer/pattern/pattern_functions.hpp"
 

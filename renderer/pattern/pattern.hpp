@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "parser/description.hpp"
-#include "parser/noise.hpp"
+#include "scene/description.hpp"
+#include "runtime/noise.hpp"
 
 namespace povtrace::render {
 

@@ -2,7 +2,7 @@
 // patterned texture's pattern and its textures.
 #pragma once
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/render_scene.hpp"
 
 namespace povtrace::render {

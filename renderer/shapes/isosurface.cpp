@@ -22,7 +22,7 @@
 // - Inside: within the container (boundary included) and F ≤ T.
 #include <cmath>
 
-#include "parser/function_value.hpp"   // the renderer evaluates the parser's compiled function
+#include "runtime/function_value.hpp"   // the renderer evaluates the parser's compiled function
 #include "renderer/shapes/isosurface.hpp"
 #include "renderer/shapes/local_ray.hpp"
 #include "renderer/shapes/many_roots.hpp"

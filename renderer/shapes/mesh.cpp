@@ -2,7 +2,7 @@
 //
 // SDL: `mesh { triangle {…} smooth_triangle {…} … [inside_vector V] }`, and
 // `mesh2 { vertex_vectors … face_indices … }` (POV-Ray 3.7 reference "Mesh", "Mesh2"); the parser
-// (parser/meshes.cpp, mesh2.cpp) reduces both to the same flat arrays.
+// (parser/objects/meshes.cpp, mesh2.cpp) reduces both to the same flat arrays.
 //
 // POV-Ray behaviour reproduced (facts read from source/backend/shape/mesh.cpp, 3.7-stable):
 // - The world ray is carried into the mesh's object space and normalised (length L); a triangle's object-space

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {

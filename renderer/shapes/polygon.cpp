@@ -3,7 +3,7 @@
 // SDL: `polygon { n, P1, …, Pn }` (POV-Ray 3.7 reference "Polygon"). No inside.
 //
 // POV-Ray behaviour reproduced (facts read from source/backend/shape/polygon.cpp, 3.7-stable):
-// - The parser puts the points into the polygon's plane frame (parser/meshes.cpp); the primitive's object space
+// - The parser puts the points into the polygon's plane frame (parser/objects/meshes.cpp); the primitive's object space
 //   is that frame, so the polygon is z = 0 there. The world ray is carried into it and normalised (length L); no
 //   hit when |d_z| < 1e-10; the object-space depth must satisfy 1e-8 ≤ depth ≤ MAX_DISTANCE (1e7) and the reported
 //   world depth is depth / L.

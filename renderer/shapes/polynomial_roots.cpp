@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "parser/quadratic_roots.hpp"
+#include "runtime/quadratic_roots.hpp"
 
 namespace povtrace::render::poly {
 

@@ -17,7 +17,7 @@ inline constexpr int max_degree = 6;   // a lathe's cubic profile gives sextics
 
 // Roots of c[0]t² + c[1]t + c[2] (a linear equation when c[0] = 0). A discriminant within ±1e-10 (after making
 // the polynomial monic) counts as a double root, returned once, as POV-Ray does. Returns the number of roots.
-// It is parser/quadratic_roots.hpp's quadratic_roots, which the parser's lathe, prism and sor boxes use too.
+// It is runtime/quadratic_roots.hpp's quadratic_roots, which the parser's lathe, prism and sor boxes use too.
 int solve_quadratic(const double c[3], double roots[2]);
 // Real roots of a cubic (a quadratic when c[0] = 0); three roots when the discriminant says so, repeated roots
 // repeated. Returns the number of roots.

@@ -12,7 +12,7 @@
 
 #include <optional>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {

@@ -1,7 +1,7 @@
 // What lathe, prism and sor keep once built (sweep_build.cpp builds it, lathe.cpp, prism.cpp and sor.cpp intersect
 // it): POV-Ray's per-segment cubic polynomials of the profile, each segment's bounds, and the bounding rings of
 // POV-Ray's bcyl.cpp that decide which lathe and sor segments a ray is tested against (bounding_rings.cpp). The
-// polynomials and ranges themselves come from parser/sweep_extents.hpp, which the parser's min_extent() and
+// polynomials and ranges themselves come from runtime/sweep_extents.hpp, which the parser's min_extent() and
 // max_extent() of these shapes are computed from too.
 #pragma once
 
@@ -10,15 +10,15 @@
 #include <memory>
 #include <vector>
 
-#include "parser/description.hpp"
-#include "parser/sweep_extents.hpp"
+#include "scene/description.hpp"
+#include "runtime/sweep_extents.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/local_ray.hpp"
 
 namespace povtrace::render {
 
 // A segment's cubics in w ∈ [0, 1] (Cubic, evaluate) and profile segments (ProfileSegment: the point (x(w), y(w))),
-// as parser/sweep_extents.hpp defines them.
+// as runtime/sweep_extents.hpp defines them.
 using povtrace::Cubic;
 using povtrace::evaluate;
 using povtrace::ProfileSegment;

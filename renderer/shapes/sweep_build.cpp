@@ -1,11 +1,11 @@
 // Builds lathe, prism and sor data from their descriptions as POV-Ray 3.7 does at parse time (source/backend/shape/
 // lathe.cpp Compute_Lathe, prism.cpp Compute_Prism, sor.cpp Compute_Sor, 3.7-stable; read for the behaviour only).
-// The segment polynomials and their ranges come from parser/sweep_extents.hpp (shared with the parser's
+// The segment polynomials and their ranges come from runtime/sweep_extents.hpp (shared with the parser's
 // min_extent() and max_extent()); here they become what the intersection code reads: a lathe or sor segment's
 // bounding ring, a prism segment's rectangle (scaled over the heights for a conic sweep) with its unscaled bounds
 // for the inside test, the whole profile's extent, and the sor's end discs' squared radii from the first and last
 // segment, at least 0.
-#include "parser/sweep_extents.hpp"
+#include "runtime/sweep_extents.hpp"
 #include "renderer/shapes/sweep.hpp"
 
 namespace povtrace::render {

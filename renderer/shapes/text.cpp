@@ -1,7 +1,7 @@
 // Text: glyph outlines extruded along z.
 //
 // SDL: `text { ttf "font.ttf" "string" thickness, <offset> object_modifiers… }` (POV-Ray 3.7 reference "Text"); the
-// parser reads the font and lays the glyphs out (parser/text.cpp). Primitive: data = TextData (all glyphs of one
+// parser reads the font and lays the glyphs out (parser/objects/text.cpp). Primitive: data = TextData (all glyphs of one
 // text object: POV-Ray's union of one child per character, kept as one primitive so that CSG sees the whole text);
 // SurfaceHit::element = TextSurface, with a wall's normal in (u, v).
 //

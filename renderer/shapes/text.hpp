@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {

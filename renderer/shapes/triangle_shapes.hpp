@@ -7,7 +7,7 @@
 #include <mutex>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/accel/embree_mesh.hpp"
 #include "renderer/accel/triangle_bvh.hpp"
 #include "renderer/geometry.hpp"

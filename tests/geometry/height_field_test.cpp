@@ -10,7 +10,7 @@
 #include <random>
 
 #include "geometry_kit.hpp"
-#include "parser/source.hpp"
+#include "scene/source.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"

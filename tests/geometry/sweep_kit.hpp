@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "quadric_kit.hpp"
 
 namespace povtrace::test {

@@ -8,7 +8,7 @@
 #include <iterator>
 #include <random>
 
-#include "parser/truetype.hpp"
+#include "runtime/truetype.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 
 namespace {

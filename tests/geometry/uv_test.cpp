@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "tests/geometry/mesh_kit.hpp"
 
 namespace povtrace::test {

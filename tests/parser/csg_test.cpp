@@ -1,4 +1,4 @@
-// CSG and the object modifiers that combine objects, as the parser describes them (parser/csg_modifiers.cpp,
+// CSG and the object modifiers that combine objects, as the parser describes them (parser/objects/csg_modifiers.cpp,
 // objects.cpp): differences as intersections with inverted later children, inverse by De Morgan, clipped_by and
 // bounded_by lists (transformed with the object, linked, refused when textured), removal of unnecessary bounds,
 // texture inheritance and the #default texture through nested CSG, lights inside CSG, inside() with clips.

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "parse_helpers.hpp"
-#include "parser/function_value.hpp"
+#include "runtime/function_value.hpp"
 
 namespace povtrace::test {
 namespace {

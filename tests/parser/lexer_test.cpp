@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "parser/lexer.hpp"
-#include "parser/reserved_words.hpp"
+#include "parser/lexing/lexer.hpp"
+#include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
 namespace {

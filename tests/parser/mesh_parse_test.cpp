@@ -116,7 +116,7 @@ TEST(MeshParse, SmoothTriangleWithNormalsOnBothSidesIsDegenerate) {
   ASSERT_EQ(m.items.size(), 1u);
 }
 
-// Literal items are read straight from the text (parser/mesh_scan.hpp); a comment before an item sends it through
+// Literal items are read straight from the text (parser/lexing/mesh_scan.hpp); a comment before an item sends it through
 // the ordinary token reading. Both must give the same arrays, and the same messages.
 void expect_same_mesh(const std::string& literal, const std::string& ordinary) {
   Messages ml, mo;

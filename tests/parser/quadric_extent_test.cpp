@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "parser/quadric_extent.hpp"
+#include "runtime/quadric_extent.hpp"
 
 namespace povtrace {
 namespace {

@@ -1,4 +1,4 @@
-// min_extent() and max_extent() of lathe, sor and prism: the boxes of parser/sweep_extents.hpp carried by the
+// min_extent() and max_extent() of lathe, sor and prism: the boxes of runtime/sweep_extents.hpp carried by the
 // identity, against the values POV-Ray 3.7.0.10 printed for the same objects. Each object was declared as written
 // here (#declare O = ...) in a #version 3.7 scene and printed with
 //   #debug concat(str(min_extent(O).x, 0, 17), "\n")   (and so on for each coordinate of both corners)
@@ -10,7 +10,7 @@
 #include <variant>
 
 #include "parse_helpers.hpp"
-#include "parser/sweep_extents.hpp"
+#include "runtime/sweep_extents.hpp"
 
 namespace povtrace::test {
 namespace {
@@ -209,7 +209,7 @@ TEST(SweepExtents, TransformedBoxesMatchPovRay) {
 }
 
 // Where POV-Ray and povtrace differ. The turning points of a sor's r² are solved by the quadratic povtrace shares
-// between parser and renderer (parser/quadratic_roots.hpp), which returns the root of larger magnitude first;
+// between parser and renderer (runtime/quadratic_roots.hpp), which returns the root of larger magnitude first;
 // POV-Ray's solve_quadratic returns the larger root first. The two orders differ when the roots' sum is negative,
 // and the order only matters when r² < 0 at the turning point in range: its NaN radius then lands in the first
 // candidate in POV-Ray (the segment drops out; here the only one, so POV-Ray's Radius2 stays −BOUND_HUGE and it

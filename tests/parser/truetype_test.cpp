@@ -9,7 +9,7 @@
 #include <iterator>
 #include <random>
 
-#include "parser/truetype.hpp"
+#include "runtime/truetype.hpp"
 #include "ttf_builder.hpp"
 
 namespace {

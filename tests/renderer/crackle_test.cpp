@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "parser/noise.hpp"
+#include "runtime/noise.hpp"
 #include "renderer/pattern/pattern.hpp"
 
 namespace povtrace::render {

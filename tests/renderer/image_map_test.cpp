@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "parser/source.hpp"
+#include "scene/source.hpp"
 #include "renderer/pattern/image_map.hpp"
 
 namespace povtrace::render {

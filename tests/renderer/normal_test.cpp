@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "parser/noise.hpp"
+#include "runtime/noise.hpp"
 #include "renderer/pattern/normal_perturbation.hpp"
 
 namespace povtrace::render {

@@ -1,4 +1,4 @@
-// function { pattern { … } } through the renderer's pattern code (parser/pattern_evaluator.hpp,
+// function { pattern { … } } through the renderer's pattern code (scene/pattern_evaluator.hpp,
 // renderer/pattern_evaluator.cpp). The expected values are POV-Ray 3.7.0.10's own: the same scene lines run
 // through `povray -D +W16 +H16 -F` printed them with str(F(P.x, P.y, P.z), 0, 16).
 #include <cstdlib>

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "parser/noise.hpp"
+#include "runtime/noise.hpp"
 #include "parser/parse_scene.hpp"
 #include "renderer/pattern/pattern.hpp"
 #include "renderer/pattern/render_pigment.hpp"

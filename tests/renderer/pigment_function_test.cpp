@@ -1,4 +1,4 @@
-// function { pigment { … } } through the renderer's pigment code (parser/pattern_evaluator.hpp,
+// function { pigment { … } } through the renderer's pigment code (scene/pattern_evaluator.hpp,
 // renderer/pattern_evaluator.cpp). The expected values are POV-Ray 3.7.0.10's own: the same scene lines run
 // through `povray -D +W16 +H16 -F` printed them with vstr(5, F(P.x, P.y, P.z), ",", 0, 9) and
 // str(F(P.x, P.y, P.z).gray, 0, 9), so they are compared to within their last printed digit, except where

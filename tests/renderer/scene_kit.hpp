@@ -9,7 +9,7 @@
 #include <cmath>
 #include <memory>
 
-#include "parser/description.hpp"
+#include "scene/description.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
 #include "renderer/tracer.hpp"

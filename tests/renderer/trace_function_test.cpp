@@ -1,4 +1,4 @@
-// trace() and inside() at parse time through the renderer's geometry (parser/object_geometry.hpp,
+// trace() and inside() at parse time through the renderer's geometry (scene/object_geometry.hpp,
 // renderer/object_geometry.cpp). The expected values are POV-Ray 3.7.0.10's own: the same scene lines run through
 // `povray` printed them with vstr(3, V, ",", 0, 17).
 #include <array>

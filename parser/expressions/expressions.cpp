@@ -1,0 +1,959 @@
+// Expressions (povray-sdl-and-geometry.md §5): two levels (parameter level = additive; full level with
+// comparisons, & | and ?: inside parentheses and conditions), term counts with promotion, colour forms,
+// built-in functions.
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <map>
+
+#include "parser/expressions/int_cast.hpp"
+#include "parser/interpreter.hpp"
+#include "parser/lexing/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr double kEqualEpsilon = 1e-10;   // '=' and '!=' compare with |a−b| ≤ 1e-10 (§5)
+
+enum class Comparison { none, less, greater, less_equal, greater_equal, equal, not_equal };
+
+Comparison comparison_of(TokenKind kind, std::string_view s) {
+  // By the bytes, not by six string comparisons: asked after every operand at the full level.
+  if (kind != TokenKind::symbol || s.empty() || s.size() > 2) return Comparison::none;
+  const char a = s[0];
+  if (s.size() == 1)
+    return a == '<' ? Comparison::less : a == '>' ? Comparison::greater : a == '=' ? Comparison::equal
+                                                                                   : Comparison::none;
+  if (s[1] != '=') return Comparison::none;
+  return a == '<' ? Comparison::less_equal : a == '>' ? Comparison::greater_equal
+                                           : a == '!' ? Comparison::not_equal : Comparison::none;
+}
+
+// '=' and its kin compare with a tolerance (§5).
+bool compare(Comparison c, double a, double b) {
+  const bool near = std::fabs(a - b) <= kEqualEpsilon;
+  switch (c) {
+    case Comparison::less: return a < b;
+    case Comparison::greater: return a > b;
+    case Comparison::less_equal: return a < b || near;
+    case Comparison::greater_equal: return a > b || near;
+    case Comparison::equal: return near;
+    case Comparison::not_equal: return !near;
+    case Comparison::none: break;
+  }
+  return false;
+}
+
+// Promotes the shorter operand: a float broadcasts, a shorter vector is zero-padded (§5).
+void promote(Numeric& a, Numeric& b) {
+  const int terms = std::max(a.terms, b.terms);
+  auto widen = [terms](Numeric& n) {
+    if (n.terms == terms) return;
+    if (n.terms == 1) for (int i = 1; i < terms; ++i) n.v[i] = n.v[0];
+    n.terms = terms;
+  };
+  widen(a);
+  widen(b);
+  a.colour = b.colour = a.colour || b.colour;
+}
+
+template <class Op> Numeric componentwise(Numeric a, Numeric b, Op op) {
+  promote(a, b);
+  for (int i = 0; i < a.terms; ++i) a.v[i] = op(a.v[i], b.v[i]);
+  return a;
+}
+
+Numeric promoted_to(Numeric n, int terms) {
+  if (n.terms == 1) for (int i = 1; i < terms; ++i) n.v[i] = n.v[0];
+  n.terms = std::max(n.terms, terms);
+  return n;
+}
+}  // namespace
+
+double Interpreter::to_float(const Numeric& n, const Token& at) const {
+  if (n.terms != 1) fail_at(at, "expected a float, found a " + value_type_name(Value(n)));
+  return n.v[0];
+}
+
+// The first token of an expression, for its error messages: where the token ahead is plain it is made only if
+// an error needs it (peek() would make it, and push it back, for every expression).
+class Interpreter::ExpressionStart {
+ public:
+  explicit ExpressionStart(Interpreter& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
+    if (kept_) tokens_ = in.frames_.back().tokens;
+    else token_ = in.peek();
+  }
+  Token token() const { return kept_ ? in_.make_token(*tokens_, *kept_) : token_; }
+
+ private:
+  Interpreter& in_;
+  const FileTokens* tokens_;
+  const LexedToken* kept_;   // chunked storage: stays where it is while the expression is read
+  Token token_;
+};
+
+double Interpreter::parse_float() {
+  const ExpressionStart start(*this);
+  const Numeric n = parse_additive();
+  return n.terms == 1 ? n.v[0] : to_float(n, start.token());
+}
+
+double Interpreter::parse_float_full() {
+  const ExpressionStart start(*this);
+  const Numeric n = parse_expression();
+  return n.terms == 1 ? n.v[0] : to_float(n, start.token());
+}
+
+Vec3 Interpreter::parse_vector() {
+  const ExpressionStart start(*this);
+  Numeric n = parse_additive();
+  if (n.terms > 3 && !n.colour)
+    fail_at(start.token(), "expected a 3-D vector, found a " + value_type_name(Value(n)));
+  return promoted_to(n, 3).as_vec3();
+}
+
+// ---- full level ----------------------------------------------------------------------------------------
+Numeric Interpreter::compare_strings() {
+  const std::string a = parse_string();
+  Token op = next();
+  static const std::string_view ops[] = {"<", "<=", "=", "!=", ">=", ">"};
+  if (op.kind != TokenKind::symbol || std::find(std::begin(ops), std::end(ops), op.text) == std::end(ops))
+    fail_expected(op, "a comparison operator (<, <=, =, !=, >=, >) after a string");
+  const int c = strcmp_value(a, parse_string());
+  const bool r = op.is("<") ? c < 0 : op.is("<=") ? c <= 0 : op.is("=") ? c == 0 : op.is("!=") ? c != 0
+                 : op.is(">=") ? c >= 0 : c > 0;
+  return Numeric::scalar(r ? 1.0 : 0.0);
+}
+
+int Interpreter::strcmp_value(const std::string& a, const std::string& b) {
+  // POV-Ray's UCS2_strcmp: the difference of the first differing characters (0 past the end).
+  for (std::size_t i = 0;; ++i) {
+    const int ca = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+    const int cb = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+    if (ca != cb || ca == 0) return ca - cb;
+  }
+}
+
+// datetime(F [, format]) (§5): F days since 2000-01-01 00:00 UTC, formatted with strftime in UTC; the default
+// format is "%Y-%m-%d %H:%M:%SZ".
+std::string Interpreter::parse_datetime() {
+  expect("(", " after 'datetime'");
+  const double days = parse_float();
+  accept(",");
+  std::string format = "%Y-%m-%d %H:%M:%SZ";
+  Token t = next();
+  if (!t.is(")")) {
+    unget(t);
+    Token at = peek();
+    format = parse_string();
+    if (format.empty()) fail_at(at, "datetime() needs a non-empty format string");
+    if (format.size() > 200) fail_at(at, "the datetime() format string is longer than 200 characters");
+    expect(")", " closing datetime()");
+  }
+  const double seconds = std::floor((days + (365 * 30 + 7)) * 86400.0 + 0.5);
+  if (!(std::fabs(seconds) < 1e15)) fail_at(t, "datetime() of a date out of range");
+  const std::time_t stamp = static_cast<std::time_t>(seconds);
+  std::tm tm{};
+  if (!gmtime_r(&stamp, &tm)) fail_at(t, "datetime() of a date out of range");
+  char buf[201];
+  const std::size_t n = std::strftime(buf, sizeof buf, format.c_str(), &tm);
+  return std::string(buf, n);
+}
+
+Numeric Interpreter::parse_expression() {
+  if (Numeric n; run_expression_program(true, n)) return n;
+  auto comparison = [this]() {
+    // A string operand takes exactly one comparison with another string, in strcmp order (§5).
+    if (string_ahead()) return compare_strings();
+    Numeric left = parse_additive();
+    while (true) {
+      const Ahead ahead = raw_ahead();
+      const Comparison c = comparison_of(ahead.kind, ahead.text);
+      if (c == Comparison::none) return left;
+      const Token op = next();
+      Numeric right = parse_additive();
+      left = Numeric::scalar(compare(c, to_float(left, op), to_float(right, op)) ? 1.0 : 0.0);
+    }
+  };
+  Numeric value = comparison();
+  while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
+    if (const Ahead look = raw_ahead(); !look.is("&") && !look.is("|")) break;
+    const Token op = next();
+    const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
+    const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
+    value = Numeric::scalar((op.is("&") ? (a && b) : (a || b)) ? 1.0 : 0.0);
+  }
+  if (!raw_ahead().is("?")) return value;
+  const Token q = next();
+  // `c ? a : c ? a : …` recurses here without passing parse_unary's guard at each level.
+  const NestingGuard guard(*this, q);
+  const bool c = std::fabs(to_float(value, q)) > kEqualEpsilon;
+  Numeric a = parse_expression();
+  expect(":", " in the conditional expression c ? a : b");
+  Numeric b = parse_expression();
+  return c ? a : b;
+}
+
+// ---- parameter level -------------------------------------------------------------------------------------
+// After a complete operand the look for an operator is raw (peek_raw): as in POV-Ray, a directive or macro call
+// there runs only once the value is finished — e.g. the next `#declare` after a value without ';' (§1 item 6).
+Numeric Interpreter::parse_additive() {
+  if (Numeric n; run_expression_program(false, n)) return n;
+  return parse_additive_rest(parse_multiplicative());
+}
+
+Numeric Interpreter::parse_additive_after(Numeric first_operand) {
+  return parse_additive_rest(parse_multiplicative_rest(parse_postfix(first_operand)));
+}
+
+Numeric Interpreter::parse_additive_rest(Numeric value) {
+  while (true) {
+    const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
+    const bool plus = op.is("+");
+    if (!plus && !op.is("-")) return value;
+    skip_ahead();
+    if (plus) value = componentwise(value, parse_multiplicative(), std::plus<>());
+    else value = componentwise(value, parse_multiplicative(), std::minus<>());
+  }
+}
+
+Numeric Interpreter::parse_multiplicative() { return parse_multiplicative_rest(parse_unary()); }
+
+Numeric Interpreter::parse_multiplicative_rest(Numeric value) {
+  while (true) {
+    const Ahead look = raw_ahead();
+    const bool times = look.is("*");
+    if (!times && !look.is("/")) return value;
+    if (times) {
+      skip_ahead();
+      value = componentwise(value, parse_unary(), std::multiplies<>());
+    } else {
+      const Token op = next();   // its location, should the divisor be zero
+      Numeric divisor = parse_unary();
+      promote(value, divisor);
+      for (int i = 0; i < value.terms; ++i) {
+        if (divisor.v[i] == 0.0) warn(op.loc, "division by zero");
+        value.v[i] /= divisor.v[i];
+      }
+    }
+  }
+}
+
+Numeric Interpreter::parse_unary() {
+  if (Numeric n; fast_operand(n)) return n;
+  // A parenthesis from the kept tokens, as parse_primary takes it, without making its Token: what a macro body
+  // such as `(A + B * 0.001)` starts with (its expression program cannot end at the body's #end).
+  if (!options_.max_tokens && nesting_room() && plain_symbol(plain_ahead(), '(')) {
+    consume_plain();
+    const NestingGuard guard(*this, NestingGuard::RoomChecked{});
+    Numeric n = parse_expression();
+    skip_expected(')', " closing the parenthesis");
+    return parse_postfix(n);
+  }
+  const Token t = next();
+  const NestingGuard guard(*this, t);   // every nested operand passes through here
+  if (t.kind != TokenKind::symbol) return parse_postfix(parse_primary(t));
+  if (t.is("-")) {
+    Numeric n = parse_unary();
+    for (int i = 0; i < n.terms; ++i) n.v[i] = -n.v[i];
+    return n;
+  }
+  if (t.is("+")) return parse_unary();
+  if (t.is("!")) {
+    Numeric n = parse_unary();
+    for (int i = 0; i < n.terms; ++i) n.v[i] = std::fabs(n.v[i]) <= kEqualEpsilon ? 1.0 : 0.0;
+    return n;
+  }
+  return parse_postfix(parse_primary(t));
+}
+
+// .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
+Numeric Interpreter::parse_postfix(Numeric value) {
+  while (true) {
+    if (!raw_ahead().is(".")) return value;
+    next();
+    Token member = next();
+    static const std::map<std::string_view, int> components = {
+        {"x", 0}, {"u", 0}, {"red", 0}, {"y", 1}, {"v", 1}, {"green", 1}, {"z", 2}, {"blue", 2},
+        {"t", 3}, {"filter", 3}, {"transmit", 4}, {"gray", -1}, {"grey", -1}};
+    auto it = member.kind == TokenKind::identifier ? components.find(member.text) : components.end();
+    if (it == components.end()) fail_expected(member, "a component name (x, y, z, t, red, green, blue, filter, "
+                                                      "transmit, gray) after '.'");
+    if (it->second < 0) {
+      value = Numeric::scalar(0.297 * value.v[0] + 0.589 * value.v[1] + 0.114 * value.v[2]);
+      continue;
+    }
+    if (it->second >= value.terms)
+      fail_at(member, "'." + std::string(member.text) + "' selects a component that this " +
+                          value_type_name(Value(value)) + " does not have");
+    value = Numeric::scalar(value.v[it->second]);
+  }
+}
+
+Numeric Interpreter::parse_vector_literal(const Token& open) {
+  Numeric n;
+  n.terms = 0;
+  do {
+    if (n.terms == 5) fail_at(open, "a vector has at most 5 components");
+    n.v[n.terms++] = parse_float();
+    // The separator: a plain ',' or '>' is taken where it stands (no Token made, none pushed back).
+    if (const LexedToken* k = plain_ahead(); plain_symbol(k, '>')) {
+      consume_plain();
+      break;
+    } else if (plain_symbol(k, ',')) {
+      consume_plain();
+      if (plain_symbol(plain_ahead(), '>')) { consume_plain(); break; }
+      if (!plain_ahead() && peek().is(">")) { next(); break; }
+      continue;
+    } else if (k) {
+      continue;   // commas between components are optional (§5)
+    }
+    Token sep = next();
+    if (sep.is(">")) break;
+    if (!sep.is(",")) unget(sep);   // commas between components are optional (§5)
+    else if (peek().is(">")) { next(); break; }   // a trailing comma before '>' is accepted, as POV-Ray does
+  } while (true);
+  if (n.terms < 2) fail_at(open, "a vector needs 2 to 5 components");
+  return n;
+}
+
+// srgb… colours (§5): the components are sRGB-encoded; they are decoded to linear light, then encoded with the
+// working gamma (assumed_gamma; 1 when not set). Filter and transmit are taken as they are.
+namespace {
+double srgb_to_working(double encoded, double gamma) {
+  const double linear = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+  return gamma == 1.0 || linear <= 0 ? linear : std::pow(linear, 1.0 / gamma);
+}
+}  // namespace
+
+// rgb, rgbf, rgbt, rgbft: the expression after the keyword is a full expression promoted to the stated count
+// (§5 "Colours"), then placed in the five colour channels.
+Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
+  const bool srgb = keyword.text.starts_with("srgb");
+  const std::string_view k = srgb ? keyword.text.substr(1) : keyword.text;   // srgbf → the rgbf layout
+  Token start = peek();
+  Numeric e = parse_expression();
+  const int count = k == "rgb" ? 3 : (k == "rgbft" ? 5 : 4);
+  if (e.terms > count && !e.colour)
+    fail_at(start, "'" + std::string(k) + "' takes " + std::to_string(count) + " components, found " +
+                       std::to_string(e.terms));
+  e = promoted_to(e, count);
+  Numeric c;
+  c.terms = 5;
+  c.colour = true;
+  const double gamma = scene_.settings.assumed_gamma.value_or(1.0);
+  for (int i = 0; i < 3; ++i) c.v[i] = srgb ? srgb_to_working(e.v[i], gamma) : e.v[i];
+  if (k == "rgbf") c.v[3] = e.v[3];
+  if (k == "rgbt") c.v[4] = e.v[3];
+  if (k == "rgbft") { c.v[3] = e.v[3]; c.v[4] = e.v[4]; }
+  return c;
+}
+
+
+bool Interpreter::starts_colour(const Token& t) const {
+  if (t.kind != TokenKind::identifier) return false;
+  static const std::string_view words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "red", "green",
+                                           "blue", "filter", "transmit", "srgb", "srgbf", "srgbt", "srgbft"};
+  for (auto w : words)
+    if (t.text == w) return true;
+  if (reserved(t)) return false;
+  const Value* v = lookup(t);
+  return v && std::holds_alternative<Numeric>(*v) && std::get<Numeric>(*v).colour;
+}
+
+// Parse_Colour: [color|colour] then rgb… form, colour id or expression, then overrides red/green/blue/
+// filter/transmit. A bare expression fills all five channels (`color 0.5` sets f and t too, §5).
+Colour Interpreter::parse_colour() {
+  Numeric c;
+  c.terms = 5;
+  c.colour = true;
+  bool have_base = false;
+  Token t = next();
+  if (t.is("color") || t.is("colour")) t = next();
+  while (true) {
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (!have_base && (k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft" || k.starts_with("srgb"))) {
+      c = parse_colour_keyword_form(t);
+      have_base = true;
+    } else if (k == "red" || k == "green" || k == "blue" || k == "filter" || k == "transmit") {
+      const int channel = k == "red" ? 0 : k == "green" ? 1 : k == "blue" ? 2 : k == "filter" ? 3 : 4;
+      c.v[channel] = parse_float();
+      have_base = true;
+    } else if (!have_base && t.kind != TokenKind::end_of_input && !t.is("}") &&
+               !(k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft")) {
+      unget(t);
+      Token start = peek();
+      Numeric e = parse_additive();
+      if (e.terms > 5) fail_at(start, "a colour has at most 5 components");
+      if (e.terms == 1) e = promoted_to(e, 5);
+      for (int i = 0; i < 5; ++i) c.v[i] = i < e.terms ? e.v[i] : 0.0;
+      have_base = true;
+    } else {
+      unget(t);
+      break;
+    }
+    // Only overrides can follow a complete colour; look raw, as after any operand.
+    const Token after = peek_raw();
+    if (!(after.is("red") || after.is("green") || after.is("blue") || after.is("filter") || after.is("transmit")))
+      break;
+    t = next();
+  }
+  if (!have_base) fail_expected(peek(), "a colour (rgb <r,g,b>, a colour identifier or an expression)");
+  return c.stored().as_colour();
+}
+
+namespace {
+bool is_string_function(std::string_view name) {
+  static const std::string_view fns[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr",
+                                         "datetime"};
+  for (auto f : fns)
+    if (name == f) return true;
+  return false;
+}
+}  // namespace
+
+bool Interpreter::string_ahead() {
+  const LexedToken* k = plain_ahead();
+  if (!k) return starts_string(peek());
+  if (k->kind() != TokenKind::identifier) return k->kind() == TokenKind::string;
+  // starts_string() of the token it would make, from its NameId (asked before every comparison operand).
+  if (is_string_function(text_of(*k))) return true;
+  if (symbols_.is_reserved(k->payload)) return false;
+  const Value* v = symbols_.find(k->payload);
+  return v && std::holds_alternative<std::string>(*v);
+}
+
+bool Interpreter::starts_string(const Token& t) const {
+  if (t.kind == TokenKind::string) return true;
+  if (t.kind != TokenKind::identifier) return false;
+  if (is_string_function(t.text)) return true;
+  if (reserved(t)) return false;
+  const Value* v = lookup(t);
+  return v && std::holds_alternative<std::string>(*v);
+}
+
+namespace {
+std::string format_str(double value, int width, int precision) {
+  // str(F, L, P) (§5): L > 0 space-padded width, L < 0 zero-padded width |L|, P < 0 the default 6 decimals.
+  if (precision < 0) precision = 6;
+  // The text is cut at 511 characters anyway; larger widths and precisions only made snprintf fail (a width of
+  // 2^31) or allocate gigabytes (a precision of 2·10^9).
+  constexpr int kLimit = 4096;
+  width = std::clamp(width, -kLimit, kLimit);
+  precision = std::min(precision, kLimit);
+  char buf[512];
+  if (width < 0) std::snprintf(buf, sizeof buf, "%0*.*f", -width, precision, value);
+  else std::snprintf(buf, sizeof buf, "%*.*f", width, precision, value);
+  return buf;
+}
+}  // namespace
+
+std::string Interpreter::parse_string() {
+  Token t = next();
+  const NestingGuard guard(*this, t);   // concat(concat(…)), strupr(strlwr(…)) nest without an expression level
+  if (t.kind == TokenKind::string) return string_value(t, file_of(t.loc), true);
+  if (const Value* v = lookup(t)) {
+    if (std::holds_alternative<std::string>(*v)) return std::get<std::string>(*v);
+  }
+  if (t.is("concat")) {
+    expect("(", " after concat");
+    std::string s = parse_string();
+    // Commas between the strings are optional, as everywhere POV-Ray reads arguments.
+    while (true) {
+      const bool comma = accept(",");
+      if (!comma && !starts_string(peek())) break;
+      s += parse_string();
+    }
+    expect(")", " closing concat(...)");
+    return s;
+  }
+  if (t.is("str")) {
+    expect("(", " after str");
+    const double value = parse_float();
+    accept(",");
+    const double width = parse_float();
+    accept(",");
+    const double precision = parse_float();
+    expect(")", " closing str(...)");
+    return format_str(value, saturating_cast<int>(width), saturating_cast<int>(precision));
+  }
+  if (t.is("chr")) {
+    expect("(", " after chr");
+    const double code = parse_float();
+    expect(")", " closing chr(...)");
+    return std::string(1, static_cast<char>(saturating_cast<int>(code) & 0x7f));
+  }
+  if (t.is("vstr")) {
+    expect("(", " after vstr");
+    const int n = std::clamp(saturating_cast<int>(parse_float()), 2, 5);
+    accept(",");
+    // Not promoted as in arithmetic: POV-Ray prints a float F as F, 0, 0… (vstr(3, 5, …) is "5,0,0"), and
+    // zero-pads a shorter vector.
+    Numeric v = parse_additive();
+    for (int i = v.terms; i < 5; ++i) v.v[i] = 0;
+    accept(",");
+    const std::string sep = parse_string();
+    accept(",");
+    const int width = saturating_cast<int>(parse_float());
+    accept(",");
+    const int precision = saturating_cast<int>(parse_float());
+    expect(")", " closing vstr(...)");
+    std::string s;
+    for (int i = 0; i < n; ++i) s += (i ? sep : "") + format_str(v.v[i], width, precision);
+    return s;
+  }
+  if (t.is("strupr") || t.is("strlwr")) {
+    expect("(", "");
+    std::string s = parse_string();
+    expect(")", "");
+    for (char& c : s) {
+      const int byte = static_cast<unsigned char>(c);   // toupper/tolower of a negative char is undefined
+      c = static_cast<char>(t.is("strupr") ? std::toupper(byte) : std::tolower(byte));
+    }
+    return s;
+  }
+  if (t.is("datetime")) return parse_datetime();
+  if (t.is("substr")) {
+    expect("(", " after substr");
+    std::string s = parse_string();
+    accept(",");
+    const int start = saturating_cast<int>(parse_float());
+    accept(",");
+    const int len = saturating_cast<int>(parse_float());
+    expect(")", " closing substr(...)");
+    if (start < 1 || len < 0 || static_cast<long long>(start) - 1 + len > static_cast<long long>(s.size()))
+      fail_at(t, "substr(…, " + std::to_string(start) + ", " + std::to_string(len) + ") is out of range");
+    return s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(len));
+  }
+  fail_expected(t, "a string");
+}
+
+}  // namespace povtrace::sdl
+
+// ---- expression programs ---------------------------------------------------------------------------------
+namespace povtrace::sdl {
+
+namespace {
+// A program is refused beyond these: its stack lives in a fixed array, and the nesting guard of the full parse
+// (which the program passes by) is kept exact by leaving expressions near the limit to the full parse.
+constexpr int kProgramStack = 8;
+constexpr int kProgramDepth = 16;
+}  // namespace
+
+bool Interpreter::replaying() const {
+  if (frames_.back().kind == Frame::Kind::macro) return true;
+  for (const Control& c : controls_)
+    if (c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) return true;
+  return false;
+}
+
+// Reads the grammar of parse_expression … parse_primary once more over the kept tokens, emitting the operations
+// in the order the parse would compute them. It looks at tokens only, never at values.
+class Interpreter::ProgramCompiler {
+ public:
+  enum class Result { done, never, not_yet };
+  ProgramCompiler(Interpreter& in, const FileTokens& tokens, std::size_t at)
+      : in_(in), tokens_(tokens), text_(tokens.file().text), j_(at) {}
+
+  Result compile(bool full, ExpressionProgram& p) {
+    p.first_op = static_cast<std::uint32_t>(in_.program_ops_.size());
+    const bool ok = (full ? full_level() : additive()) && at(j_);   // the token after it is plain, too
+    if (!ok) {
+      in_.program_ops_.resize(p.first_op);
+      return result_;
+    }
+    p.op_count = static_cast<std::uint32_t>(in_.program_ops_.size()) - p.first_op;
+    p.end = static_cast<std::uint32_t>(j_);
+    p.usable = true;
+    return Result::done;
+  }
+
+ private:
+  // Kept token j where the program may read it; nullptr (and why) where it stops: not lexed yet (a loop's first
+  // round), or a '#' or the end of a file, where the parse would run a directive or change frames.
+  const LexedToken* at(std::size_t j) {
+    if (j >= tokens_.size()) return stop(Result::not_yet);
+    const LexedToken& k = tokens_[j];
+    if (k.kind() == TokenKind::end_of_input || is(&k, "#")) return stop(Result::never);
+    return &k;
+  }
+  const LexedToken* stop(Result r) {
+    result_ = r;
+    return nullptr;
+  }
+  bool never() {
+    result_ = Result::never;
+    return false;
+  }
+  std::string_view text(const LexedToken& k) const { return std::string_view(text_.data() + k.offset, k.length()); }
+  bool is(const LexedToken* k, std::string_view symbol) const {
+    return k && k->kind() == TokenKind::symbol && text(*k) == symbol;
+  }
+  bool emit(ExpressionOp op, int pops, int pushes) {
+    stack_ += pushes - pops;
+    if (stack_ > kProgramStack) return never();
+    in_.program_ops_.push_back(op);
+    return true;
+  }
+  bool emit(ExpressionOp::Code code, int pops = 2) { return emit(ExpressionOp{code, 0, 0, 0, nullptr}, pops, 1); }
+
+  bool full_level() {   // parse_expression
+    if (!comparison()) return false;
+    while (true) {
+      const LexedToken* k = at(j_);
+      if (!k) return false;
+      const bool a = is(k, "&");
+      if (!a && !is(k, "|")) break;
+      ++j_;
+      if (!comparison() || !emit(a ? ExpressionOp::Code::and_ : ExpressionOp::Code::or_)) return false;
+    }
+    return is(at(j_), "?") ? never() : result_ == Result::done;
+  }
+  bool comparison() {
+    const LexedToken* k = at(j_);
+    if (!k) return false;
+    // A string operand makes a string comparison (an identifier holding a string is caught when the program runs).
+    if (k->kind() == TokenKind::string || (k->kind() == TokenKind::identifier && is_string_function(text(*k))))
+      return never();
+    if (!additive()) return false;
+    while (true) {
+      k = at(j_);
+      if (!k) return false;
+      const Comparison c = comparison_of(k->kind(), text(*k));
+      if (c == Comparison::none) return true;
+      ++j_;
+      if (!additive()) return false;
+      if (!emit(ExpressionOp{ExpressionOp::Code::compare, static_cast<std::uint8_t>(c), 0, 0, nullptr}, 2, 1))
+        return false;
+    }
+  }
+  bool additive() {   // parse_additive
+    if (!multiplicative()) return false;
+    while (true) {
+      const LexedToken* k = at(j_);
+      if (!k) return false;
+      const bool plus = is(k, "+");
+      if (!plus && !is(k, "-")) return true;
+      ++j_;
+      if (!multiplicative() || !emit(plus ? ExpressionOp::Code::add : ExpressionOp::Code::sub)) return false;
+    }
+  }
+  bool multiplicative() {   // parse_multiplicative
+    if (!unary()) return false;
+    while (true) {
+      const LexedToken* k = at(j_);
+      if (!k) return false;
+      const bool times = is(k, "*");
+      if (!times && !is(k, "/")) return true;
+      ++j_;
+      if (!unary() || !emit(times ? ExpressionOp::Code::mul : ExpressionOp::Code::div)) return false;
+    }
+  }
+  bool unary() {   // parse_unary and parse_primary
+    if (++depth_ > kProgramDepth) return never();
+    const bool ok = operand();
+    --depth_;
+    return ok;
+  }
+  bool operand() {
+    const LexedToken* k = at(j_);
+    if (!k) return false;
+    switch (k->kind()) {
+      case TokenKind::number:
+        ++j_;
+        return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, tokens_.number(*k), nullptr}, 0, 1) &&
+               no_postfix();
+      case TokenKind::identifier: {
+        ++j_;
+        if (!in_.symbols_.is_reserved(k->payload))
+          return emit(ExpressionOp{ExpressionOp::Code::name, 0, k->payload, 0, nullptr}, 0, 1) && no_postfix();
+        const std::string_view w = text(*k);
+        // The constants of parse_primary whose value never changes.
+        if (w == "pi" || w == "true" || w == "yes" || w == "on" || w == "false" || w == "no" || w == "off") {
+          const double v = w == "pi" ? M_PI : (w == "true" || w == "yes" || w == "on") ? 1.0 : 0.0;
+          return emit(ExpressionOp{ExpressionOp::Code::number, 0, 0, v, nullptr}, 0, 1) && no_postfix();
+        }
+        if (const FloatFunction* f = find_float_function(w)) return call(*f) && no_postfix();
+        return never();
+      }
+      case TokenKind::symbol: break;
+      default: return never();
+    }
+    const std::string_view s = text(*k);
+    ++j_;
+    if (s == "-") return unary() && emit(ExpressionOp::Code::neg, 1);
+    if (s == "+") return unary();
+    if (s == "!") return unary() && emit(ExpressionOp::Code::not_, 1);
+    if (s == "(") {
+      if (!full_level()) return false;
+      const LexedToken* close = at(j_);
+      if (!close) return false;
+      if (!is(close, ")")) return never();
+      ++j_;
+      return no_postfix();
+    }
+    if (s == "<") return vector() && no_postfix();
+    return never();
+  }
+  bool no_postfix() {   // a component selector (.x) is left to the parse
+    const LexedToken* k = at(j_);
+    if (!k) return false;
+    return is(k, ".") ? never() : true;
+  }
+  bool vector() {   // parse_vector_literal, after its '<'
+    int count = 0;
+    while (true) {
+      if (count == 5) return never();
+      if (!additive()) return false;
+      ++count;
+      const LexedToken* k = at(j_);
+      if (!k) return false;
+      if (is(k, ">")) { ++j_; break; }
+      if (is(k, ",")) {
+        ++j_;
+        const LexedToken* after = at(j_);
+        if (!after) return false;
+        if (is(after, ">")) { ++j_; break; }
+      }
+      // any other token: commas between components are optional
+    }
+    if (count < 2) return never();
+    return emit(ExpressionOp{ExpressionOp::Code::vector, static_cast<std::uint8_t>(count), 0, 0, nullptr}, count, 1);
+  }
+  bool call(const FloatFunction& f) {   // parse_call_arguments
+    const LexedToken* k = at(j_);
+    if (!k) return false;
+    if (!is(k, "(")) return never();
+    ++j_;
+    std::size_t count = 0;
+    if (f.max_args == 1) {
+      if (!full_level()) return false;
+      count = 1;
+    } else {
+      for (std::size_t i = 0; i < f.min_args; ++i) {
+        if (i > 0) {
+          const LexedToken* comma = at(j_);
+          if (!comma) return false;
+          if (is(comma, ",")) ++j_;
+        }
+        if (!additive()) return false;
+        ++count;
+      }
+      while (count < f.max_args) {
+        const LexedToken* comma = at(j_);
+        if (!comma) return false;
+        if (!is(comma, ",")) break;
+        ++j_;
+        if (!additive()) return false;
+        ++count;
+      }
+    }
+    const LexedToken* close = at(j_);
+    if (!close) return false;
+    if (!is(close, ")") || count < f.min_args) return never();
+    ++j_;
+    const auto n = static_cast<int>(count);
+    return emit(ExpressionOp{ExpressionOp::Code::call, static_cast<std::uint8_t>(count), 0, 0, &f}, n, 1);
+  }
+
+  Interpreter& in_;
+  const FileTokens& tokens_;
+  const std::string& text_;
+  std::size_t j_;
+  Result result_ = Result::done;
+  int stack_ = 0;
+  int depth_ = 0;
+};
+
+namespace {
+// What the program's run found: its value, an operand or operation it does not cover (the parse then reads
+// the expression), or values beyond floats (run again over full Numerics).
+enum class Run { value, decline, wider };
+}  // namespace
+
+bool Interpreter::run_expression_program(bool full, Numeric& out) {
+  // With a token limit every token is counted by next(); a deprecated name warns where it is read.
+  if (options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated()) return false;
+  Frame& f = frames_.back();
+  const unsigned level = full ? 1 : 0;
+  std::uint32_t note = f.tokens->note(f.index, level);
+  if (note == 0) {
+    if (!replaying()) return false;   // read once: not worth a program
+    ExpressionProgram made;
+    ProgramCompiler compiler(*this, *f.tokens, f.index);
+    if (compiler.compile(full, made) == ProgramCompiler::Result::not_yet) return false;
+    if (made.usable) {
+      programs_.push_back(made);
+      note = static_cast<std::uint32_t>(programs_.size() + 1);
+    } else {
+      note = 1;
+    }
+    f.tokens->set_note(f.index, level, note);
+  }
+  if (note == 1 || nesting_ + kProgramDepth > kMaxNesting || !nesting_room()) return false;
+  const ExpressionProgram& p = programs_[note - 2];
+  const ExpressionOp* ops = program_ops_.data() + p.first_op;
+  const ExpressionOp* const end = ops + p.op_count;
+
+  // Floats only, on a stack of doubles: what loops compute. The operations are those of the parse on one-term
+  // Numerics (componentwise() of two floats is the float operation).
+  auto floats = [&]() {
+    double st[kProgramStack];
+    int sp = 0;
+    for (const ExpressionOp* op = ops; op != end; ++op) {
+      switch (op->code) {
+        case ExpressionOp::Code::number: st[sp++] = op->number; break;
+        case ExpressionOp::Code::name: {
+          const Value* v = symbols_.find(op->name);
+          const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
+          if (!n) return Run::decline;
+          if (n->terms != 1 || n->colour) return Run::wider;
+          st[sp++] = n->v[0];
+          break;
+        }
+        case ExpressionOp::Code::neg: st[sp - 1] = -st[sp - 1]; break;
+        case ExpressionOp::Code::not_: st[sp - 1] = std::fabs(st[sp - 1]) <= kEqualEpsilon ? 1.0 : 0.0; break;
+        case ExpressionOp::Code::add: --sp; st[sp - 1] += st[sp]; break;
+        case ExpressionOp::Code::sub: --sp; st[sp - 1] -= st[sp]; break;
+        case ExpressionOp::Code::mul: --sp; st[sp - 1] *= st[sp]; break;
+        case ExpressionOp::Code::div:
+          --sp;
+          if (st[sp] == 0.0) return Run::decline;   // the parse warns
+          st[sp - 1] /= st[sp];
+          break;
+        case ExpressionOp::Code::compare:
+          --sp;
+          st[sp - 1] = compare(static_cast<Comparison>(op->arg), st[sp - 1], st[sp]) ? 1.0 : 0.0;
+          break;
+        case ExpressionOp::Code::and_:
+        case ExpressionOp::Code::or_: {
+          --sp;
+          const bool a = std::fabs(st[sp - 1]) > kEqualEpsilon, b = std::fabs(st[sp]) > kEqualEpsilon;
+          st[sp - 1] = (op->code == ExpressionOp::Code::and_ ? (a && b) : (a || b)) ? 1.0 : 0.0;
+          break;
+        }
+        case ExpressionOp::Code::vector: {
+          if (op + 1 != end) return Run::wider;   // a vector operand: the Numeric run
+          Numeric n;
+          n.terms = op->arg;
+          sp -= op->arg;
+          for (int i = 0; i < op->arg; ++i) n.v[static_cast<std::size_t>(i)] = st[sp + i];
+          out = n;
+          return Run::value;
+        }
+        case ExpressionOp::Code::call: {
+          CallArguments args;
+          sp -= op->arg;
+          for (int i = 0; i < op->arg; ++i) args.push_back(st[sp + i]);
+          const std::optional<double> r = quiet_float_call(*op->function, args);
+          if (!r) return Run::decline;
+          st[sp++] = *r;
+          break;
+        }
+      }
+    }
+    // Field by field, not through a temporary: copying a just-built Numeric stalled on store forwarding.
+    out.v[0] = st[0];
+    out.v[1] = out.v[2] = out.v[3] = out.v[4] = 0;
+    out.terms = 1;
+    out.colour = false;
+    return Run::value;
+  };
+
+  // Any Numeric, with the parse's promotion and its checks (a float where one is required).
+  auto numerics = [&]() {
+    std::array<Numeric, kProgramStack> st;
+    int sp = 0;
+    auto pop_float = [&](double& x) {
+      const Numeric& n = st[static_cast<std::size_t>(--sp)];
+      x = n.v[0];
+      return n.terms == 1;
+    };
+    for (const ExpressionOp* op = ops; op != end; ++op) {
+      Numeric* top = sp > 0 ? &st[static_cast<std::size_t>(sp - 1)] : nullptr;
+      switch (op->code) {
+        case ExpressionOp::Code::number: st[static_cast<std::size_t>(sp++)] = Numeric::scalar(op->number); break;
+        case ExpressionOp::Code::name: {
+          const Value* v = symbols_.find(op->name);
+          const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
+          if (!n) return Run::decline;
+          st[static_cast<std::size_t>(sp++)] = *n;
+          break;
+        }
+        case ExpressionOp::Code::neg:
+          for (int i = 0; i < top->terms; ++i) top->v[static_cast<std::size_t>(i)] = -top->v[static_cast<std::size_t>(i)];
+          break;
+        case ExpressionOp::Code::not_:
+          for (int i = 0; i < top->terms; ++i) {
+            double& c = top->v[static_cast<std::size_t>(i)];
+            c = std::fabs(c) <= kEqualEpsilon ? 1.0 : 0.0;
+          }
+          break;
+        case ExpressionOp::Code::add:
+        case ExpressionOp::Code::sub:
+        case ExpressionOp::Code::mul:
+        case ExpressionOp::Code::div: {
+          --sp;
+          Numeric& a = st[static_cast<std::size_t>(sp - 1)];
+          const Numeric& b = st[static_cast<std::size_t>(sp)];
+          if (op->code == ExpressionOp::Code::add) a = componentwise(a, b, std::plus<>());
+          else if (op->code == ExpressionOp::Code::sub) a = componentwise(a, b, std::minus<>());
+          else if (op->code == ExpressionOp::Code::mul) a = componentwise(a, b, std::multiplies<>());
+          else {
+            Numeric divisor = b;
+            promote(a, divisor);
+            for (int i = 0; i < a.terms; ++i)
+              if (divisor.v[static_cast<std::size_t>(i)] == 0.0) return Run::decline;   // the parse warns
+            for (int i = 0; i < a.terms; ++i) a.v[static_cast<std::size_t>(i)] /= divisor.v[static_cast<std::size_t>(i)];
+          }
+          break;
+        }
+        case ExpressionOp::Code::compare:
+        case ExpressionOp::Code::and_:
+        case ExpressionOp::Code::or_: {
+          double a = 0, b = 0;
+          if (!pop_float(b) || !pop_float(a)) return Run::decline;   // the parse's "expected a float"
+          bool r = false;
+          if (op->code == ExpressionOp::Code::compare) r = compare(static_cast<Comparison>(op->arg), a, b);
+          else {
+            const bool x = std::fabs(a) > kEqualEpsilon, y = std::fabs(b) > kEqualEpsilon;
+            r = op->code == ExpressionOp::Code::and_ ? (x && y) : (x || y);
+          }
+          st[static_cast<std::size_t>(sp++)] = Numeric::scalar(r ? 1.0 : 0.0);
+          break;
+        }
+        case ExpressionOp::Code::vector:
+        case ExpressionOp::Code::call: {
+          double c[kProgramStack];
+          for (int i = op->arg - 1; i >= 0; --i)
+            if (!pop_float(c[i])) return Run::decline;   // parse_float's "expected a float"
+          if (op->code == ExpressionOp::Code::vector) {
+            Numeric n;
+            n.terms = op->arg;
+            for (int i = 0; i < op->arg; ++i) n.v[static_cast<std::size_t>(i)] = c[i];
+            st[static_cast<std::size_t>(sp++)] = n;
+          } else {
+            CallArguments args;
+            for (int i = 0; i < op->arg; ++i) args.push_back(c[i]);
+            const std::optional<double> r = quiet_float_call(*op->function, args);
+            if (!r) return Run::decline;
+            st[static_cast<std::size_t>(sp++)] = Numeric::scalar(*r);
+          }
+          break;
+        }
+      }
+    }
+    out = st[0];
+    return Run::value;
+  };
+
+  Run r = floats();
+  if (r == Run::wider) r = numerics();
+  if (r != Run::value) return false;
+  f.index = p.end;
+  return true;
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,615 @@
+// The token stream: a stack of source frames (main file, include files, macro bodies). Directives and macro
+// calls are executed here, inside the token fetcher, so they may stand between any two tokens
+// (povray-sdl-and-geometry.md §1, items 2 and 5).
+#include <algorithm>
+#include <iostream>
+
+#include <pthread.h>
+
+#include "parser/interpreter.hpp"
+#include "parser/lexing/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested files
+constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
+}  // namespace
+
+namespace {
+// The symbol table's names for the identifiers the lexer keeps.
+struct SymbolNames final : FileTokens::NameInterner {
+  explicit SymbolNames(SymbolTable& s) : symbols(s) {}
+  std::uint64_t prepare(std::string_view name) override { return symbols.prefetch(name); }
+  std::uint32_t intern(std::string_view name, std::uint64_t hash) override { return symbols.intern(name, hash); }
+  SymbolTable& symbols;
+};
+// How far the lexer reads ahead of the token asked for, in one run of lex_quick_run: lexing is context free (the
+// grammar's tokens never depend on the parse), and what it cannot read quickly — a comment, a string, an error —
+// stops the run, so that lex_token reads it, and reports it, only when the parse reaches it.
+constexpr std::size_t kLexAhead = 256;
+}  // namespace
+
+const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
+  const SourceFile& file = tokens.file();
+  while (tokens.size() <= index) {
+    if (tokens.size() > 0 && tokens[tokens.size() - 1].kind() == TokenKind::end_of_input)
+      return tokens[tokens.size() - 1];   // the end of a file reads as the end however often it is asked for
+    if (SymbolNames names(symbols_); tokens.lex_quick_run(index + kLexAhead, names) > 0) continue;
+    if (QuickToken q; lex_quick(file, tokens.lexed_to, q)) {   // most tokens: no grammar run, no Token made
+      if (q.begin.offset + q.length > UINT32_MAX || q.length > LexedToken::kMaxLength)
+        fail(SourceLoc{file.name, q.begin.line, q.begin.column},
+             "the file is larger than 4 GB or has a token longer than 512 MB (the most povtrace reads)");
+      const std::string_view text(file.text.data() + q.begin.offset, q.length);
+      const auto length = static_cast<std::uint32_t>(q.length);
+      tokens.push_back(q.kind, q.begin, length, q.kind == TokenKind::identifier ? symbols_.intern(text) : 0, q.number);
+      tokens.lexed_to = LexPosition{q.begin.offset + q.length, q.begin.line, q.begin.column + static_cast<int>(length)};
+      continue;
+    }
+    const Token t = lex_token(file, tokens.lexed_to);   // a lexical error throws before anything is kept
+    if (t.end.offset > UINT32_MAX || t.text.size() > LexedToken::kMaxLength)
+      fail(t.loc, "the file is larger than 4 GB or has a token longer than 512 MB (the most povtrace reads)");
+    tokens.push_back(t, t.kind == TokenKind::identifier ? symbols_.intern(t.text) : 0);
+    tokens.lexed_to = t.end;
+  }
+  return tokens[index];
+}
+
+Token Interpreter::make_token(const FileTokens& tokens, const LexedToken& k) const {
+  const SourceFile& file = tokens.file();
+  const TokenKind kind = k.kind();
+  const std::uint32_t length = k.length();
+  const int column = tokens.column(k);
+  const std::string_view text(file.text.data() + k.offset, length);
+  const LexPosition begin{k.offset, k.line, column};
+  LexPosition end{k.offset + length, k.line, column + static_cast<int>(length)};
+  if (kind == TokenKind::string) {
+    // Only a string may span lines: the end is then counted from its last line break, as the lexer counts.
+    if (const auto last = text.rfind('\n'); last != std::string_view::npos) {
+      end.line += static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+      end.column = static_cast<int>(length - last);
+    }
+  }
+  return Token{kind,
+               text,
+               kind == TokenKind::number ? tokens.number(k) : 0.0,
+               SourceLoc{file.name, k.line, column},
+               begin,
+               end,
+               false,
+               kind == TokenKind::identifier ? k.payload : 0,
+               {}};
+}
+
+FileTokens& Interpreter::tokens_of(const SourceFile& file) {
+  for (const auto& t : token_stores_)
+    if (&t->file() == &file) return *t;
+  return *token_stores_.emplace_back(std::make_unique<FileTokens>(file));
+}
+
+Interpreter::Frame Interpreter::frame_for(const SourceFile& file, std::size_t index, Frame::Kind kind,
+                                          const SourceLoc& origin, std::string_view macro_name) {
+  return Frame{&file, &tokens_of(file), index, kind, origin, macro_name};
+}
+
+bool Interpreter::ahead_is(std::string_view symbol) {
+  return pushed_back_.empty() ? frame_ahead_is(symbol) : pushed_back_.back().is(symbol);
+}
+
+bool Interpreter::frame_ahead_is(std::string_view symbol) {
+  Frame& f = frames_.back();
+  const LexedToken& k = lexed(*f.tokens, f.index);
+  return (k.kind() == TokenKind::symbol || k.kind() == TokenKind::identifier) && k.length() == symbol.size() &&
+         std::string_view(f.file->text.data() + k.offset, symbol.size()) == symbol;
+}
+
+Token Interpreter::raw() {
+  while (true) {
+    Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() != TokenKind::end_of_input) {
+      ++f.index;
+      if (options_.max_tokens && ++tokens_read_ > options_.max_tokens)
+        fail(make_token(*f.tokens, k).loc, "the parse read more than " + std::to_string(options_.max_tokens) +
+                                               " tokens (the token limit of this run)");
+      if (options_.cancel && tokens_until_cancel_check_-- == 0) {
+        // Every directive of a #while loop passes here, so even a runaway loop reaches this check.
+        constexpr std::uint32_t kCancelCheckTokens = 4096;   // an atomic load per 4096 tokens costs nothing
+        tokens_until_cancel_check_ = kCancelCheckTokens;
+        if (options_.cancel->load(std::memory_order_relaxed))
+          fail(make_token(*f.tokens, k).loc, "interrupted while parsing");
+      }
+      return make_token(*f.tokens, k);
+    }
+    const Token t = make_token(*f.tokens, k);
+    if (f.kind == Frame::Kind::main) return t;
+    if (f.kind == Frame::Kind::macro)
+      fail(t.loc, "end of file inside a macro body: expected '#end'");
+    // End of an include file: its #local variables die with it (§3).
+    if (!controls_.empty() && controls_.back().frame == frames_.size() - 1)
+      fail(controls_.back().loc,
+           "this directive is not closed in its file: expected '#end' before the end of '" + *f.file->name + "'");
+    frames_.pop_back();
+    symbols_.pop_scope();
+  }
+}
+
+namespace {
+// The lowest address of the calling thread's stack (null where it cannot be known). Found once per thread:
+// for the main thread glibc reads /proc/self/maps.
+const char* stack_lowest_address() {
+#if defined(__GLIBC__)
+  thread_local const char* lowest = [] {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return static_cast<const char*>(nullptr);
+    void* address = nullptr;
+    std::size_t size = 0;
+    const bool ok = pthread_attr_getstack(&attr, &address, &size) == 0;
+    pthread_attr_destroy(&attr);
+    return ok ? static_cast<const char*>(address) : nullptr;
+  }();
+  return lowest;
+#else
+  return nullptr;
+#endif
+}
+
+// Stack kept free below the deepest nesting level: what runs between two levels, the error message and the
+// unwinding of the exception.
+constexpr std::ptrdiff_t kStackReserve = 256 * 1024;
+}  // namespace
+
+// The level count makes the limit the same everywhere; the stack check is the safety net for builds with much
+// larger frames (sanitizers, -O0) and for threads with small stacks, where 500 levels may not fit.
+Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(in) {
+  ++in_.nesting_;
+  const char* lowest = stack_lowest_address();
+  const char* here = static_cast<const char*>(__builtin_frame_address(0));
+  const bool stack_full = lowest && here - lowest < kStackReserve;
+  if (in_.nesting_ > kMaxNesting || stack_full) {
+    const int levels = in_.nesting_;
+    --in_.nesting_;   // the destructor does not run when the constructor throws
+    in_.fail_at(at, "expressions or blocks nested too deeply (" +
+                        (stack_full ? "the stack is full at " + std::to_string(levels) + " levels"
+                                    : "more than " + std::to_string(kMaxNesting) + " levels") +
+                        ")");
+  }
+}
+
+bool Interpreter::is_macro_call(const Token& t) const {
+  const Value* v = lookup(t);
+  return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
+}
+
+const Value* Interpreter::lookup(const Token& t) const {
+  if (t.element) return &t.element->value;
+  if (t.kind != TokenKind::identifier || reserved(t)) return nullptr;
+  return t.name ? symbols_.find(t.name) : symbols_.find(t.text);
+}
+
+Token Interpreter::next() {
+  while (true) {
+    // A directive may itself look ahead and push a token back: that token comes first, before reading on.
+    // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks; tokens put
+    // back after next() are, and are not processed twice (no second deprecation warning).
+    // Constructed from its source, not default-constructed and assigned: zero-filling a Token first was a
+    // quarter of this function's time.
+    if (pushed_back_.empty() && quick_directive()) continue;
+    Token t = pushed_back_.empty() ? raw() : pop_pushed_back();
+    if (t.processed) return t;
+    // A directive or macro call reads its operands with next(), which may run another directive or call before
+    // the first one returns (`#declare A = #declare B = …`, `M(M(M(…)))`): they nest like expressions.
+    if (t.is("#")) {
+      const NestingGuard guard(*this, t);
+      directive(t);
+      continue;
+    }
+    if (t.kind == TokenKind::identifier && !reserved(t)) {
+      const Value* v = t.name ? symbols_.find(t.name) : symbols_.find(t.text);
+      if (v && std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
+        const NestingGuard guard(*this, t);
+        invoke_macro(t);
+        continue;
+      }
+      if (v) process_identifier(t, v);
+    }
+    t.processed = true;
+    return t;
+  }
+}
+
+bool Interpreter::quick_directive() {
+  if (options_.max_tokens || !nesting_room()) return false;
+  Frame& f = frames_.back();
+  const LexedToken& hash = lexed(*f.tokens, f.index);
+  if (!plain_symbol(&hash, '#')) return false;
+  FileTokens& tokens = *f.tokens;
+  const std::size_t word_index = f.index + 1;
+  const LexedToken& word = lexed(tokens, word_index);
+  if (word.kind() != TokenKind::identifier) return false;
+  const bool declare = word.payload == word_declare_, local = word.payload == word_local_;
+  if (!declare && !local && word.payload != word_end_) return false;
+  // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
+  // cancel check; where it is due, raw() makes it.
+  const std::uint32_t counted = declare || local ? 1 : 2;
+  if (options_.cancel) {
+    if (tokens_until_cancel_check_ < counted) return false;
+    tokens_until_cancel_check_ -= counted;
+  }
+  // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
+  if (between_statements_ && nesting_ == 0 && frames_.size() == 1 && controls_.empty()) tokens.release_before(f.index);
+  f.index = word_index + 1;
+  // next()'s NestingGuard, which nesting_room() has just let in.
+  ++nesting_;
+  struct Leave {
+    int& nesting;
+    ~Leave() { --nesting; }
+  } leave{nesting_};
+  if (declare || local) {
+    directive_declare(local);
+    return true;
+  }
+  // #end: the round of a #while loop and the end of an #if without a Token; the rest as directive_end does it.
+  if (!controls_.empty()) {
+    const Control& c = controls_.back();
+    if (c.kind == Control::Kind::if_branch) {
+      controls_.pop_back();
+      return true;
+    }
+    if (c.kind == Control::Kind::while_loop && frames_.size() - 1 == c.frame) {
+      const Control loop = c;
+      seek(loop.frame, loop.resume);
+      if (condition_in_parens()) return true;
+      controls_.pop_back();
+      Token opener = make_token(tokens, tokens[word_index]);
+      opener.text = "while";
+      skip_branch(opener, false);
+      return true;
+    }
+  }
+  directive_end(make_token(tokens, tokens[word_index]));
+  return true;
+}
+
+void Interpreter::process_identifier(Token& t, const Value* v) {
+  if (symbols_.any_deprecated())
+    if (auto* d = symbols_.deprecation(std::string(t.text)); d && !d->shown) {
+      if (d->once) d->shown = true;
+      warn(t.loc, d->message);
+    }
+  // POV-Ray resolves `A[i]…` where it reads the name (Read_Symbol): the token then stands for the element, so
+  // every place that takes an identifier of some type takes an element of that type.
+  while (const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v)) {
+    if (!ahead_is("[")) return;
+    const std::shared_ptr<ArrayValue> keep = *array;   // the subscripts may run code that reassigns the name
+    Token last = t;
+    const std::size_t index = parse_subscripts(*keep, std::string(t.text), last);
+    const auto& element = keep->elements[index];
+    if (last.loc.file == t.loc.file && last.end.offset > t.begin.offset)
+      t.text = std::string_view(t.text.data(), last.end.offset - t.begin.offset);
+    if (!element)
+      fail_at(t, "the array element " + std::string(t.text) + " is read before any value was assigned to it");
+    t.element = std::make_shared<const TokenValue>(TokenValue{*element});
+    v = &t.element->value;
+  }
+}
+
+const Token& Interpreter::peek_raw() {
+  while (true) {
+    // The token looked at stays in pushed_back_ (it is called after every operand: no pop and push again).
+    if (pushed_back_.empty()) pushed_back_.push_back(raw());
+    const Token& t = pushed_back_.back();
+    // The #end of the running macro is exempt (POV-Ray checks it first): it returns, and the look goes on in
+    // the caller. A `#` comes back raw, so the frame still stands just after it.
+    if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
+        controls_.back().frame == frames_.size() - 1) {
+      Frame& f = frames_.back();
+      const LexedToken& k = lexed(*f.tokens, f.index);
+      const std::string_view text(f.file->text.data() + k.offset, k.length());
+      if (k.kind() == TokenKind::identifier && text == "end") {
+        const Token word = make_token(*f.tokens, k);
+        pushed_back_.pop_back();
+        ++f.index;
+        directive_end(word);
+        continue;
+      }
+    }
+    return t;
+  }
+}
+
+const Token& Interpreter::peek() {
+  pushed_back_.push_back(next());
+  return pushed_back_.back();
+}
+
+Interpreter::Ahead Interpreter::raw_ahead_full() {
+  // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
+  // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
+  // follows in the caller when that is plain.
+  while (pushed_back_.empty() && !options_.max_tokens && !controls_.empty() &&
+         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == frames_.size() - 1) {
+    Frame& f = frames_.back();
+    if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
+    const LexedToken& word = lexed(*f.tokens, f.index + 1);
+    if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
+    if (options_.cancel) {   // raw() reads the '#' and the word; where the cancel check is due, it makes it
+      if (tokens_until_cancel_check_ < 2) break;
+      tokens_until_cancel_check_ -= 2;
+    }
+    return_from_macro();   // directive_end of a macro call in its own frame
+    Frame& caller = frames_.back();
+    const LexedToken& k = lexed(*caller.tokens, caller.index);
+    if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
+  }
+  const Token& raw_look = peek_raw();   // a frame ends or a directive may follow: the full look
+  if (!raw_operator_look_ && raw_look.is("#")) {
+    // Outside the contexts of RawOperatorLook the directive runs now, as POV-Ray's Get_Token runs it, and the
+    // look goes on after it: next() takes the '#' peek_raw() left pushed back and runs its directive.
+    const Token& t = peek();
+    return {t.kind, t.text};
+  }
+  return {raw_look.kind, raw_look.text};
+}
+
+const LexedToken* Interpreter::plain_ahead() {
+  if (!pushed_back_.empty()) return nullptr;
+  const Frame& f = frames_.back();
+  const LexedToken& k = lexed(*f.tokens, f.index);
+  switch (k.kind()) {
+    case TokenKind::number:
+    case TokenKind::string: return &k;
+    case TokenKind::symbol: return plain_symbol(&k, '#') ? nullptr : &k;
+    case TokenKind::identifier: {
+      if (symbols_.is_reserved(k.payload)) return &k;
+      if (symbols_.any_deprecated()) return nullptr;
+      const Value* v = symbols_.find(k.payload);
+      if (v && (std::holds_alternative<Boxed<MacroDefinition>>(*v) ||
+                std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)))
+        return nullptr;
+      return &k;
+    }
+    case TokenKind::end_of_input: break;
+  }
+  return nullptr;
+}
+
+void Interpreter::consume_plain() {
+  if (options_.max_tokens) {   // next() counts it and reports the limit as everywhere else
+    next();
+    return;
+  }
+  ++frames_.back().index;
+}
+
+void Interpreter::skip_ahead() {
+  if (pushed_back_.empty()) consume_plain();
+  else pushed_back_.pop_back();   // a symbol, which next() would return as it is
+}
+
+void Interpreter::skip_expected(char symbol, std::string_view context) {
+  if (plain_symbol(plain_ahead(), symbol)) consume_plain();
+  else expect(std::string_view(&symbol, 1), context);
+}
+
+bool Interpreter::nesting_room() const {
+  const char* lowest = stack_lowest_address();
+  const char* here = static_cast<const char*>(__builtin_frame_address(0));
+  return nesting_ < kMaxNesting && !(lowest && here - lowest < kStackReserve);
+}
+
+bool Interpreter::fast_operand(Numeric& out) {
+  // The token limit is counted by next() alone; a component selector (.x) goes through parse_postfix.
+  if (options_.max_tokens || !nesting_room()) return false;
+  const LexedToken* k = plain_ahead();
+  if (!k) return false;
+  Frame& f = frames_.back();
+  if (k->kind() == TokenKind::number) {
+    out = Numeric::scalar(f.tokens->number(*k));
+  } else if (k->kind() == TokenKind::identifier && !symbols_.is_reserved(k->payload)) {
+    const Value* v = symbols_.find(k->payload);
+    const Numeric* n = v ? std::get_if<Numeric>(v) : nullptr;
+    if (!n) return false;   // undeclared, or no number: parse_primary says what it is
+    out = *n;
+  } else {
+    return false;
+  }
+  ++f.index;
+  if (raw_ahead().is(".")) out = parse_postfix(out);
+  return true;
+}
+
+Token Interpreter::expect(std::string_view symbol, std::string_view context) {
+  Token t = next();
+  if (!t.is(symbol)) fail_expected(t, "'" + std::string(symbol) + "'" + std::string(context));
+  return t;
+}
+
+bool Interpreter::accept(std::string_view symbol) {
+  // A plain token ahead is looked at where it stands: no Token made, none pushed back.
+  if (const LexedToken* k = plain_ahead()) {
+    if ((k->kind() != TokenKind::symbol && k->kind() != TokenKind::identifier) || text_of(*k) != symbol)
+      return false;
+    consume_plain();
+    return true;
+  }
+  Token t = next();
+  if (t.is(symbol)) return true;
+  unget(t);
+  return false;
+}
+
+std::string Interpreter::expect_identifier_raw(std::string_view context) {
+  Token t = raw();
+  if (t.kind != TokenKind::identifier) fail_expected(t, std::string("an identifier ") + std::string(context));
+  if (reserved(t))
+    fail_at(t, "'" + std::string(t.text) + "' is a reserved word and cannot be used as an identifier " +
+                   std::string(context));
+  return std::string(t.text);
+}
+
+const SourceFile& Interpreter::file_of(const SourceLoc& loc) const {
+  for (const auto& f : files_)
+    if (f->name == loc.file || (loc.file && *f->name == *loc.file)) return *f;
+  return *files_.front();
+}
+
+void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
+  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
+}
+
+std::string Interpreter::reached_from() const {
+  // Runaway recursion can stack hundreds of frames: the innermost and outermost levels say enough.
+  constexpr std::size_t kInner = 10, kOuter = 5;
+  const std::size_t levels = frames_.empty() ? 0 : frames_.size() - 1;
+  std::string out;
+  for (std::size_t k = 0; k < levels; ++k) {
+    if (levels > kInner + kOuter + 1 && k == kInner) {
+      out += "\n  ... " + std::to_string(levels - kInner - kOuter) + " more levels ...";
+      k = levels - kOuter - 1;
+      continue;
+    }
+    const Frame& f = frames_[frames_.size() - 1 - k];
+    if (!out.empty()) out += '\n';
+    if (f.kind == Frame::Kind::macro)
+      out += "  in macro " + std::string(f.macro_name) + " called from " + f.origin.to_string();
+    else
+      out += "  included from " + f.origin.to_string();
+  }
+  return out;
+}
+
+void Interpreter::fail_at(const Token& t, const std::string& message) const { fail(t.loc, message); }
+
+std::string Interpreter::describe(const Token& t) const {
+  switch (t.kind) {
+    case TokenKind::end_of_input: return "the end of the file";
+    case TokenKind::number: return "the number " + std::string(t.text);
+    case TokenKind::string: return "the string " + std::string(t.text);
+    case TokenKind::identifier:
+      if (reserved(t)) return "the keyword '" + std::string(t.text) + "'";
+      if (const Value* v = lookup(t))
+        return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
+      return "the undeclared identifier '" + std::string(t.text) + "'";
+    case TokenKind::symbol: return "'" + std::string(t.text) + "'";
+  }
+  return "?";
+}
+
+void Interpreter::fail_expected(const Token& t, std::string_view expected) const {
+  fail_at(t, "expected " + std::string(expected) + ", found " + describe(t));
+}
+
+void Interpreter::fail_unsupported(const Token& t, std::string_view what) const {
+  fail_at(t, "unsupported: " + std::string(what) + " is a POV-Ray feature that povtrace does not render yet");
+}
+
+void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
+  std::string text = format_diagnostic(loc, "warning", message, file_of(loc).line_text(loc.line));
+  if (const std::string chain = reached_from(); !chain.empty()) text += "\n" + chain;
+  if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
+}
+
+void Interpreter::seek(std::size_t frame, std::size_t index) {
+  frames_.resize(frame + 1);
+  frames_.back().index = index;
+  pushed_back_.clear();
+}
+
+void Interpreter::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
+  const auto includes = std::count_if(frames_.begin(), frames_.end(),
+                                      [](const Frame& f) { return f.kind == Frame::Kind::include; });
+  if (static_cast<std::size_t>(includes) >= kMaxIncludeDepth)
+    fail_at(at, "too many nested #include files (at most " + std::to_string(kMaxIncludeDepth) +
+                    "; does a file include itself?)");
+  auto file = std::make_unique<SourceFile>();
+  file->path = path;
+  file->name = std::make_shared<const std::string>(path.string());
+  try {
+    file->text = read_text_file(path);
+  } catch (const std::exception& e) {
+    fail_at(at, e.what());
+  }
+  frames_.push_back(frame_for(*file, 0, kind, at.loc, {}));
+  files_.push_back(std::move(file));
+  symbols_.push_scope();
+}
+
+// A macro call: arguments are bound in a new symbol table, then the body's tokens continue the stream until
+// its #end, which returns to just after the call's ')' (§1 item 4, §4 #macro).
+void Interpreter::invoke_macro(const Token& name) {
+  // The shared definition, not a copy: a call needs no allocation for it (and keeps it alive should the call
+  // redefine the macro).
+  const Boxed<MacroDefinition> boxed = std::get<Boxed<MacroDefinition>>(*lookup(name));
+  const MacroDefinition& macro = *boxed;
+  const auto calls = std::count_if(frames_.begin(), frames_.end(),
+                                   [](const Frame& f) { return f.kind == Frame::Kind::macro; });
+  if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
+    fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
+                      " levels: runaway recursion in '" + std::string(name.text) + "'?)");
+  // Checked here rather than with expect(): its message would be built on every call. A plain '(' is taken
+  // where it stands.
+  if (plain_symbol(plain_ahead(), '(')) consume_plain();
+  else if (const Token open = next(); !open.is("("))
+    fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
+  // The values go on a stack kept by the interpreter (a call allocates nothing for them); a call in an argument
+  // pushes its own above them and takes them off again.
+  const std::size_t base = macro_arguments_.size();
+  struct Unwind {
+    std::vector<std::pair<SymbolTable::NameId, Value>>& stack;
+    std::size_t base;
+    ~Unwind() { stack.resize(base); }
+  } unwind{macro_arguments_, base};
+  for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
+    if (i > 0) accept(",");
+    // The common argument, a declared variable's name alone, read from the kept tokens: what the lines below
+    // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
+    if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
+                                             !symbols_.is_reserved(k->payload)) {
+      Frame& f = frames_.back();
+      const LexedToken& after = lexed(*f.tokens, f.index + 1);
+      if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
+        if (const auto level = symbols_.level_of(k->payload)) {
+          ++f.index;
+          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, k->payload});
+          continue;
+        }
+    }
+    Token first = next();
+    // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
+    // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
+    // of that macro must not run, and drop its locals, before `first` is evaluated.
+    if (first.kind == TokenKind::identifier && !first.element && !reserved(first)) {
+      const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
+      auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
+      if (level && alone) {
+        macro_arguments_.emplace_back(
+            macro.parameter_ids[i],
+            Alias{*level, first.name ? first.name : symbols_.id_of(first.text)});
+        continue;
+      }
+    }
+    std::optional<Value> value;
+    {
+      const RawOperatorLook raw_look(*this);   // POV-Ray's Ok_To_Declare is off in a macro's arguments
+      value = try_parse_rvalue(first);
+    }
+    if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
+    macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
+  }
+  if (plain_symbol(plain_ahead(), ')')) consume_plain();
+  else if (Token close = next(); !close.is(")"))
+    fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
+                             std::to_string(macro.parameters.size()) + " parameters)");
+  symbols_.push_scope();
+  for (std::size_t i = base; i < macro_arguments_.size(); ++i)
+    symbols_.bind(macro_arguments_[i].first, std::move(macro_arguments_[i].second));
+  frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
+  Control c;
+  c.kind = Control::Kind::macro_call;
+  c.frame = frames_.size() - 1;
+  c.loc = name.loc;
+  controls_.push_back(c);
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,296 @@
+// camera { } and light_source { } (povray-pixel-pipeline.md §1 and §3).
+#include <cmath>
+
+#include "scene/description_transforms.hpp"
+#include "parser/interpreter.hpp"
+#include "parser/lexing/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+struct CameraInput {
+  Camera camera;
+  Vec3 sky{0, 1, 0};
+  std::optional<Vec3> look_at;
+  std::optional<double> angle;
+  bool up_given = false, right_given = false;
+  bool planar = true;   // perspective or orthographic: `angle` sets the direction's length
+  Matrix transform;
+};
+
+// POV-Ray's fixed order of application, whatever the textual order (§1): vectors as given; then angle; then
+// look_at; then the orthographic resize; finally the camera's own transforms.
+Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
+  Camera c = in.camera;
+  if (in.angle && *in.angle > 0 && in.planar) {   // POV-Ray applies an angle of 0 as no angle
+    const double a = *in.angle * M_PI / 180.0;
+    c.direction = normalize(c.direction) * (length(c.right) / (2.0 * std::tan(a / 2.0)));
+  }
+  if (in.angle && !in.planar) c.angle = *in.angle;   // the other projections read it as it is
+  if (in.look_at) {
+    const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
+    const double handedness = dot(cross(c.up, c.direction), c.right);
+    const Vec3 d = normalize(*in.look_at - c.location);
+    Vec3 r = cross(in.sky, d);
+    if (length(r) < 1e-10) {
+      warn("camera look_at is parallel to sky: the previous 'right' is kept");
+      r = normalize(c.right);
+    } else {
+      r = normalize(r);
+    }
+    const Vec3 u = cross(d, r);
+    c.direction = d * dl;
+    c.right = r * (handedness > 0 ? rl : -rl);
+    c.up = u * ul;
+  }
+  const bool angle_applied = in.angle && *in.angle > 0;
+  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || angle_applied)) {
+    const Vec3 target = in.look_at.value_or(Vec3{0, 0, 1});
+    const double k = length(target - c.location) / length(c.direction);
+    c.right = c.right * k;
+    c.up = c.up * k;
+  }
+  c.location = in.transform.point(c.location);
+  c.direction = in.transform.vector(c.direction);
+  c.up = in.transform.vector(c.up);
+  c.right = in.transform.vector(c.right);
+  return c;
+}
+}  // namespace
+
+// The projection keywords of camera { }; `cylinder N` takes its type number (1 to 4, else POV-Ray's error).
+std::optional<Projection> Interpreter::try_camera_type(const Token& t) {
+  static const std::pair<std::string_view, Projection> types[] = {
+      {"perspective", Projection::perspective}, {"orthographic", Projection::orthographic},
+      {"fisheye", Projection::fisheye},         {"ultra_wide_angle", Projection::ultra_wide_angle},
+      {"omnimax", Projection::omnimax},         {"panoramic", Projection::panoramic},
+      {"spherical", Projection::spherical}};
+  for (const auto& [name, type] : types)
+    if (t.is(name)) return type;
+  if (!t.is("cylinder")) return std::nullopt;
+  const Token at = peek();
+  switch (static_cast<int>(parse_float())) {
+    case 1: return Projection::cylinder1;
+    case 2: return Projection::cylinder2;
+    case 3: return Projection::cylinder3;
+    case 4: return Projection::cylinder4;
+    default: fail_at(at, "invalid cylinder camera type, valid are types 1 to 4 (as in POV-Ray)");
+  }
+}
+
+Camera Interpreter::parse_camera(const Token& keyword) {
+  expect("{", " after 'camera'");
+  CameraInput in;
+  in.camera.loc = keyword.loc;
+  std::optional<Token> angle_at, look_at_at;
+  bool spherical = false;
+  Token t = next();
+  if (const Value* v = lookup(t)) {
+    if (v && std::holds_alternative<Boxed<Camera>>(*v)) {
+      in.camera = *std::get<Boxed<Camera>>(*v);
+      t = next();
+      // POV-Ray 3.5 and later (Parse_Camera's only_mods): a declared camera is final; only transforms may follow,
+      // applied to it as they are (its angle, look_at and orthographic resize are not applied a second time).
+      if (scene_.language_version >= 350) return parse_camera_transforms(in.camera, t);
+    }
+  }
+  while (!t.is("}")) {
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (const std::optional<Projection> type = try_camera_type(t)) {
+      in.camera.projection = *type;
+      in.planar = *type == Projection::perspective || *type == Projection::orthographic;
+      spherical = *type == Projection::spherical;
+    }
+    else if (k == "location") in.camera.location = parse_vector();
+    else if (k == "direction") in.camera.direction = parse_vector();
+    else if (k == "up") { in.camera.up = parse_vector(); in.up_given = true; }
+    else if (k == "right") { in.camera.right = parse_vector(); in.right_given = true; }
+    else if (k == "sky") in.sky = parse_vector();
+    else if (k == "look_at") {
+      look_at_at = t;
+      in.look_at = parse_vector();
+    }
+    else if (k == "angle") {
+      // Negative angles are refused at once; the 180° limit only holds for perspective and orthographic cameras
+      // (fisheye and the others take up to 360°), checked once the projection is known.
+      in.angle = parse_float();
+      if (*in.angle < 0) fail_at(t, "the camera angle must not be negative");
+      angle_at = t;
+      // A spherical camera takes a horizontal and an optional vertical angle (`angle 360, 180`); the vertical one
+      // defaults to half the horizontal one (POV-Ray's Parse_Camera).
+      if (spherical) {
+        in.camera.h_angle = *in.angle;
+        in.camera.v_angle = *in.angle * 0.5;
+        in.angle.reset();
+        accept(",");
+        const Token v = peek();
+        const Value* id = lookup(v);
+        if (v.kind == TokenKind::number || v.is("(") || v.is("-") || v.is("+") ||
+            (id && std::holds_alternative<Numeric>(*id))) {
+          in.camera.v_angle = parse_float();
+          if (in.camera.v_angle < 0) fail_at(v, "the vertical camera angle must not be negative");
+        }
+      }
+    } else if (!try_transform(t, in.transform)) {
+      if (k == "mesh_camera") {
+        in.planar = false;
+        spherical = false;
+      }
+      if (k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
+          k == "normal" || k == "confidence" || k == "variance") {
+        taint(in.camera.unsupported, skip_unsupported(t, "the camera item '" + std::string(k) + "'"));
+        t = next();
+        continue;
+      }
+      fail_expected(t, "a camera item (perspective, orthographic, location, look_at, right, up, direction, sky, "
+                       "angle, translate, rotate, scale, matrix) or '}'");
+    }
+    t = next();
+  }
+  if (in.angle && in.planar && *in.angle >= 180)
+    fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
+  // POV-Ray's Parse_Camera refuses a look_at whose squared distance from the location is below EPSILON (1e-10),
+  // an absolute test: a camera 1e-6 times the usual size fails it.
+  if (options_.povray_tolerances && in.look_at) {
+    const Vec3 d = *in.look_at - in.camera.location;
+    if (dot(d, d) < 1e-10) fail_at(*look_at_at, "Camera location and look_at point must be different.");
+  }
+  return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
+}
+
+// The transforms after a declared camera's identifier, up to the closing '}' (`t` is the first token after the
+// identifier).
+Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
+  Matrix transform;
+  while (!t.is("}")) {
+    if (!try_transform(t, transform))
+      fail_expected(t, "a transform (translate, rotate, scale, matrix, transform) or '}': after a declared camera "
+                       "POV-Ray 3.5 and later take only transforms");
+    t = next();
+  }
+  camera.location = transform.point(camera.location);
+  camera.direction = transform.vector(camera.direction);
+  camera.up = transform.vector(camera.up);
+  camera.right = transform.vector(camera.right);
+  return camera;
+}
+
+void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_light(light, m); }
+
+bool Interpreter::try_light_modifier(const Token& t, Light& light) {
+  Matrix m;
+  if (try_transform(t, m)) { apply_transform(light, m); return true; }
+  const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+  if (k == "color" || k == "colour" || k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft") {
+    unget(t);
+    light.colour = parse_colour();
+  } else if (k == "spotlight") {
+    // As for `cylinder`, the keyword sets the kind's defaults (a radius written before it is an error in POV-Ray).
+    light.spotlight = true;
+    light.cylinder = false;
+    light.radius = 30.0;
+    light.falloff = 45.0;
+    light.tightness = 0.0;
+  }
+  else if (k == "cylinder") {
+    // POV-Ray's defaults for a cylindrical light are set by the keyword itself.
+    light.cylinder = true;
+    light.spotlight = false;
+    light.radius = 0.75;
+    light.falloff = 1.0;
+    light.tightness = 0.0;
+  } else if (k == "looks_like") parse_looks_like(t, light);
+  else if (k == "parallel") light.parallel = true;
+  else if (k == "shadowless") light.shadowless = true;
+  else if (k == "point_at") light.point_at = parse_vector();
+  else if (k == "radius") light.radius = parse_float();
+  else if (k == "falloff") light.falloff = parse_float();
+  else if (k == "tightness") light.tightness = parse_float();
+  else if (k == "fade_distance") light.fade_distance = parse_float();
+  else if (k == "fade_power") light.fade_power = parse_float();
+  else if (k == "area_light") parse_area_light(t, light);
+  else if (k == "adaptive") light.adaptive = static_cast<int>(parse_float());
+  else if (k == "jitter") light.jitter = true;
+  else if (k == "circular" || k == "orient") {
+    (k == "circular" ? light.circular : light.orient) = true;
+    if (!light.area) warn(t.loc, "'" + std::string(k) + "' only affects an area_light");
+  } else if (k == "projected_through" || k == "media_interaction" ||
+             k == "media_attenuation" || k == "photons" || k == "area_illumination")
+    taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
+  else return false;
+  return true;
+}
+
+// looks_like { object modifiers }: the object is moved to the light's location as it is at this point, then takes
+// the modifiers written after it, and every later transform of the light (POV-Ray's Parse_Light_Source). It casts
+// no shadow.
+void Interpreter::parse_looks_like(const Token& keyword, Light& light) {
+  const NestingGuard guard(*this, keyword);
+  if (!light.looks_like.empty()) fail_at(keyword, "a light_source has at most one looks_like object");
+  expect("{", " after 'looks_like'");
+  const Token first = next();
+  auto item = try_parse_item(first);
+  if (!item || !std::holds_alternative<Object>(*item)) fail_expected(first, "an object in looks_like { }");
+  Object object = std::move(std::get<Object>(*item));
+  apply_transform(object, Matrix::translation(light.location));
+  parse_object_modifiers(object);
+  object.no_shadow = true;
+  light.looks_like.push_back(std::move(object));
+}
+
+// area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's
+// Parse_Light_Source); a negative size is refused here too, as it would give no samples at all.
+void Interpreter::parse_area_light(const Token& keyword, Light& light) {
+  (void)keyword;
+  light.area = true;
+  light.axis1 = parse_vector();
+  accept(",");
+  light.axis2 = parse_vector();
+  accept(",");
+  auto size = [this] {
+    const Token at = peek();
+    const double n = parse_float();
+    if (!(n >= 1.0)) fail_at(at, "an area_light size must be at least 1");
+    if (n > 1e6) fail_at(at, "an area_light size must be at most 1000000");
+    return static_cast<int>(n);
+  };
+  light.size1 = size();
+  accept(",");
+  const Token second = peek();
+  light.size2 = size();
+  // Each shading point keeps one result per sample: a bound keeps that memory sane.
+  if (static_cast<double>(light.size1) * light.size2 > 1e6)
+    fail_at(second, "an area_light may have at most 1000000 samples (size1 × size2)");
+}
+
+Light Interpreter::parse_light(const Token& keyword) {
+  expect("{", " after 'light_source'");
+  Light light;
+  light.loc = keyword.loc;
+  Token t = next();
+  bool copied = false;
+  if (const Value* v = lookup(t)) {
+    if (v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v) &&
+        std::holds_alternative<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v))) {
+      light = std::get<Light>(*std::get<std::shared_ptr<const SceneItem>>(*v));
+      copied = true;
+      t = next();
+    }
+  }
+  if (!copied) {
+    unget(t);
+    light.location = parse_vector();
+    accept(",");
+    light.colour = parse_colour();
+    t = next();
+  }
+  while (!t.is("}")) {
+    if (!try_light_modifier(t, light))
+      fail_expected(t, "a light_source item (color, spotlight, parallel, shadowless, point_at, radius, falloff, "
+                       "tightness, fade_distance, fade_power, a transform) or '}'");
+    t = next();
+  }
+  return light;
+}
+
+}  // namespace povtrace::sdl

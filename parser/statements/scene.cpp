@@ -1,0 +1,464 @@
+// Top-level statements, global settings, #default, right-hand values, and the entry points.
+#include <iostream>
+
+#include "parser/expressions/int_cast.hpp"
+#include "parser/interpreter.hpp"
+#include "parser/lexing/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
+  default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
+}
+
+SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
+  update_noise_generator_cell();
+  frames_.push_back(frame_for(*main_file, 0, Frame::Kind::main, {}, {}));
+  files_.push_back(std::move(main_file));
+  // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
+  const std::pair<const char*, double> predeclared[] = {
+      {"image_width", options_.image_width}, {"image_height", options_.image_height}, {"clock_delta", 0},
+      {"final_clock", 0}, {"final_frame", 0}, {"frame_number", 0}, {"initial_clock", 0}, {"initial_frame", 0}};
+  for (const auto& [name, value] : predeclared) symbols_.declare(name, Numeric::scalar(value));
+  for (const auto& [name, value] : options_.declares) symbols_.declare(name, Numeric::scalar(value));
+
+  try {
+    while (true) {
+      between_statements_ = true;
+      Token t = next();
+      between_statements_ = false;
+      if (t.kind == TokenKind::end_of_input) break;
+      parse_statement(t);
+    }
+  } catch (const ParseError& e) {
+    // Errors from below the interpreter (the lexer: an unterminated string in an include file) get the chain of
+    // includes and macro calls that fail() gives the others; the frame stack is still as it was at the throw.
+    if (!e.context().empty() || frames_.size() < 2) throw;
+    throw ParseError(e, reached_from());
+  }
+  if (!controls_.empty()) {
+    const Control& open = controls_.back();
+    fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
+  }
+  update_noise_generator_cell();
+  return std::move(scene_);
+}
+
+void Interpreter::parse_statement(const Token& t) {
+  statement_seen_ = true;
+  const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+  if (k == "camera") {
+    scene_.camera = parse_camera(t);
+    refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
+    camera_seen_ = true;
+    return;
+  }
+  if (k == "global_settings") return parse_global_settings(t);
+  if (k == "default") {   // the pre-3.0 spelling of #default, still accepted by POV-Ray
+    warn(t.loc, "'default' without '#' is an old form of #default");
+    return parse_default(t);
+  }
+  if (k == "background") return parse_background(t);
+  if (k == "sky_sphere") {
+    if (scene_.sky_sphere) warn(t.loc, "only one sky_sphere is used: this one replaces the earlier one");
+    SkySphere sky = parse_sky_sphere(t);
+    refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
+    scene_.sky_sphere = std::move(sky);
+    return;
+  }
+  if (k == "object") return place_object_block(t);
+  if (auto item = try_parse_item(t)) {
+    if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
+    else place_object(std::move(std::get<Object>(*item)), t.loc);
+    return;
+  }
+  if (k == "fog") {
+    // POV-Ray keeps fogs in a list, the newest first.
+    scene_.fogs.insert(scene_.fogs.begin(), parse_fog(t));
+    return;
+  }
+  static const std::string_view unsupported[] = {"media", "rainbow", "photons", "radiosity"};
+  for (auto u : unsupported)
+    if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
+  if (k == "declare" || k == "include" || k == "version")
+    fail_at(t, "'" + std::string(k) + "' must be written as a directive: '#" + std::string(k) + "'");
+  if (t.is(";")) fail_at(t, "unexpected ';' (a ';' only ends #declare, #local and #version values)");
+  fail_expected(t, "an object, light_source, camera, background, global_settings or a directive");
+}
+
+void Interpreter::parse_global_settings(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after 'global_settings'");
+  while (true) {
+    Token t = next();
+    if (t.is("}")) return;
+    const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (k == "assumed_gamma") {
+      scene_.settings.assumed_gamma = parse_float();
+      if (*scene_.settings.assumed_gamma <= 0) fail_at(t, "assumed_gamma must be positive");
+    } else if (k == "ambient_light") {
+      Colour c = parse_colour();
+      scene_.settings.ambient_light = Colour{c.r, c.g, c.b, 0, 0};
+    } else if (k == "max_trace_level") {
+      // Clamped to 1…256 (pipeline §4 "Recursion limits").
+      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(parse_float()), 1, 256);
+    } else if (k == "adc_bailout") {
+      scene_.settings.adc_bailout = parse_float();
+    } else if (k == "noise_generator") {
+      // 1 (original), 2 (range-corrected) or 3 (Perlin's); POV-Ray truncates the value and refuses the rest.
+      const Token value_at = peek();
+      const double g = std::trunc(parse_float());
+      if (!(g >= 1 && g <= 3)) fail_at(value_at, "Value for noise_generator in global_settings must be 1, 2, or 3.");
+      scene_.settings.noise_generator = static_cast<int>(g);
+      update_noise_generator_cell();
+    } else if (k == "charset") {
+      // ascii or utf8 (sys is refused): how text { } turns strings into characters and picks a character map.
+      const Token c = next();
+      if (c.is("sys")) fail_unsupported(c, "the global setting 'charset sys'");
+      if (!c.is("ascii") && !c.is("utf8")) fail_expected(c, "ascii, utf8 or sys after 'charset'");
+      string_encoding_ = c.is("utf8") ? ttf::StringEncoding::utf8 : ttf::StringEncoding::ascii;
+    } else if (k == "number_of_waves") {
+      // POV-Ray truncates it and makes a value below 1 into 1 with a warning.
+      const Token value_at = peek();
+      const double n = std::trunc(parse_float());
+      if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
+      scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
+      if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+    } else if (k == "hf_gray_16") {
+      // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
+      // option there).
+      optional_float(1.0);
+      warn(t.loc, "In POV-Ray 3.7 and later 'hf_gray_16' has to be specified as an option on the command-line; "
+                  "the 'hf_gray_16' setting here is ignored (as in POV-Ray).");
+    } else if (!k.empty() && is_reserved_word(k)) {
+      fail_unsupported(t, "the global setting '" + std::string(k) + "'");
+    } else {
+      fail_expected(t, "assumed_gamma, ambient_light, max_trace_level, adc_bailout or '}'");
+    }
+  }
+}
+
+void Interpreter::parse_background(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after 'background'");
+  scene_.background = parse_colour();
+  expect("}", " after the background colour");
+}
+
+// #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
+void Interpreter::parse_default(const Token& keyword) {
+  (void)keyword;
+  expect("{", " after #default");
+  while (true) {
+    Token t = next();
+    if (t.is("}")) return;
+    placed_default_texture_.reset();   // the #default changes: later objects get a new shared copy
+    TextureLayer& layer = default_texture_.layers.back();
+    if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
+    else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
+    else if (t.is("texture")) {
+      auto tex = parse_texture_block(t);
+      if (tex->patterned()) fail_unsupported(t, "a patterned #default texture");
+      default_texture_ = *tex;
+    }
+    else if (t.is("normal")) {
+      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
+      refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
+    } else if (t.is("camera") || t.is("radiosity"))
+      fail_unsupported(t, "#default { " + std::string(t.text) + " }");
+    else fail_expected(t, "texture, pigment, normal or finish in #default { }");
+  }
+}
+
+bool Interpreter::numeric_ahead() {
+  const LexedToken* k = plain_ahead();
+  if (!k) return false;
+  if (k->kind() == TokenKind::number || k->kind() == TokenKind::symbol) return true;
+  if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
+  const Value* v = symbols_.find(k->payload);
+  return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
+}
+
+void Interpreter::call_macros_ahead() {
+  // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
+  // limit (next() counts), no deprecated names (their warnings come from next()).
+  while (pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const Frame& f = frames_.back();
+    const LexedToken& k = lexed(*f.tokens, f.index);
+    if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
+    const Value* v = symbols_.find(k.payload);
+    if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
+    const Token name = raw();   // what next() reads first, with the cancel check counted
+    const NestingGuard guard(*this, name);
+    invoke_macro(name);
+  }
+}
+
+std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
+  // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
+  // and none of the forms below would take them.
+  if (first.kind == TokenKind::number || first.kind == TokenKind::symbol) {
+    unget(first);
+    return Value(parse_additive().stored());
+  }
+  // ('lemon' is no reserved word in 3.7, yet try_parse_item takes it as a shape.)
+  if (first.kind == TokenKind::identifier && (first.element || !reserved(first)) && first.text != "lemon")
+    if (const Value* v = lookup(first); v && std::holds_alternative<Numeric>(*v)) {
+      unget(first);
+      return Value(parse_additive().stored());
+    }
+  if (starts_string(first)) {
+    unget(first);
+    return parse_string();
+  }
+  const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
+  if (k == "texture") {
+    auto tex = parse_texture_block(first);
+    // Several texture blocks in a row declare a layered texture.
+    while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
+      Token more = next();
+      auto top = parse_texture_block(more);
+      refuse_layering(more, tex.get(), top->patterned());
+      auto layered = std::make_shared<Texture>(*tex);
+      for (const auto& l : top->layers) layered->layers.push_back(l);
+      tex = std::move(layered);
+    }
+    return Value(tex);
+  }
+  if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
+  if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "normal") return Value(parse_normal_block(first, starting_normal(nullptr)));
+  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
+  if (k == "texture_map") return Value(parse_texture_map(first, false));
+  if (k == "interior") return Value(parse_interior_block(first, Interior{}));
+  if (k == "camera") return Value(parse_camera(first));
+  if (k == "sky_sphere") return Value(parse_sky_sphere(first));
+  if (k == "transform") return Value(parse_transform_block(first));
+  if (k == "material") {
+    Object holder;
+    parse_material_block(first, holder);
+    if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
+    return Value(MaterialValue{holder.texture, holder.interior});
+  }
+  if (k == "array") return parse_array_declaration(first);
+  if (auto s = try_parse_spline_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
+  if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
+  if (const Value* v = lookup(first);
+      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
+    if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
+    return *v;
+  }
+  if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
+  // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
+  // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
+    Token after = peek_raw();
+    if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
+      UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
+      while (true) {   // raw look: a directive after the value runs only once it is stored (§1 item 6)
+        if (Token g = peek_raw(); !(g.is("{") || g.is("[") || g.is("("))) break;
+        skip_balanced(next());
+      }
+      return Value(OpaqueValue{std::string(k), feature});
+    }
+  }
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
+    static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
+                                                   "no", "on", "off", "version", "clock", "clock_on",
+                                                   "clock_delta", "now"};
+    bool is_value_word = false;
+    for (auto w : value_words) is_value_word = is_value_word || k == w;
+    Token after = peek();
+    if (!is_value_word && !after.is("(")) return std::nullopt;
+  }
+  unget(first);
+  return Value(parse_additive().stored());
+}
+
+namespace {
+// The first feature povtrace cannot render anywhere in an object: its shape or modifiers, its texture's
+// layers, its interior, or (for CSG) its children and lights.
+Unsupported first_unsupported(const Object& o) {
+  if (o.unsupported) return o.unsupported;
+  if (o.texture) {
+    if (o.texture->unsupported) return o.texture->unsupported;
+    for (const auto& l : o.texture->layers) {
+      if (l.pigment.unsupported) return l.pigment.unsupported;
+      if (l.finish.unsupported) return l.finish.unsupported;
+      if (l.normal && l.normal->unsupported) return l.normal->unsupported;
+    }
+  }
+  if (o.interior && o.interior->unsupported) return o.interior->unsupported;
+  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+    for (const auto& c : csg->children)
+      if (auto u = first_unsupported(c)) return u;
+    for (const auto& l : csg->lights) {
+      if (l.unsupported) return l.unsupported;
+      for (const auto& shown : l.looks_like)
+        if (auto u = first_unsupported(shown)) return u;
+    }
+  }
+  for (const auto* list : {&o.clipped_by, &o.bounded_by})
+    for (const auto& c : *list)
+      if (auto u = first_unsupported(c)) return u;
+  return std::nullopt;
+}
+
+// A placed object is edited no more: transforms deferred for textures that ignore them are dropped (their light
+// sources' looks_like objects are settled when the lights are added).
+void settle_deferred_texture_transforms(Object& o) {
+  if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
+  o.deferred_texture_transform.reset();
+  if (auto* csg = std::get_if<Csg>(&o.shape))
+    for (Object& child : csg->children) settle_deferred_texture_transforms(child);
+  for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})
+    for (Object& c : *list) settle_deferred_texture_transforms(c);
+}
+}  // namespace
+
+void Interpreter::place_light(Light light, const SourceLoc& at) {
+  refuse_if_unsupported(light.unsupported, at, "light_source");
+  for (Object& shown : light.looks_like) refuse_if_unsupported(first_unsupported(shown), at, "light_source");
+  add_light(std::move(light));
+}
+
+// A light joins the scene's lights; its looks_like object joins the objects.
+void Interpreter::add_light(Light light) {
+  for (Object& shown : light.looks_like) {
+    settle_deferred_texture_transforms(shown);
+    post_process(shown);
+    scene_.objects.push_back(std::move(shown));
+  }
+  light.looks_like.clear();
+  scene_.lights.push_back(std::move(light));
+}
+
+// Post_Process when a finished top-level object is placed (§10 "Texture inheritance"): CSG children without a
+// texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow,
+// no_image, no_reflection and no_radiosity are forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
+// current #default texture.
+void Interpreter::post_process(Object& object) {
+  // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
+  // layer's `ior` when given, and its `refraction` always.
+  if (object.texture && !object.texture->layers.empty()) {
+    const Finish& top = object.texture->layers.back().finish;
+    if (top.legacy_ior || top.legacy_refraction != 1.0 || object.interior) {
+      Interior in = object.interior.value_or(Interior{});
+      if (top.legacy_ior) in.ior = *top.legacy_ior;
+      in.refraction = top.legacy_refraction;
+      object.interior = in;
+    }
+  }
+  if (auto* csg = std::get_if<Csg>(&object.shape)) {
+    for (auto& child : csg->children) {
+      if (!child.texture) {   // the uv_mapping flag goes with the texture (POV-Ray's Post_Process)
+        child.texture = object.texture;
+        child.uv_mapping = child.uv_mapping || object.uv_mapping;
+      }
+      if (!child.interior) child.interior = object.interior;
+      if (!child.hollow) child.hollow = object.hollow;   // hollow reaches the children that did not set it
+      if (object.no_shadow) child.no_shadow = true;
+      // POV-Ray's Post_Process sets the parent's no_image, no_reflection and no_radiosity on every child too
+      // (never clearing one a child set itself).
+      if (object.no_image) child.no_image = true;
+      if (object.no_reflection) child.no_reflection = true;
+      if (object.no_radiosity) child.no_radiosity = true;
+      post_process(child);
+    }
+    for (auto& light : csg->lights) add_light(std::move(light));
+    csg->lights.clear();
+  }
+  // POV-Ray gives every object an interior and keeps the hollow flag there.
+  if (object.hollow.value_or(false)) {
+    Interior in = object.interior.value_or(Interior{});
+    in.hollow = true;
+    object.interior = in;
+  }
+  if (!object.texture) {
+    // One shared copy per #default state: untextured objects by the thousand must not copy it each.
+    if (!placed_default_texture_) placed_default_texture_ = std::make_shared<const Texture>(default_texture_);
+    object.texture = placed_default_texture_;
+  }
+}
+
+namespace {
+// POV-Ray's Post_Tnormal: a normal that reaches an object without a pattern is the error "No normal type given".
+const Normal* untyped_normal(const Normal& n) {
+  if (n.uv_normal) return untyped_normal(*n.uv_normal);
+  return !n.has_type && !n.unsupported ? &n : nullptr;
+}
+
+const Normal* untyped_normal(const Texture* texture) {
+  if (!texture) return nullptr;
+  for (const TextureLayer& layer : texture->layers)
+    if (layer.normal)
+      if (const Normal* n = untyped_normal(*layer.normal)) return n;
+  if (texture->pattern)   // the textures of a patterned texture
+    for (const TextureMapEntry& e : texture->pattern->entries)
+      if (const Normal* n = untyped_normal(e.texture.get())) return n;
+  return nullptr;
+}
+
+const Normal* first_untyped_normal(const Object& o) {
+  if (const Normal* n = untyped_normal(o.texture.get())) return n;
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
+    for (const auto& t : mesh->textures)
+      if (const Normal* n = untyped_normal(t.get())) return n;
+  if (const auto* csg = std::get_if<Csg>(&o.shape))
+    for (const Object& child : csg->children)
+      if (const Normal* n = first_untyped_normal(child)) return n;
+  return nullptr;
+}
+}  // namespace
+
+void Interpreter::place_object(Object&& object, const SourceLoc& at) {
+  refuse_if_unsupported(first_unsupported(object), at, "object");
+  remove_unnecessary_bounds(object);
+  settle_deferred_texture_transforms(object);
+  post_process(object);
+  if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
+  scene_.objects.push_back(std::move(object));
+}
+
+}  // namespace povtrace::sdl
+
+namespace povtrace {
+
+namespace {
+ParseOptions with_standard_includes(const ParseOptions& options) {
+  ParseOptions o = options;
+  std::error_code ec;
+  const std::filesystem::path standard(kStandardIncludeDir);
+  if (std::filesystem::is_directory(standard, ec) &&
+      std::find(o.library_paths.begin(), o.library_paths.end(), standard) == o.library_paths.end())
+    o.library_paths.push_back(standard);
+  return o;
+}
+
+// Takes the text over: a scene file read from disk is not copied once more (7 MB in a large scene).
+SceneDescription parse_owned_text(std::string text, const std::string& name, const ParseOptions& options) {
+  auto file = std::make_unique<SourceFile>();
+  file->name = std::make_shared<const std::string>(name);
+  file->path = name;
+  file->text = std::move(text);
+  const ParseOptions o = with_standard_includes(options);
+  sdl::Interpreter interpreter(o);
+  return interpreter.run(std::move(file));
+}
+}  // namespace
+
+SceneDescription parse_scene_text(const std::string& text, const std::string& name, const ParseOptions& options) {
+  return parse_owned_text(text, name, options);
+}
+
+SceneDescription parse_scene(const std::filesystem::path& path, const ParseOptions& options) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const std::exception& e) {
+    throw ParseError(SourceLoc{std::make_shared<const std::string>(path.string()), 0, 0}, e.what());
+  }
+  return parse_owned_text(std::move(text), path.string(), options);
+}
+
+}  // namespace povtrace

@@ -1,0 +1,447 @@
+// Pigment patterns, their colour/pigment maps and pattern modifiers (povray-sdl-and-geometry.md §11). The
+// pattern keywords, defaults and limits follow POV-Ray 3.7's Parse_Pattern, Parse_Blend_List, Parse_Blend_Map and
+// Parse_Colour_Map (parser/parstxtr.cpp, parser/express.cpp).
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/function_value.hpp"
+#include "parser/interpreter.hpp"
+#include "parser/lexing/reserved_words.hpp"
+
+namespace povtrace::sdl {
+
+namespace {
+// Pattern parameters, map values, frequency and phase are single-precision fields in POV-Ray.
+double single(double d) { return static_cast<double>(static_cast<float>(d)); }
+
+// POV-Ray's EPSILON; `mortar M` is stored as M − 2·EPSILON (Parse_Pattern).
+constexpr double kPovEpsilon = 1e-10;
+
+// POV-Ray's limit on colour_map/pigment_map entries (MAX_BLEND_MAP_ENTRIES).
+constexpr std::size_t kMaxMapEntries = 256;
+
+bool is_list_pattern(PatternKind k) {
+  return k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick;
+}
+
+struct SimplePattern {
+  std::string_view keyword;
+  PatternKind kind;
+};
+// Patterns whose keyword takes no argument and changes nothing but the kind (Parse_Pattern).
+constexpr SimplePattern kSimplePatterns[] = {
+    {"bozo", PatternKind::bozo},         {"spotted", PatternKind::spotted},
+    {"granite", PatternKind::granite},   {"leopard", PatternKind::leopard},
+    {"onion", PatternKind::onion},       {"radial", PatternKind::radial},
+    {"planar", PatternKind::planar},     {"boxed", PatternKind::boxed},
+    {"spherical", PatternKind::spherical}, {"cylindrical", PatternKind::cylindrical},
+    {"average", PatternKind::average},   {"cells", PatternKind::cells},
+    {"bumps", PatternKind::bumps},       {"dents", PatternKind::dents},
+    {"wrinkles", PatternKind::wrinkles}, {"ripples", PatternKind::ripples},
+    {"waves", PatternKind::waves},
+};
+
+struct WaveKeyword {
+  std::string_view keyword;
+  WaveType wave;
+};
+constexpr WaveKeyword kWaveKeywords[] = {
+    {"ramp_wave", WaveType::ramp},       {"triangle_wave", WaveType::triangle}, {"sine_wave", WaveType::sine},
+    {"scallop_wave", WaveType::scallop}, {"cubic_wave", WaveType::cubic},       {"poly_wave", WaveType::poly},
+};
+
+// The colours a list pattern gets for entries it does not write (texture/pigment.cpp default maps).
+Colour list_default(PatternKind k, std::size_t i) {
+  if (k == PatternKind::brick) {
+    const Colour brick[2] = {{0.5, 0.5, 0.5, 0, 0}, {single(0.6), single(0.15), single(0.15), 0, 0}};
+    return brick[i];
+  }
+  const Colour blue_green_red[3] = {{0, 0, 1, 0, 0}, {0, 1, 0, 0, 0}, {1, 0, 0, 0, 0}};
+  return blue_green_red[i];
+}
+
+// POV-Ray's Check_Turb: the classic turbulence, created with its defaults when a turbulence parameter first
+// appears.
+Turbulence& classic_turbulence(Pigment& p) {
+  if (!p.turbulence) p.turbulence = Turbulence{};
+  return *p.turbulence;
+}
+
+int clamped_octaves(double v) { return std::clamp(static_cast<int>(v), 1, 10); }
+}  // namespace
+
+bool Interpreter::starts_map_expression(const Token& t) const {
+  return starts_colour(t) || t.kind == TokenKind::number || t.is("<") || t.is("(") || t.is("-") || t.is("+");
+}
+
+// `checker C1, C2` / `hexagon C1, C2, C3` / `brick C1, C2`, or the same with `pigment { }` entries: all colours or
+// all pigments, decided by the first token; entries not written take the default colours, or the #default
+// pigment when the list is of pigments (Parse_Blend_List).
+std::vector<MapEntry> Interpreter::parse_list_entries(PatternKind kind, std::size_t count) {
+  std::vector<MapEntry> entries;
+  const bool pigments = peek().is("pigment");
+  while (entries.size() < count) {
+    Token n = peek();
+    MapEntry e;
+    e.value = static_cast<double>(entries.size());
+    if (pigments && n.is("pigment")) {
+      Token keyword = next();
+      e.pigment = std::make_shared<const Pigment>(parse_pigment_block(keyword, default_pigment()));
+    } else if (!pigments && starts_map_expression(n)) {
+      e.colour = parse_colour();
+    } else {
+      break;
+    }
+    accept(",");
+    entries.push_back(std::move(e));
+  }
+  while (entries.size() < count) {
+    MapEntry e;
+    e.value = static_cast<double>(entries.size());
+    if (pigments) e.pigment = std::make_shared<const Pigment>(default_pigment());
+    else e.colour = list_default(kind, entries.size());
+    entries.push_back(std::move(e));
+  }
+  return entries;
+}
+
+void Interpreter::set_list_pattern(const Token& t, Pigment& p) {
+  const PatternKind kind = t.is("checker") ? PatternKind::checker
+                           : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
+  // A brick pigment edited with `brick` again keeps its size and mortar.
+  if (kind == PatternKind::brick && p.pattern != PatternKind::brick) {
+    p.brick_size = {8, 3, 4.5};
+    p.mortar = single(0.5 - 2 * kPovEpsilon);
+  }
+  p.pattern = kind;
+  p.frequency = 0.0;
+}
+
+bool Interpreter::try_pattern(const Token& t, Pigment& p) {
+  if (t.is("image_map")) {
+    parse_image_map(t, p);
+    return true;
+  }
+  for (const auto& s : kSimplePatterns)
+    if (t.is(s.keyword)) { p.pattern = s.kind; return true; }
+  if (t.is("checker") || t.is("hexagon") || t.is("brick")) {
+    set_list_pattern(t, p);
+    p.entries = parse_list_entries(p.pattern, p.pattern == PatternKind::hexagon ? 3 : 2);
+    return true;
+  }
+  if (t.is("gradient")) {
+    const Vec3 v = parse_vector();
+    if (length(v) == 0.0) fail_at(t, "the gradient direction must not be the zero vector");
+    p.pattern = PatternKind::gradient;
+    p.gradient = normalize(v);
+    return true;
+  }
+  if (t.is("marble") || t.is("wood")) {
+    p.pattern = t.is("marble") ? PatternKind::marble : PatternKind::wood;
+    p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
+  if (t.is("function")) {
+    // function { EXPRESSION } of x, y, z (POV-Ray's Parse_Function: the body only, no parameter list).
+    if (peek().is("(")) fail_expected(peek(), "'{' after 'function' in a pattern");
+    auto fn = parse_function_definition(t);
+    if (fn->return_size != 0 || fn->parameter_count != 3)
+      fail_at(t, "a function pattern needs a float function of x, y and z");
+    if (auto part = unevaluable_part(*fn)) taint(p.unsupported, UnsupportedFeature{"a pattern of " + *part, t.loc});
+    p.pattern = PatternKind::function;
+    p.function = std::move(fn);
+    return true;
+  }
+  if (t.is("quilted")) {   // POV-Ray resets both controls and skips the wave step's frequency
+    p.pattern = PatternKind::quilted;
+    p.control0 = p.control1 = 1.0f;
+    p.frequency = 0.0;
+    return true;
+  }
+  if (t.is("spiral1") || t.is("spiral2")) {
+    p.pattern = t.is("spiral1") ? PatternKind::spiral1 : PatternKind::spiral2;
+    // POV-Ray keeps the arm count as a short, converted from the float as written.
+    p.arms = static_cast<short>(std::clamp(std::trunc(parse_float()), -32768.0, 32767.0));
+    p.wave = WaveType::triangle;   // POV-Ray's default wave for both
+    return true;
+  }
+  if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)
+    p.pattern = PatternKind::crackle;
+    p.crackle = CrackleParams{};
+    return true;
+  }
+  if (t.is("agate")) {
+    p.pattern = PatternKind::agate;
+    classic_turbulence(p);   // agate needs the turbulence's octaves, omega and lambda
+    p.agate_turb = 1.0;
+    return true;
+  }
+  return false;
+}
+
+void Interpreter::refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map) {
+  if (p.unsupported) return;   // the pattern may be one povtrace skipped: its kind is unknown here
+  const bool solid = p.pattern == PatternKind::solid || p.pattern == PatternKind::image_map;
+  const bool average = p.pattern == PatternKind::average;
+  if (solid || is_list_pattern(p.pattern) || (average && !pigment_map))
+    fail_at(t, "cannot use " + std::string(t.text) + " with this pattern type (as in POV-Ray)");
+}
+
+// `[v C]`, `[v, C]`, `[v <r,g,b,f,t>]` or the old two-colour form `[v1, v2 color C1 color C2]`.
+void Interpreter::parse_colour_map_entry(std::vector<MapEntry>& entries) {
+  MapEntry first;
+  first.value = single(parse_float());
+  accept(",");
+  Token n = peek();
+  if (starts_colour(n)) {
+    first.colour = parse_colour();
+    entries.push_back(first);
+    return;
+  }
+  Numeric e = parse_additive();
+  if (e.terms == 5) {
+    e.colour = true;
+    first.colour = e.stored().as_colour();
+    entries.push_back(first);
+    return;
+  }
+  if (e.terms != 1) fail_at(n, "expected a colour or a second value (old-style entry) in the color_map entry");
+  MapEntry second;
+  second.value = single(e.v[0]);
+  first.colour = parse_colour();
+  Token c = peek();
+  if (!c.is("color") && !c.is("colour")) fail_expected(c, "'color' before the second colour of an old-style entry");
+  second.colour = parse_colour();
+  entries.push_back(first);
+  entries.push_back(second);
+}
+
+// `[v pigment-body]`; in an average's map the weight may be left out (1).
+void Interpreter::parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional) {
+  MapEntry e;
+  const Token n = peek();
+  const bool has_value = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") ||
+                         (n.kind == TokenKind::identifier && !is_reserved_word(n.text) && lookup(n) &&
+                          std::holds_alternative<Numeric>(*lookup(n)));
+  e.value = single(weights_optional && !has_value ? 1.0 : parse_float());
+  accept(",");
+  e.pigment = std::make_shared<const Pigment>(parse_pigment_contents(default_pigment(), n.loc, "]"));
+  entries.push_back(std::move(e));
+}
+
+BlendMapValue Interpreter::parse_blend_map(const Token& keyword, bool weights_optional) {
+  const NestingGuard guard(*this, keyword);
+  BlendMapValue map;
+  map.pigments = keyword.is("pigment_map");
+  expect("{", " after '" + std::string(keyword.text) + "'");
+  Token t = next();
+  if (const Value* v = lookup(t); v && std::holds_alternative<BlendMapValue>(*v)) {
+    map = std::get<BlendMapValue>(*v);
+    if (map.textures || map.pigments != keyword.is("pigment_map"))
+      fail_at(t, "this identifier is a " + value_type_name(*v) + ", not a " + std::string(keyword.text));
+    expect("}", " after the map identifier");
+    return map;
+  }
+  while (!t.is("}")) {
+    if (!t.is("[")) fail_expected(t, "'[' starting a map entry, or '}'");
+    if (map.entries.size() >= kMaxMapEntries)
+      fail_at(t, "too many entries in the map: POV-Ray allows at most 256");
+    if (map.pigments) {
+      parse_pigment_map_entry(map.entries, weights_optional);   // reads the closing ']' itself
+    } else {
+      parse_colour_map_entry(map.entries);
+      expect("]", " closing the map entry");
+    }
+    t = next();
+  }
+  if (map.entries.empty()) fail_at(keyword, "a map needs at least one entry");
+  return map;
+}
+
+// `warp { turbulence V [octaves N] [omega W] [lambda L] }`; other warps are refused by name.
+void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
+  const NestingGuard guard(*this, keyword);
+  const Token open = expect("{", " after 'warp'");
+  Token kind = next();
+  if (kind.is("repeat")) {
+    PatternWarp w;
+    w.repeat = parse_repeat_warp(kind);
+    w.before = p.world_from_pattern;
+    p.world_from_pattern = Matrix::identity();
+    p.warps.push_back(w);
+    return;
+  }
+  if (!kind.is("turbulence")) {
+    taint(p.unsupported, UnsupportedFeature{"the warp '" + std::string(kind.text) + "'", kind.loc});
+    unget(kind);
+    skip_balanced(open);
+    return;
+  }
+  PatternWarp w;
+  w.turbulence.amount = parse_vector();
+  while (true) {
+    Token t = next();
+    if (t.is("octaves")) w.turbulence.octaves = clamped_octaves(parse_float());
+    else if (t.is("omega")) w.turbulence.omega = static_cast<float>(parse_float());
+    else if (t.is("lambda")) w.turbulence.lambda = static_cast<float>(parse_float());
+    else if (t.is("}")) break;
+    else fail_expected(t, "octaves, omega, lambda or '}' in warp { turbulence … }");
+  }
+  // Warps and transforms apply in written order: the transforms so far belong before this warp.
+  w.before = p.world_from_pattern;
+  p.world_from_pattern = Matrix::identity();
+  p.warps.push_back(w);
+}
+
+// `repeat V [offset O] [flip F] }` (Parse_Warp): V must name exactly one axis.
+RepeatWarp Interpreter::parse_repeat_warp(const Token& keyword) {
+  RepeatWarp r;
+  const Vec3 v = parse_vector();
+  int axes = 0;
+  for (int i = 0; i < 3; ++i)
+    if (v[i] != 0.0) {
+      r.axis = i;
+      ++axes;
+    }
+  if (axes > 1) fail_at(keyword, "can only repeat along 1 axis");
+  if (axes == 0) fail_at(keyword, "no axis specified in repeat");
+  r.width = v[r.axis];
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (t.is("offset")) r.offset = parse_vector();
+    else if (t.is("flip")) {
+      const Vec3 f = parse_vector();
+      r.flip = {f.x != 0.0 ? -1.0 : 1.0, f.y != 0.0 ? -1.0 : 1.0, f.z != 0.0 ? -1.0 : 1.0};
+    } else fail_expected(t, "offset, flip or '}' in warp { repeat … }");
+  }
+  return r;
+}
+
+bool Interpreter::try_pattern_modifier(const Token& t, Pigment& p) {
+  if (t.is("color_map") || t.is("colour_map") || t.is("pigment_map")) {
+    const bool pigment_map = t.is("pigment_map");
+    refuse_map_for_pattern(t, p, pigment_map);
+    p.entries = parse_blend_map(t, p.pattern == PatternKind::average).entries;
+    return true;
+  }
+  for (const auto& w : kWaveKeywords)
+    if (t.is(w.keyword)) {
+      p.wave = w.wave;
+      // poly_wave's exponent is optional (Allow_Float): the previous one stays.
+      if (w.wave == WaveType::poly && starts_map_expression(peek()) && !starts_colour(peek()))
+        p.exponent = single(parse_float());
+      return true;
+    }
+  if (t.is("frequency")) { p.frequency = single(parse_float()); return true; }
+  if (t.is("phase")) { p.phase = single(parse_float()); return true; }
+  if (t.is("turbulence")) { classic_turbulence(p).amount = parse_vector(); return true; }
+  if (t.is("octaves")) { classic_turbulence(p).octaves = clamped_octaves(parse_float()); return true; }
+  if (t.is("omega")) { classic_turbulence(p).omega = static_cast<float>(parse_float()); return true; }
+  if (t.is("lambda")) { classic_turbulence(p).lambda = static_cast<float>(parse_float()); return true; }
+  if (t.is("warp")) { parse_warp(t, p); return true; }
+  return try_pattern_parameter(t, p);
+}
+
+// Parameters that belong to one pattern; POV-Ray refuses them with any other (Not_With).
+bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
+  auto require = [&](PatternKind kind, std::string_view name) {
+    if (p.pattern != kind)
+      fail_at(t, "'" + std::string(t.text) + "' cannot be used with a non-" + std::string(name) + " pattern");
+  };
+  if (t.is("control0") || t.is("control1")) {
+    if (p.pattern != PatternKind::quilted)
+      fail_at(t, "Keyword '" + std::string(t.text) + "' cannot be used with this pattern (only with quilted).");
+    (t.is("control0") ? p.control0 : p.control1) = static_cast<float>(parse_float());
+    return true;
+  }
+  if (t.is("agate_turb")) {
+    require(PatternKind::agate, "agate");
+    p.agate_turb = single(parse_float());
+    classic_turbulence(p);
+    return true;
+  }
+  if (t.is("brick_size")) {
+    require(PatternKind::brick, "brick");
+    p.brick_size = parse_vector();
+    return true;
+  }
+  if (t.is("metric")) {   // a vector for backward compatibility: only its x is used
+    require(PatternKind::crackle, "crackle");
+    p.crackle.metric = parse_vector().x;
+    return true;
+  }
+  if (t.is("form")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.form = parse_vector();
+    return true;
+  }
+  if (t.is("offset")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.offset = parse_float();
+    return true;
+  }
+  if (t.is("solid")) {
+    require(PatternKind::crackle, "crackle");
+    p.crackle.solid = true;
+    return true;
+  }
+  if (t.is("mortar")) {
+    require(PatternKind::brick, "brick");
+    p.mortar = single(parse_float() - 2 * kPovEpsilon);
+    return true;
+  }
+  return false;
+}
+
+// `uv_mapping PIGMENT_BODY`: the rest of the block is a pigment (from the #default one) evaluated at the hit's
+// <u, v, 0> (POV-Ray's UV_MAP_PATTERN, Parse_Item_Into_Blend_List); what came before stays but has no effect.
+Pigment Interpreter::uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer) {
+  MapEntry e;
+  e.pigment = std::make_shared<const Pigment>(parse_pigment_contents(default_pigment(), loc, closer));
+  outer.pattern = PatternKind::uv_mapping;
+  outer.entries = {e};
+  outer.image.reset();
+  taint(outer.unsupported, e.pigment->unsupported);
+  return outer;
+}
+
+Pigment Interpreter::default_pigment() const { return default_texture().layers.back().pigment; }
+
+// The inside of `pigment { … }` or of a pigment_map entry `[v …]`, up to `closer`: an optional pigment
+// identifier, then a pattern or colour and modifiers.
+Pigment Interpreter::parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer) {
+  Pigment p = start;
+  p.loc = loc;
+  Token t = next();
+  if (const Value* v = lookup(t); v && std::holds_alternative<Boxed<Pigment>>(*v)) {
+    p = *std::get<Boxed<Pigment>>(*v);
+    t = next();
+  }
+  while (!t.is(closer)) {
+    if (t.is("uv_mapping")) {
+      const NestingGuard guard(*this, t);   // `uv_mapping uv_mapping …` nests
+      return uv_mapped_pigment(p, loc, closer);
+    }
+    if (try_pigment_item(t, p)) { t = next(); continue; }
+    if (t.is("quick_color") || t.is("quick_colour")) {
+      // POV-Ray shows the quick colour only in draft renders (+Q5 and below); povtrace always renders at full
+      // quality, where POV-Ray reads the colour and leaves it unused.
+      parse_colour();
+      t = next();
+      continue;
+    }
+    if (t.kind == TokenKind::identifier && is_reserved_word(t.text)) {
+      taint(p.unsupported, skip_unsupported(t, "the pigment item '" + std::string(t.text) + "'"));
+      t = next();
+      continue;
+    }
+    fail_expected(t, closer == "}" ? "a colour, a pattern, a transform or '}' in pigment { }"
+                                   : "a colour, a pattern, a transform or ']' in the pigment_map entry");
+  }
+  if (p.pattern == PatternKind::average && p.entries.empty())
+    fail_at(t, "an average pigment needs a pigment_map (as in POV-Ray)");
+  for (const auto& e : p.entries)
+    if (e.pigment) taint(p.unsupported, e.pigment->unsupported);
+  return p;
+}
+
+}  // namespace povtrace::sdl

@@ -1,0 +1,36 @@
+// Transforms of finished description values, shared by the interpreter (object and light modifiers) and the
+// renderer (which rescales whole scenes, renderer/scene_scale.cpp).
+#pragma once
+
+#include <memory>
+
+#include "scene/description.hpp"
+
+namespace povtrace {
+
+// The texture's patterns move with the object: every layer's pigment and normal pattern space, or a patterned
+// texture's pattern (its textures are evaluated in its space). Copied, since textures are shared.
+std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m);
+void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m);
+
+// Whether no transform can change how the texture renders: plain layers whose pigments are solid colours (no
+// pattern space is ever read for them) and which have no normal.
+bool texture_ignores_transforms(const Texture& texture);
+
+// Applies the transforms deferred for the object's texture (Object::deferred_texture_transform, their composition
+// in written order), as they would have been applied when written; the texture is then the object's own copy.
+void apply_deferred_texture_transforms(Object& object);
+
+// How a transform was written: boxes fold translations and scalings into their corners until they are rotated
+// (POV-Ray's Box::Translate, Box::Scale).
+enum class TransformKind { translate, rotate, scale, other };
+
+// A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
+// UV_FLAG; deferred for a texture that ignores transforms —, clip and bounding objects), and for CSG every child and light inside (POV-Ray transforms a CSG by
+// transforming its children; the node keeps no matrix).
+void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
+
+// A light's location, point_at and area axes (as directions), and its looks_like object.
+void transform_light(Light& light, const Matrix& m);
+
+}  // namespace povtrace
