@@ -3,7 +3,7 @@
 # front end (fuzz/povtrace_parse_fuzzer), one third on the whole pipeline at 8×6 (fuzz/povtrace_render_fuzzer,
 # which also fails on a non-finite pixel). Builds them with clang (ASan + UBSan, -DPOVTRACE_FUZZ=ON) in build-fuzz/, seeds the corpus
 # with scenes/*.pov (copied at run time) and runs it with a dictionary of SDL keywords made from
-# parser/reserved_words.cpp. Exits non-zero on a finding — a crash, a sanitizer report, an exception other than
+# parser/lexing/reserved_words.cpp. Exits non-zero on a finding — a crash, a sanitizer report, an exception other than
 # ParseError, a timeout or running out of memory — and leaves the input that caused it in build-fuzz/findings/.
 # Reproduce one with: build-fuzz/fuzz/povtrace_parse_fuzzer (or povtrace_render_fuzzer) build-fuzz/findings/<file>
 set -euo pipefail
@@ -21,7 +21,7 @@ mkdir -p "$corpus" "$findings"
 cp "$root"/scenes/*.pov "$corpus"/
 dict="$out/sdl.dict"
 {
-  grep -o '^    "[a-z_0-9]*",$' "$root/parser/reserved_words.cpp" | tr -d ' ,'
+  grep -o '^    "[a-z_0-9]*",$' "$root/parser/lexing/reserved_words.cpp" | tr -d ' ,'
   for d in declare local undef include if ifdef ifndef else elseif end while for macro switch case range break \
            default debug warning error version fopen fclose read write; do
     echo "\"#$d\""
