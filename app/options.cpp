@@ -372,8 +372,11 @@ void turn_off_specialisations(RenderOptions& o, string_view v, string_view c) {
   while (!v.empty()) {
     const std::size_t comma = v.find(',');
     const string_view name = v.substr(0, comma);
-    if (!o.specialise.turn_off(name))
-      fail(c, "unknown specialisation " + in_quotes(name) + "; expected all or some of " +
+    // The parser's one specialisation (ParseOptions::expression_programs); the others are the renderer's.
+    const bool parser_path = name == "expression-programs" || name == "all";
+    if (parser_path) o.expression_programs = false;
+    if (!o.specialise.turn_off(name) && !parser_path)
+      fail(c, "unknown specialisation " + in_quotes(name) + "; expected all or some of expression-programs, " +
                   render::SpecialisationChoice::names());
     v = comma == string_view::npos ? string_view{} : v.substr(comma + 1);
   }

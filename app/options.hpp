@@ -37,6 +37,7 @@ struct RenderOptions {
   bool povray_tolerances = false;               // --povray-tolerances: no rescaling of tiny or huge scenes
   // --no-specialise[=NAME,…]: the general paths instead of the specialised ones (same image, slower)
   render::SpecialisationChoice specialise;
+  bool expression_programs = true;              // the parser's (--no-specialise=expression-programs turns it off)
   std::vector<std::filesystem::path> library_paths;  // +L / Library_Path, in order
   std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
   int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)

@@ -33,6 +33,7 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.object_geometry = render::object_geometry();
   p.pattern_evaluator = render::pattern_evaluator();
   p.povray_tolerances = o.povray_tolerances;
+  p.expression_programs = o.expression_programs;
   return p;
 }
 

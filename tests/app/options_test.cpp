@@ -51,6 +51,7 @@ std::string dump(const RenderOptions& o) {
     << (o.stats_json ? o.stats_json->string() : "none") << "\nvs_povray " << o.vs_povray << " lighting "
     << (o.lighting == LightingModel::povray ? "povray" : "textbook") << "\npovray_tolerances " << o.povray_tolerances
     << " specialise " << o.specialise.nearest_shadow_first << o.specialise.no_shadow_rays << o.specialise.embree_meshes
+    << " expression_programs " << o.expression_programs
     << "\nhelp " << o.help << "\n";
   return s.str();
 }
@@ -234,7 +235,11 @@ INSTANTIATE_TEST_SUITE_P(Misc, ParsesTo, ::testing::Values(
     ParseCase{{"--stats", "t.json"}, [](RenderOptions& o) { o.stats_json = "t.json"; }},
     ParseCase{{"--vs-povray"}, [](RenderOptions& o) { o.vs_povray = true; }},
     ParseCase{{"--lighting=textbook"}, [](RenderOptions& o) { o.lighting = LightingModel::textbook; }},
-    ParseCase{{"--no-specialise"}, [](RenderOptions& o) { o.specialise = render::SpecialisationChoice{false, false, false}; }},
+    ParseCase{{"--no-specialise"}, [](RenderOptions& o) {
+                o.specialise = render::SpecialisationChoice{false, false, false};
+                o.expression_programs = false;
+              }},
+    ParseCase{{"--no-specialise=expression-programs"}, [](RenderOptions& o) { o.expression_programs = false; }},
     ParseCase{{"--no-specialise=no-shadow-rays,nearest-shadow-first"},
               [](RenderOptions& o) { o.specialise.nearest_shadow_first = o.specialise.no_shadow_rays = false; }},
     ParseCase{{"--no-specialise=no-shadow-rays"}, [](RenderOptions& o) { o.specialise.no_shadow_rays = false; }},

@@ -32,6 +32,21 @@ TEST_P(ReplayedExpression, GivesWhatTheParseGives) {
   EXPECT_EQ(looped, straight + straight + straight) << expr;
 }
 
+// The same loop with expression programs off (ParseOptions::expression_programs): the full parse reads every round,
+// and gives what the programs gave.
+TEST_P(ReplayedExpression, GivesWhatTheProgramsGive) {
+  const std::string expr = GetParam();
+  const std::string scene =
+      kPrelude + "#declare R = 0;\n#while (R < 3)\n" + once(expr) + "#declare R = R + 1;\n#end\n";
+  Messages with, without;
+  parse_scene_text(scene, "test.pov", options_into(with));
+  ParseOptions off = options_into(without);
+  off.expression_programs = false;
+  parse_scene_text(scene, "test.pov", off);
+  ASSERT_FALSE(with.items.empty());
+  EXPECT_EQ(without.items, with.items) << expr;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Values, ReplayedExpression,
     ::testing::Values("A + B * 2", "-A - -B", "!A + !Z", "A / 4", "(A < B) + (A >= B) * 2", "(A = 2.00000000001)",

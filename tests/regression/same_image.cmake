@@ -1,7 +1,7 @@
 # Proves that the image does not depend on how it was computed (run with cmake -P): one scene rendered with the
-# paths specialised for what it holds (render_scene.hpp Specialisation) and with the general paths only
-# (--no-specialise), and with 1, 2 and 4 threads; every render must be the same file, bit for bit (32-bit float
-# EXR, so no rounding to half floats can hide a difference).
+# paths specialised for what it holds (render_scene.hpp Specialisation, and the parser's expression programs) and
+# with the general paths only (--no-specialise), and with 1, 2 and 4 threads; every render must be the same file,
+# bit for bit (32-bit float EXR, so no rounding to half floats can hide a difference).
 # Inputs (-D): POVTRACE, SCENE, SCENE_DIR, WORK_DIR.
 foreach(var POVTRACE SCENE SCENE_DIR WORK_DIR)
   if(NOT DEFINED ${var})
