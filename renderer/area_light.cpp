@@ -39,12 +39,16 @@ std::uint64_t bits_of(double d) {
   return b;
 }
 
+// How far a jittered sample moves along each axis, in sample spacings.
+struct Jitter {
+  double du, dv;
+};
+
 // Two numbers in [−½, ½) that depend only on the shaded point and the sample.
-void jitter_offsets(Vec3 point, int u, int v, double& du, double& dv) {
+Jitter jitter_offsets(Vec3 point, int u, int v) {
   std::uint64_t h = mix(bits_of(point.x) ^ mix(bits_of(point.y) ^ mix(bits_of(point.z))));
   h = mix(h ^ (static_cast<std::uint64_t>(u) << 32 | static_cast<std::uint32_t>(v)));
-  du = static_cast<double>(h >> 11) * 0x1.0p-53 - 0.5;
-  dv = static_cast<double>(mix(h) >> 11) * 0x1.0p-53 - 0.5;
+  return {static_cast<double>(h >> 11) * 0x1.0p-53 - 0.5, static_cast<double>(mix(h) >> 11) * 0x1.0p-53 - 0.5};
 }
 
 }  // namespace
@@ -81,10 +85,9 @@ Rgb Tracer::area_sample(AreaSampling& s, int u, int v) {
   if (cached.x >= 0) return cached;
   double ju = u, jv = v;
   if (light.jitter) {
-    double du = 0, dv = 0;
-    jitter_offsets(s.point, u, v, du, dv);
-    ju += du;
-    jv += dv;
+    const Jitter j = jitter_offsets(s.point, u, v);
+    ju += j.du;
+    jv += j.dv;
   }
   Vec3 offset{0, 0, 0};
   if (light.circular && light.size1 > 1 && light.size2 > 1) {

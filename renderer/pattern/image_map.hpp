@@ -40,8 +40,10 @@ std::optional<std::array<double, 2>> image_position(const ImageMapping& m, Vec3 
 // other images, interpolated and truncated as POV-Ray does (bump_map's use_index).
 Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row, int* index = nullptr);
 
-// The colour an image_map pigment gives at a pattern-space point; `found` is false off the image.
-Colour image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p, bool& found);
+// The colour an image_map pigment gives at a pattern-space point; none off the image (where the pigment is
+// kOffImageColour, filtering nothing).
+std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p);
+inline constexpr Colour kOffImageColour{1, 1, 1, 0, 1};   // clear white
 
 // An image_map pigment ready for lookups.
 struct RenderImageMap {
