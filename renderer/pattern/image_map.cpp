@@ -97,16 +97,15 @@ struct Sum {
     t += c.t * w;
     index += i * w;
   }
+  void add_pixel(const MapImage& image, const ImageMapping& m, double x, double y, double w) {
+    const IndexedTexel p = pixel(image, m, x, y);
+    add(p.colour, p.index, w);
+  }
   Texel single() const {
     return {static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), static_cast<float>(f),
             static_cast<float>(t)};
   }
 };
-
-void add_pixel(Sum& s, const MapImage& image, const ImageMapping& m, double x, double y, double w) {
-  const IndexedTexel t = pixel(image, m, x, y);
-  s.add(t.colour, t.index, w);
-}
 
 // Interp: the pixels at (ix, iy), (ix−1, iy), (ix, iy−1), (ix−1, iy−1) around the shifted position.
 Sum four_pixels(const MapImage& image, const ImageMapping& m, double x, double y) {
@@ -127,10 +126,10 @@ Sum four_pixels(const MapImage& image, const ImageMapping& m, double x, double y
     for (int i = 0; i < 4; ++i) w[i] = inv[i] / total;
   }
   Sum s;
-  add_pixel(s, image, m, ix, iy, w[0]);
-  add_pixel(s, image, m, ix - 1.0, iy, w[1]);
-  add_pixel(s, image, m, ix, iy - 1.0, w[2]);
-  add_pixel(s, image, m, ix - 1.0, iy - 1.0, w[3]);
+  s.add_pixel(image, m, ix, iy, w[0]);
+  s.add_pixel(image, m, ix - 1.0, iy, w[1]);
+  s.add_pixel(image, m, ix, iy - 1.0, w[2]);
+  s.add_pixel(image, m, ix - 1.0, iy - 1.0, w[3]);
   return s;
 }
 
@@ -151,7 +150,7 @@ Sum sixteen_pixels(const MapImage& image, const ImageMapping& m, double x, doubl
   cubic_weights(y, wy);
   Sum s;
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) add_pixel(s, image, m, ix + i - 2.0, iy + j - 2.0, wx[i] * wy[j]);
+    for (int j = 0; j < 4; ++j) s.add_pixel(image, m, ix + i - 2.0, iy + j - 2.0, wx[i] * wy[j]);
   return s;
 }
 }  // namespace
