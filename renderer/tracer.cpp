@@ -369,7 +369,8 @@ Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb fil
   const RayState& state = at.state;
   const InteriorRef self = interior_of(hit);
   const Interior& interior = *self.interior;
-  const double next_weight = at.weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
+  const double next_weight =
+      at.weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
   RayState next = state;
   double eta;   // n_from / n_to
   InteriorList& in = next.interiors;
