@@ -126,8 +126,8 @@ class Tracer {
                      const RayState& state);
   struct AreaSampling;
   Rgb area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, Rgb colour, const RayState& state);
-  Rgb area_sample(AreaSampling& s, int u, int v);
-  Rgb area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level);
+  Rgb area_sample(const AreaSampling& s, int u, int v);
+  Rgb area_subset(const AreaSampling& s, int u1, int v1, int u2, int v2, int level);
   Radiance background(Vec3 direction, const RayState& state) const;
   // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
   Radiance with_fog(const Ray& ray, double depth, Radiance r) const;

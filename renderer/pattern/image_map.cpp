@@ -185,7 +185,7 @@ std::optional<std::array<double, 2>> image_position(const ImageMapping& m, Vec3 
   return std::array<double, 2>{wrap(u, m.columns), wrap(-v, m.rows)};
 }
 
-Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row, int* index) {
+ImageSample image_sample_at(const MapImage& image, const ImageMapping& m, double column, double row) {
   Sum s;
   switch (m.interpolate) {
     case 2:
@@ -193,12 +193,10 @@ Texel image_colour_at(const MapImage& image, const ImageMapping& m, double colum
     case 3: s = sixteen_pixels(image, m, column, row); break;
     default: {
       const IndexedTexel t = pixel(image, m, column, row);
-      if (index) *index = t.index;
-      return t.colour;
+      return {t.colour, t.index};
     }
   }
-  if (index) *index = static_cast<int>(s.index);
-  return s.single();
+  return {s.single(), static_cast<int>(s.index)};
 }
 
 std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p) {
