@@ -39,12 +39,16 @@ std::uint64_t bits_of(double d) {
   return b;
 }
 
+// How far a jittered sample moves along each axis, in sample spacings.
+struct Jitter {
+  double du, dv;
+};
+
 // Two numbers in [−½, ½) that depend only on the shaded point and the sample.
-void jitter_offsets(Vec3 point, int u, int v, double& du, double& dv) {
+Jitter jitter_offsets(Vec3 point, int u, int v) {
   std::uint64_t h = mix(bits_of(point.x) ^ mix(bits_of(point.y) ^ mix(bits_of(point.z))));
   h = mix(h ^ (static_cast<std::uint64_t>(u) << 32 | static_cast<std::uint32_t>(v)));
-  du = static_cast<double>(h >> 11) * 0x1.0p-53 - 0.5;
-  dv = static_cast<double>(mix(h) >> 11) * 0x1.0p-53 - 0.5;
+  return {static_cast<double>(h >> 11) * 0x1.0p-53 - 0.5, static_cast<double>(mix(h) >> 11) * 0x1.0p-53 - 0.5};
 }
 
 }  // namespace
@@ -55,7 +59,7 @@ struct Tracer::AreaSampling {
   Rgb colour;              // light colour at the centre, before shadowing
   Vec3 axis1, axis2;
   const RayState& state;
-  std::vector<Rgb>& grid;  // computed samples (x < 0: not yet)
+  std::vector<Rgb>& grid;  // computed samples (x < 0: not yet), filled in as they are taken
 };
 
 Rgb Tracer::area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, Rgb colour, const RayState& state) {
@@ -75,16 +79,15 @@ Rgb Tracer::area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, R
   return area_subset(s, 0, 0, light.size1 - 1, light.size2 - 1, 0);
 }
 
-Rgb Tracer::area_sample(AreaSampling& s, int u, int v) {
+Rgb Tracer::area_sample(const AreaSampling& s, int u, int v) {
   const Light& light = s.light.light;
   Rgb& cached = s.grid[static_cast<std::size_t>(u) * light.size2 + v];
   if (cached.x >= 0) return cached;
   double ju = u, jv = v;
   if (light.jitter) {
-    double du = 0, dv = 0;
-    jitter_offsets(s.point, u, v, du, dv);
-    ju += du;
-    jv += dv;
+    const Jitter j = jitter_offsets(s.point, u, v);
+    ju += j.du;
+    jv += j.dv;
   }
   Vec3 offset{0, 0, 0};
   if (light.circular && light.size1 > 1 && light.size2 > 1) {
@@ -110,7 +113,7 @@ Rgb Tracer::area_sample(AreaSampling& s, int u, int v) {
   return cached;
 }
 
-Rgb Tracer::area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level) {
+Rgb Tracer::area_subset(const AreaSampling& s, int u1, int v1, int u2, int v2, int level) {
   Rgb corner[4] = {area_sample(s, u1, v1), area_sample(s, u2, v1), area_sample(s, u1, v2), area_sample(s, u2, v2)};
   if (u2 - u1 > 1 || v2 - v1 > 1) {
     if (level < s.light.light.adaptive || channel_distance(corner[0], corner[1]) > 0.1 ||

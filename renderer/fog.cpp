@@ -51,7 +51,7 @@ double fog_attenuation(const Fog& fog, const Ray& ray, double width, NoiseGenera
 
 }  // namespace
 
-void Tracer::apply_fog(const Ray& ray, double depth, Radiance& r) const {
+Radiance Tracer::with_fog(const Ray& ray, double depth, Radiance r) const {
   Rgb total_attenuation{1, 1, 1};
   Rgb total_colour{0, 0, 0};
   for (const Fog& fog : scene_.fogs) {
@@ -67,6 +67,7 @@ void Tracer::apply_fog(const Ray& ray, double depth, Radiance& r) const {
   r.colour = total_colour + Rgb{total_attenuation.x * r.colour.x, total_attenuation.y * r.colour.y,
                                 total_attenuation.z * r.colour.z};
   r.transmit *= grey(total_attenuation);
+  return r;
 }
 
 }  // namespace povtrace::render

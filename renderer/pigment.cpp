@@ -47,32 +47,26 @@ Colour lerp(const Colour& a, const Colour& b, double f) {
 }
 
 // A map entry's colour: its own, or its pigment's at the pattern point (found as that pigment reports).
-Colour entry_colour(const RenderPigment& pigment, const RenderMapEntry& e, const TexturePoint& at, bool& found) {
-  if (e.child < 0) {
-    found = true;
-    return e.colour;
-  }
-  bool child_found = false;
-  const Colour c = evaluate_pigment(pigment.children[static_cast<std::size_t>(e.child)], at, &child_found);
-  found = found || child_found;
-  return c;
+PigmentSample entry_colour(const RenderPigment& pigment, const RenderMapEntry& e, const TexturePoint& at) {
+  if (e.child < 0) return {e.colour, true};
+  return sample_pigment(pigment.children[static_cast<std::size_t>(e.child)], at);
 }
 
-Colour blend(const RenderPigment& pigment, double value, const TexturePoint& at, bool& found) {
+// The map's entries around `value`, blended; found when either is.
+PigmentSample blend(const RenderPigment& pigment, double value, const TexturePoint& at) {
   const MapChoice m = choose_entries(pigment.map, value);
-  const Colour c = entry_colour(pigment, pigment.map[m.cur], at, found);
+  const PigmentSample c = entry_colour(pigment, pigment.map[m.cur], at);
   if (m.prev == m.cur) return c;
-  const Colour before = entry_colour(pigment, pigment.map[m.prev], at, found);
-  return lerp(before, c, m.fraction);
+  const PigmentSample before = entry_colour(pigment, pigment.map[m.prev], at);
+  return {lerp(before.colour, c.colour, m.fraction), c.found || before.found};
 }
 
 // average: the map's pigments weighted by their values (Do_Average_Pigments).
 Colour average(const RenderPigment& pigment, const TexturePoint& at) {
   Colour sum{};
   double total = 0.0;
-  bool found = false;
   for (const auto& e : pigment.map) {
-    const Colour c = entry_colour(pigment, e, at, found);
+    const Colour c = entry_colour(pigment, e, at).colour;
     sum = {sum.r + c.r * e.value, sum.g + c.g * e.value, sum.b + c.b * e.value, sum.f + c.f * e.value,
            sum.t + c.t * e.value};
     total += e.value;
@@ -81,22 +75,21 @@ Colour average(const RenderPigment& pigment, const TexturePoint& at) {
 }
 }  // namespace
 
-Colour evaluate_pigment(const RenderPigment& pigment, const TexturePoint& at, bool* found) {
-  bool dummy = false;
-  bool& ok = found ? *found : dummy;
-  ok = true;
-  if (pigment.pattern == PatternKind::solid) return pigment.colour;
+PigmentSample sample_pigment(const RenderPigment& pigment, const TexturePoint& at) {
+  if (pigment.pattern == PatternKind::solid) return {pigment.colour, true};
   // uv_mapping: the one pigment at the hit's <u, v, 0>, unwarped (Compute_Pigment UV_MAP_PATTERN).
   // It always counts as found, even over an image map used once.
   if (pigment.pattern == PatternKind::uv_mapping)
-    return evaluate_pigment(pigment.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v));
+    return {evaluate_pigment(pigment.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v)), true};
   const TexturePoint p(to_pattern_space(pigment, at.point), at.u, at.v);
-  if (pigment.pattern == PatternKind::image_map)
-    return image_map_colour(*pigment.image->image, pigment.image->mapping, p.point, ok);
-  if (pigment.pattern == PatternKind::average) return average(pigment, p);
-  ok = false;
+  if (pigment.pattern == PatternKind::image_map) {
+    const std::optional<Colour> c = image_map_colour(*pigment.image->image, pigment.image->mapping, p.point);
+    if (!c) return {kOffImageColour, false};
+    return {*c, true};
+  }
+  if (pigment.pattern == PatternKind::average) return {average(pigment, p), true};
   const double value = apply_wave(pattern_value(pigment.params, p.point), pigment.wave);
-  return blend(pigment, value, p, ok);
+  return blend(pigment, value, p);
 }
 
 }  // namespace povtrace::render

@@ -65,9 +65,10 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
 Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
   if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
-  Radiance r = hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
+  const Radiance r =
+      hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
   // Fog reaches rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away (hit.t).
-  if (!scene_.fogs.empty() && state.interiors.all_hollow()) apply_fog(ray, hit.t, r);
+  if (!scene_.fogs.empty() && state.interiors.all_hollow()) return with_fog(ray, hit.t, r);
   return r;
 }
 
@@ -125,18 +126,24 @@ double Tracer::relative_ior(const InteriorRef& self, const RayState& state) cons
 }
 
 namespace {
-// POV-Ray's reflectivity of one layer (§4 "Reflection amount"): c = cosine of incidence; `weight` is scaled to the
-// reflected ray's weight.
-Rgb reflectivity(const Finish& f, double c, double ior, double& weight) {
+// A layer's reflection colour and the weight of the ray it reflects.
+struct Reflectivity {
+  Rgb amount;
+  double weight;
+};
+
+// POV-Ray's reflectivity of one layer (§4 "Reflection amount"): c = cosine of incidence; `weight`, the weight the
+// layer is seen with, is scaled to the reflected ray's weight.
+Reflectivity reflectivity(const Finish& f, double c, double ior, double weight) {
   const Rgb lo = rgb_of(f.reflection_min), hi = rgb_of(f.reflection_max);
   if (!f.reflection_fresnel) {
     weight *= std::max(max_channel(hi), max_channel(lo));
     const double k = std::fabs(f.reflection_falloff - 1.0) > tolerance::epsilon
                          ? std::pow(1.0 - c, f.reflection_falloff)
                          : 1.0 - c;
-    if (std::fabs(k) < tolerance::epsilon) return lo;
-    if (std::fabs(k - 1.0) < tolerance::epsilon) return hi;
-    return hi * k + lo * (1.0 - k);
+    if (std::fabs(k) < tolerance::epsilon) return {lo, weight};
+    if (std::fabs(k - 1.0) < tolerance::epsilon) return {hi, weight};
+    return {hi * k + lo * (1.0 - k), weight};
   }
   Rgb r = hi;
   const double g2 = ior * ior + c * c - 1.0;
@@ -148,7 +155,7 @@ Rgb reflectivity(const Finish& f, double c, double ior, double& weight) {
     r = hi * fr + lo * (1.0 - fr);
   }
   weight *= max_channel(r);
-  return r;
+  return {r, weight};
 }
 
 bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
@@ -285,13 +292,12 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
     const Vec3 normal = layer.normal ? layer_normal(*layer.normal, sp, at) : raw_normal;
     if (&layer == &texture.layers.front()) top_normal = normal;
-    bool found = true;   // false only off an image map used once: the layer then filters nothing
-    const Colour s = evaluate_pigment(layer.pigment, at, &found);
+    // Not found only off an image map used once: the layer then filters nothing.
+    const auto [s, found] = sample_pigment(layer.pigment, at);
     if (layer.reflects) {
       const double c = -dot(ray.direction, normal);
-      double w = weight * trans;
       const double ior = layer.finish.reflection_fresnel ? relative_ior(self, state) : 1.0;
-      Rgb amount = reflectivity(layer.finish, c, ior, w);
+      auto [amount, w] = reflectivity(layer.finish, c, ior, weight * trans);
       if (const double m = layer.finish.reflection_metallic; m != 0) {
         const double fade = metallic_fade(std::fabs(std::acos(std::clamp(c, -1.0, 1.0))) / (M_PI / 2));
         amount = mul(amount, Rgb{1, 1, 1} + (Rgb{s.r, s.g, s.b} - Rgb{1, 1, 1}) * (m * (1.0 - fade)));
@@ -312,17 +318,21 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
     trans = std::min(1.0, std::fabs(grey(filter)));
   }
 
+  const HitContext here{ray, sp, level, weight, state};
   bool total_internal_reflection = false;
-  if (trans > scene_.settings.adc_bailout)
-    total_internal_reflection =
-        transmit(ray, hit, point, top_normal, raw_normal, level, weight, state, out, filter, trans);
+  if (trans > scene_.settings.adc_bailout) {
+    const Transmission t = transmit(here, top_normal, filter, trans);
+    out.colour += t.colour;
+    if (!t.total_internal_reflection) out.transmit = t.transmit;
+    total_internal_reflection = t.total_internal_reflection;
+  }
 
   // Reflections; after total internal reflection those sharing the top layer's normal are skipped (§4 TIR).
   for (std::size_t i = first_reflection; i < reflections_.size(); ++i) {
     const PendingReflection r = reflections_[i];
     if (is_zero(r.amount)) continue;
     if (total_internal_reflection && r.normal == top_normal) continue;
-    const Radiance seen = trace_reflection(ray, point, r.normal, raw_normal, level, r.weight, state);
+    const Radiance seen = trace_reflection(here, r.normal, r.weight);
     if (r.exponent != 1.0)
       out.colour += mul(r.amount, Rgb{std::pow(seen.colour.x, r.exponent), std::pow(seen.colour.y, r.exponent),
                                       std::pow(seen.colour.z, r.exponent)});
@@ -335,25 +345,32 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
 
 // The mirror ray about the layer normal, corrected when it would go into the geometric surface (a perturbed
 // normal can do that), traced one level deeper without background transparency (§4, §5).
-Radiance Tracer::trace_reflection(const Ray& ray, Vec3 point, Vec3 normal, Vec3 raw_normal, int level, double weight,
-                                  const RayState& state) {
+Radiance Tracer::trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight) {
+  const Ray& ray = at.ray;
+  const Vec3 raw_normal = at.sp.raw_normal;
   Vec3 r = ray.direction - normal * (2.0 * dot(ray.direction, normal));
   if (const double n = dot(r, raw_normal); n < 0) {
     if (dot(r, normal) < 0) r = ray.direction - raw_normal * (2.0 * dot(ray.direction, raw_normal));
     else r = r - raw_normal * (2.0 * n);
   }
   ++counts_.secondary;
-  RayState reflected = state;
+  RayState reflected = at.state;
   reflected.alpha_background = false;
-  return trace(Ray{point, normalize(r), ray_kind::after_reflection(ray.kind)}, level + 1, weight, reflected);
+  return trace(Ray{at.sp.point, normalize(r), ray_kind::after_reflection(ray.kind)}, at.level + 1, reflected_weight,
+               reflected);
 }
 
 // Transmission (§4 "Transmission/refraction"): the relative ior comes from the interiors the ray is in.
-bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 normal, Vec3 raw_normal, int level,
-                      double weight, const RayState& state, Radiance& out, Rgb filter, double trans) {
+Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans) {
+  const Ray& ray = at.ray;
+  const SurfaceHit& hit = at.sp.hit;
+  const Vec3 point = at.sp.point;
+  const int level = at.level;
+  const RayState& state = at.state;
   const InteriorRef self = interior_of(hit);
   const Interior& interior = *self.interior;
-  const double next_weight = weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
+  const double next_weight =
+      at.weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
   RayState next = state;
   double eta;   // n_from / n_to
   InteriorList& in = next.interiors;
@@ -397,21 +414,20 @@ bool Tracer::transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 no
     const double k = 1.0 + eta * eta * (m * m - 1.0);
     if (k < 0) {
       // Total internal reflection: the mirror ray (top layer's normal), not filtered by the layers (§4 TIR).
-      const Radiance reflected = trace_reflection(ray, point, normal, raw_normal, level, next_weight, state);
-      out.colour += mul(attenuation, reflected.colour);
-      return true;
+      const Radiance reflected = trace_reflection(at, normal, next_weight);
+      return {mul(attenuation, reflected.colour), 0.0, true};
     }
     const Vec3 refracted = ray.direction * eta + facing * (eta * m - std::sqrt(k));
     behind = trace(Ray{point, normalize(refracted), ray_kind::after_refraction(ray.kind)}, level + 1, next_weight,
                    next);
   }
-  out.colour += mul(mul(attenuation, filter), behind.colour);
-  out.transmit = grey(attenuation) * behind.transmit * trans;
-  return false;
+  return {mul(mul(attenuation, filter), behind.colour), grey(attenuation) * behind.transmit * trans, false};
 }
 
-bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const {
-  if (l.light.cylinder) return cylinder_light_at(l, point, colour, to_light, distance);
+std::optional<Tracer::LightRay> Tracer::light_at(const RenderLight& l, Vec3 point) const {
+  if (l.light.cylinder) return cylinder_light_at(l, point);
+  Vec3 to_light;
+  double distance;
   if (l.light.parallel) {
     // Parallel light (§3): fixed direction; distance is the projection onto it, so only objects between the
     // hit and the plane through `location` cast shadows.
@@ -422,16 +438,17 @@ bool Tracer::light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_li
     distance = length(v);
     to_light = v / distance;
   }
-  colour = l.colour;
+  Rgb colour = l.colour;
   if (l.light.spotlight) {
     const double cos_angle = -dot(to_light, l.spot_axis);
-    if (cos_angle <= 0) return false;
+    if (cos_angle <= 0) return std::nullopt;
     double a = l.light.tightness != 0 ? std::pow(cos_angle, l.light.tightness) : 1.0;
     if (cos_angle < l.cos_radius) a *= smoothstep(l.cos_falloff, l.cos_radius, cos_angle);
     colour *= a;
   }
   if (l.fades) colour *= 2.0 / (1.0 + std::pow(distance / l.light.fade_distance, l.light.fade_power));
-  return !near_zero(colour);
+  if (near_zero(colour)) return std::nullopt;
+  return LightRay{colour, to_light, distance};
 }
 
 namespace {
@@ -449,30 +466,30 @@ Rgb shadow_fade(const Interior& in, double depth) {
 // A cylindrical light (POV-Ray's Attenuate_Light and ComputeOneWhiteLightRay): parallel beams along point_at →
 // location, full inside `radius` of the axis, fading to 0 at `falloff` by the smooth step of 1 − d/falloff, raised
 // to `tightness`; nothing behind the light's plane. The distance for fade and shadows is along the beam.
-bool Tracer::cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const {
+std::optional<Tracer::LightRay> Tracer::cylinder_light_at(const RenderLight& l, Vec3 point) const {
   const Light& light = l.light;
-  to_light = -l.spot_axis;
-  distance = dot(light.location - point, to_light);
+  const Vec3 to_light = -l.spot_axis;
+  const double distance = dot(light.location - point, to_light);
   const Vec3 from_centre = point - light.location;
   const double along = dot(from_centre, l.spot_axis);
-  if (!(along > 0)) return false;
+  if (!(along > 0)) return std::nullopt;
   const double off_axis = length(from_centre - l.spot_axis * along);
-  if (!(off_axis < light.falloff)) return false;
+  if (!(off_axis < light.falloff)) return std::nullopt;
   const double d = 1.0 - off_axis / light.falloff;
   double a = std::pow(d, light.tightness);
   if (light.radius > 0 && off_axis > light.radius) a *= smoothstep(0.0, 1.0 - light.radius / light.falloff, d);
-  colour = l.colour * a;
+  Rgb colour = l.colour * a;
   if (l.fades) colour *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
-  return !near_zero(colour);
+  if (near_zero(colour)) return std::nullopt;
+  return LightRay{colour, to_light, distance};
 }
 
 // A transparent object filters at every surface crossing, through all its layers (§3); a texture_list triangle by the
 // weighted sum of its textures' filters (an opaque texture among them passes nothing); a patterned texture by the
 // filters of the textures its pattern picks, blended as their colours would be.
-Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque) {
+Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at) {
   const MaterialBlend blend = materials_at(hit);
-  opaque = blend.count == 1 && scene_.materials[blend.material[0]].opaque;
-  if (opaque) return {0, 0, 0};
+  if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) return {0, 0, 0};
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
   const TexturePoint point = texture_point(hit, at, uv, scene_.scale);
@@ -489,9 +506,8 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at)
   if (!texture.patterned()) {
     Rgb layers{1, 1, 1};
     for (const RenderLayer& layer : texture.layers) {
-      bool found = true;
-      const Colour s = evaluate_pigment(layer.pigment, at, &found);
-      if (found) layers = mul(layers, pass_through(s));
+      const PigmentSample s = sample_pigment(layer.pigment, at);
+      if (s.found) layers = mul(layers, pass_through(s.colour));
     }
     return layers;
   }
@@ -589,8 +605,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
     }
-    bool opaque = false;
-    f = mul(f, filter_through(c.hit, ray.origin + ray.direction * c.hit.t, opaque));
+    f = mul(f, filter_through(c.hit, ray.origin + ray.direction * c.hit.t));
     if (scene_.any_shadow_fade) {
       const InteriorRef self = interior_of(c.hit);
       if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, c.hit.t - previous));
@@ -623,10 +638,9 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
 
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
     const RenderLight& l = scene_.lights[li];
-    Rgb lc;
-    Vec3 to_light;
-    double distance;
-    if (!light_at(l, point, lc, to_light, distance)) continue;
+    const std::optional<LightRay> seen = light_at(l, point);
+    if (!seen) continue;
+    auto [lc, to_light, distance] = *seen;
     const double c = dot(normal, to_light);
     // crand: POV-Ray lowers each diffuse term by a uniform random amount in [0, crand] drawn from a per-thread
     // sequence (its order depends on threads and blocks); ours is a hash of the point and the light, so the speckle
@@ -680,10 +694,9 @@ Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 p
   const Rgb plastic = pigment * (1.0 - p) + Rgb{p, p, p};
   const Vec3 eye = -view;
   for (const RenderLight& l : scene_.lights) {
-    Rgb lc;
-    Vec3 to_light;
-    double distance;
-    if (!light_at(l, point, lc, to_light, distance)) continue;
+    const std::optional<LightRay> seen = light_at(l, point);
+    if (!seen) continue;
+    auto [lc, to_light, distance] = *seen;
     if (!l.light.shadowless) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) continue;

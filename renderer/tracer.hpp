@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <vector>
 
@@ -75,14 +76,26 @@ class Tracer {
   Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
   Rgb texture_filter(const RenderTexture& texture, const TexturePoint& at) const;
   // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
-  // (S·f + t), or for a texture_list triangle the weighted sum over its textures; `opaque` when it stops it.
-  Rgb filter_through(const SurfaceHit& hit, Vec3 at, bool& opaque);
-  // The transmitted ray (refracted, continued through ior 1, or totally reflected) of a hit, with interior fade.
-  // Returns true on total internal reflection.
-  bool transmit(const Ray& ray, const SurfaceHit& hit, Vec3 point, Vec3 normal, Vec3 raw_normal, int level,
-                double weight, const RayState& state, Radiance& out, Rgb filter, double trans);
-  Radiance trace_reflection(const Ray& ray, Vec3 point, Vec3 normal, Vec3 raw_normal, int level, double weight,
-                            const RayState& state);
+  // (S·f + t), or for a texture_list triangle the weighted sum over its textures; black when it stops it.
+  Rgb filter_through(const SurfaceHit& hit, Vec3 at);
+  // A hit being shaded and the ray that found it: where its transmitted and reflected rays start.
+  struct HitContext {
+    const Ray& ray;
+    const ShadingPoint& sp;
+    int level;
+    double weight;          // the weight of `ray`
+    const RayState& state;
+  };
+  // What the transmitted ray adds to the hit's colour, and the alpha it sets (none after total reflection).
+  struct Transmission {
+    Rgb colour;
+    double transmit = 0;
+    bool total_internal_reflection = false;
+  };
+  // The transmitted ray (refracted, continued through ior 1, or totally reflected) of a hit, with interior fade,
+  // seen through the layers' `filter` (`trans` its grey); `normal` is the top layer's.
+  Transmission transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans);
+  Radiance trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight);
   // Relative ior n_to/n_from for fresnel reflection at a surface of `self` (POV-Ray's ComputeRelativeIOR).
   double relative_ior(const InteriorRef& self, const RayState& state) const;
   InteriorRef interior_of(const SurfaceHit& hit) const;
@@ -90,10 +103,15 @@ class Tracer {
                        const RayState& state);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
                          const RayState& state);
-  // Light colour reaching `point` from light `l` before shadowing (spot and fade attenuation), plus L and
-  // the distance used by the shadow test. Returns false when the light is cut off (below 1e-10).
-  bool light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
-  bool cylinder_light_at(const RenderLight& l, Vec3 point, Rgb& colour, Vec3& to_light, double& distance) const;
+  // Light reaching a point from one light before shadowing.
+  struct LightRay {
+    Rgb colour;      // after spot and fade attenuation
+    Vec3 to_light;   // L
+    double distance; // how far the shadow test looks
+  };
+  // The light reaching `point` from light `l`; none when it is cut off (below 1e-10).
+  std::optional<LightRay> light_at(const RenderLight& l, Vec3 point) const;
+  std::optional<LightRay> cylinder_light_at(const RenderLight& l, Vec3 point) const;
   // Shadow factor along the segment point → light `l`: 0 when an opaque object blocks, a filter colour when
   // transparent objects lie in between (pipeline §3).
   Rgb shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, const RayState& state);
@@ -108,11 +126,11 @@ class Tracer {
                      const RayState& state);
   struct AreaSampling;
   Rgb area_light_shadow(const RenderLight& l, Vec3 point, Vec3 to_light, Rgb colour, const RayState& state);
-  Rgb area_sample(AreaSampling& s, int u, int v);
-  Rgb area_subset(AreaSampling& s, int u1, int v1, int u2, int v2, int level);
+  Rgb area_sample(const AreaSampling& s, int u, int v);
+  Rgb area_subset(const AreaSampling& s, int u1, int v1, int u2, int v2, int level);
   Radiance background(Vec3 direction, const RayState& state) const;
   // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
-  void apply_fog(const Ray& ray, double depth, Radiance& r) const;
+  Radiance with_fog(const Ray& ray, double depth, Radiance r) const;
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
 
   const RenderScene& scene_;
@@ -128,9 +146,17 @@ class Tracer {
   int shading_level_ = 1;   // the trace level of the hit being shaded (which cache slot its shadow rays use)
 };
 
-// Pigment colour at a point (pattern evaluated in the pigment's own space). `found` (when given) is false where
-// only image maps used `once` were met off their image (POV-Ray's Compute_Pigment result).
-Colour evaluate_pigment(const RenderPigment& pigment, const TexturePoint& at, bool* found = nullptr);
+// A pigment's colour at a point, and POV-Ray's Compute_Pigment result: not found where only image maps used
+// `once` were met off their image.
+struct PigmentSample {
+  Colour colour;
+  bool found = true;
+};
+// The pigment at a point (pattern evaluated in the pigment's own space).
+PigmentSample sample_pigment(const RenderPigment& pigment, const TexturePoint& at);
+inline Colour evaluate_pigment(const RenderPigment& pigment, const TexturePoint& at) {
+  return sample_pigment(pigment, at).colour;
+}
 inline Colour evaluate_pigment(const RenderPigment& pigment, Vec3 point) {
   return evaluate_pigment(pigment, TexturePoint(point));
 }

@@ -1,9 +1,6 @@
 // The 2-D geometry of a glyph outline shared by inside() and the renderer: POV-Ray's point-in-glyph test and its
 // quadratic solver (source/backend/shape/truetype.cpp Inside_Glyph, solve_quad, 3.7-stable). Facts reproduced:
-// - The outline is walked contour by contour from the first point, which is taken as on the curve whatever its
-//   flag says. An on-curve point ends a straight edge; an off-curve point is the control point of a quadratic
-//   piece that ends at the next point if that one is on the curve, half way to it if it is off the curve, or at
-//   the first point for the last point of the contour.
+// - The outline is walked contour by contour into straight edges and quadratic pieces (glyph_contour_walk.hpp).
 // - Straight edges: horizontal ones never cross; an edge crosses when its ends lie on opposite sides of y (a side
 //   is "below": strictly less than y), and either both ends are right of x (strictly greater), or one is and the
 //   crossing's x, found through the edge's slope, is right of x minus 1e-10.
@@ -13,6 +10,7 @@
 // - The point is inside for an odd number of crossings.
 #include <cmath>
 
+#include "runtime/glyph_contour_walk.hpp"
 #include "scene/text_description.hpp"
 
 namespace povtrace {
@@ -62,31 +60,13 @@ int curve_crossings(const double px[3], const double py[3], double x, double y) 
 }
 
 int contour_crossings(const GlyphContour& c, double x, double y) {
-  const std::size_t n = c.count();
-  if (n == 0) return 0;
   int crossings = 0;
-  double x0 = c.x[0], y0 = c.y[0];
-  for (std::size_t j = 1; j <= n; ++j) {
-    if (c.on_curve[j]) {
-      if (edge_crosses(x0, y0, c.x[j], c.y[j], x, y)) ++crossings;
-      x0 = c.x[j];
-      y0 = c.y[j];
-      continue;
-    }
-    double x2 = c.x[0], y2 = c.y[0];
-    if (j < n) {
-      x2 = c.x[j + 1];
-      y2 = c.y[j + 1];
-      if (!c.on_curve[j + 1]) {
-        x2 = 0.5 * (c.x[j] + x2);
-        y2 = 0.5 * (c.y[j] + y2);
-      }
-    }
-    const double px[3] = {x0, c.x[j], x2}, py[3] = {y0, c.y[j], y2};
-    crossings += curve_crossings(px, py, x, y);
-    x0 = x2;
-    y0 = y2;
-  }
+  walk_glyph_contour(
+      c,
+      [&](double x0, double y0, double x1, double y1) {
+        if (edge_crosses(x0, y0, x1, y1, x, y)) ++crossings;
+      },
+      [&](const double px[3], const double py[3]) { crossings += curve_crossings(px, py, x, y); });
   return crossings;
 }
 }  // namespace

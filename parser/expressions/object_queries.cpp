@@ -2,6 +2,17 @@
 // inside(O, P), min_extent(O), max_extent(O). Parser-side only — no renderer code: the inside tests of the
 // shapes povtrace describes (sphere, box, plane, CSG); the others ask the renderer's geometry.
 //
+// Why these inside tests are not routed through ObjectGeometry::prepare(...)->inside() (issue 17 asked): the
+// parser has no geometry when it runs without the renderer (ParseOptions::object_geometry null: the parser tests,
+// a parse-only tool), and there inside() of spheres, boxes, planes, meshes, texts and CSG must still answer. And
+// the two are not the same function at the edges: a plane here is tested in world space with its unit normal and
+// POV-Ray's 1e-10 band in world units, as POV-Ray keeps a transformed plane (the renderer's plane measures the band
+// in object units, so `plane { y, 0 scale <1, 0.5, 1> }` at y = 0.7e-10 is inside here and outside there); a
+// mesh counts its crossings by brute force at POV-Ray's depths (1e-6, 1e7) along the normalised inside_vector
+// (mesh_inside), the renderer through its triangle BVH and its own ray-triangle test. Answers agree away from such
+// edges (every inside() case of the parser tests gives the same through both). Routing through the renderer would
+// change parse-time results at those edges; unifying needs the renderer's plane made POV-Ray's first.
+//
 // The bounding boxes themselves are made in object_extents.cpp.
 #include <cmath>
 

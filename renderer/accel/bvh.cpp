@@ -23,13 +23,13 @@
 #include <limits>
 #include <utility>
 
+#include "renderer/accel/binned_sah.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {
 
 namespace {
 
-constexpr int bin_count = 16;
 constexpr std::uint32_t max_leaf_size = 4;
 constexpr int sah_depth_limit = 32;  // deeper than this: median splits only (bounds the tree depth)
 constexpr int stack_size = 64;
@@ -166,53 +166,19 @@ std::uint32_t Accelerator::build_node(std::uint32_t begin, std::uint32_t end, in
 
   if (extent[axis] > 0 && depth < sah_depth_limit) {
     // Binned SAH on every axis with a non-degenerate centroid extent.
-    double best_cost = std::numeric_limits<double>::infinity();
-    int best_axis = -1, best_split = -1;
-    for (int a = 0; a < 3; ++a) {
-      if (!(extent[a] > 0)) continue;
-      const double scale = bin_count / extent[a];
-      Bounds bin_bounds[bin_count];
-      std::uint32_t bin_counts[bin_count] = {};
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const std::uint32_t i = order_[k];
-        const int b = std::clamp(static_cast<int>((centroids[i][a] - centroid_bounds.lo[a]) * scale), 0, bin_count - 1);
-        ++bin_counts[b];
-        bin_bounds[b].extend(bounds[i]);
-      }
-      // Sweep from the right, then from the left, evaluating the cost of splitting after bin s.
-      double right_area[bin_count];
-      std::uint32_t right_count[bin_count];
-      Bounds acc;
-      std::uint32_t acc_count = 0;
-      for (int s = bin_count - 1; s > 0; --s) {
-        acc.extend(bin_bounds[s]);
-        acc_count += bin_counts[s];
-        right_area[s] = acc.surface_area();
-        right_count[s] = acc_count;
-      }
-      acc = Bounds{};
-      acc_count = 0;
-      for (int s = 0; s < bin_count - 1; ++s) {
-        acc.extend(bin_bounds[s]);
-        acc_count += bin_counts[s];
-        if (acc_count == 0 || right_count[s + 1] == 0) continue;
-        const double cost = acc.surface_area() * acc_count + right_area[s + 1] * right_count[s + 1];
-        if (cost < best_cost) {
-          best_cost = cost;
-          best_axis = a;
-          best_split = s;
-        }
-      }
-    }
-    if (best_axis >= 0) {
-      const double scale = bin_count / extent[best_axis];
-      const double lo = centroid_bounds.lo[best_axis];
-      auto* split = std::partition(order_.data() + begin, order_.data() + end, [&](std::uint32_t i) {
-        const int b = std::clamp(static_cast<int>((centroids[i][best_axis] - lo) * scale), 0, bin_count - 1);
-        return b <= best_split;
-      });
-      mid = static_cast<std::uint32_t>(split - order_.data());
-      axis = best_axis;
+    double scale[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a)
+      if (extent[a] > 0) scale[a] = sah_bin_count / extent[a];
+    const auto bin_of = [&](std::uint32_t i, int a) {
+      return std::clamp(static_cast<int>((centroids[i][a] - centroid_bounds.lo[a]) * scale[a]), 0, sah_bin_count - 1);
+    };
+    const SahSplit split = cheapest_sah_split<Bounds>(
+        order_.data() + begin, order_.data() + end, [&](int a) { return extent[a] > 0; }, bin_of,
+        [&](std::uint32_t i) -> const Bounds& { return bounds[i]; });
+    if (split.axis >= 0) {
+      mid = static_cast<std::uint32_t>(partition_at(order_.data() + begin, order_.data() + end, split, bin_of) -
+                                       order_.data());
+      axis = split.axis;
       split_done = mid > begin && mid < end;
     }
   }

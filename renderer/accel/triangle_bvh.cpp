@@ -9,10 +9,11 @@
 #include <array>
 #include <limits>
 
+#include "renderer/accel/binned_sah.hpp"
+
 namespace povtrace::render {
 
 namespace {
-constexpr int bin_count = 16;
 constexpr std::uint32_t max_leaf_size = 4;
 constexpr int sah_depth_limit = 32;
 
@@ -33,7 +34,7 @@ struct Box3f {
       hi[i] = std::max(hi[i], p[i]);
     }
   }
-  double area() const {
+  double surface_area() const {
     if (lo[0] > hi[0]) return 0.0;
     const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
     return 2.0 * (x * y + y * z + z * x);
@@ -104,54 +105,22 @@ class Builder {
 
   int bin_of(std::uint32_t t, int axis, const Box3f& centroid_box) const {
     const double extent = double(centroid_box.hi[axis]) - centroid_box.lo[axis];
-    const double x = (double(centroid(t, axis)) - centroid_box.lo[axis]) * (bin_count / extent);
-    return std::clamp(static_cast<int>(x), 0, bin_count - 1);
+    const double x = (double(centroid(t, axis)) - centroid_box.lo[axis]) * (sah_bin_count / extent);
+    return std::clamp(static_cast<int>(x), 0, sah_bin_count - 1);
   }
 
   // The cheapest binned SAH split over the three axes; partitions order_ and sets mid/axis. False when no split
   // separates the triangles.
   bool sah_split(std::uint32_t begin, std::uint32_t end, const Box3f& centroid_box, int& axis, std::uint32_t& mid) {
-    double best_cost = std::numeric_limits<double>::infinity();
-    int best_axis = -1, best_split = -1;
-    for (int a = 0; a < 3; ++a) {
-      if (!(centroid_box.hi[a] > centroid_box.lo[a])) continue;
-      Box3f bins[bin_count];
-      std::uint32_t counts[bin_count] = {};
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const int b = bin_of(order_[k], a, centroid_box);
-        ++counts[b];
-        bins[b].extend(boxes_[order_[k]]);
-      }
-      double right_area[bin_count];
-      std::uint32_t right_count[bin_count];
-      Box3f acc;
-      std::uint32_t acc_count = 0;
-      for (int s = bin_count - 1; s > 0; --s) {
-        acc.extend(bins[s]);
-        acc_count += counts[s];
-        right_area[s] = acc.area();
-        right_count[s] = acc_count;
-      }
-      acc = Box3f{};
-      acc_count = 0;
-      for (int s = 0; s < bin_count - 1; ++s) {
-        acc.extend(bins[s]);
-        acc_count += counts[s];
-        if (acc_count == 0 || right_count[s + 1] == 0) continue;
-        const double cost = acc.area() * acc_count + right_area[s + 1] * right_count[s + 1];
-        if (cost < best_cost) {
-          best_cost = cost;
-          best_axis = a;
-          best_split = s;
-        }
-      }
-    }
-    if (best_axis < 0) return false;
-    auto* split = std::partition(order_.data() + begin, order_.data() + end, [&](std::uint32_t t) {
-      return bin_of(t, best_axis, centroid_box) <= best_split;
-    });
-    mid = static_cast<std::uint32_t>(split - order_.data());
-    axis = best_axis;
+    const auto bin = [&](std::uint32_t t, int a) { return bin_of(t, a, centroid_box); };
+    const SahSplit split = cheapest_sah_split<Box3f>(
+        order_.data() + begin, order_.data() + end,
+        [&](int a) { return centroid_box.hi[a] > centroid_box.lo[a]; }, bin,
+        [&](std::uint32_t t) -> const Box3f& { return boxes_[t]; });
+    if (split.axis < 0) return false;
+    mid = static_cast<std::uint32_t>(partition_at(order_.data() + begin, order_.data() + end, split, bin) -
+                                     order_.data());
+    axis = split.axis;
     return mid > begin && mid < end;
   }
 

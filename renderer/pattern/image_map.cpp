@@ -23,55 +23,59 @@ double angle_around_y(double x, double z, double len) {
   return z < 0.0 ? kTwoPi - theta : theta;
 }
 
-bool planar(const ImageMapping& m, Vec3 p, double& u, double& v) {
-  if (m.once && (p.x < 0.0 || p.x > 1.0)) return false;
-  u = std::fmod(p.x * m.width, m.width);
-  if (m.once && (p.y < 0.0 || p.y > 1.0)) return false;
-  v = std::fmod(p.y * m.height, m.height);
-  return true;
+// A mapper's image position before the offsets, in pixels.
+struct MappedUv {
+  double u, v;
+};
+
+std::optional<MappedUv> planar(const ImageMapping& m, Vec3 p) {
+  if (m.once && (p.x < 0.0 || p.x > 1.0)) return std::nullopt;
+  const double u = std::fmod(p.x * m.width, m.width);
+  if (m.once && (p.y < 0.0 || p.y > 1.0)) return std::nullopt;
+  return MappedUv{u, std::fmod(p.y * m.height, m.height)};
 }
 
-bool spherical(const ImageMapping& m, Vec3 p, double& u, double& v) {
+std::optional<MappedUv> spherical(const ImageMapping& m, Vec3 p) {
   const double len = length(p);
-  if (len == 0.0) return false;
+  if (len == 0.0) return std::nullopt;
   const Vec3 d = p / len;
   const double phi = 0.5 + std::asin(d.y) / M_PI;
   const double flat = std::sqrt(d.x * d.x + d.z * d.z);
   const double theta = flat == 0.0 ? 0.0 : angle_around_y(d.x, d.z, flat) / kTwoPi;
-  u = theta * m.width;
-  v = phi * m.height;
-  return true;
+  return MappedUv{theta * m.width, phi * m.height};
 }
 
-bool cylindrical(const ImageMapping& m, Vec3 p, double& u, double& v) {
-  if (m.once && (p.y < 0.0 || p.y > 1.0)) return false;
-  v = std::fmod(p.y * m.height, m.height);
+std::optional<MappedUv> cylindrical(const ImageMapping& m, Vec3 p) {
+  if (m.once && (p.y < 0.0 || p.y > 1.0)) return std::nullopt;
+  const double v = std::fmod(p.y * m.height, m.height);
   const double len = length(p);
-  if (len == 0.0) return false;
+  if (len == 0.0) return std::nullopt;
   const double x = p.x / len, z = p.z / len;
   const double flat = std::sqrt(x * x + z * z);
-  if (flat == 0.0) return false;
-  u = angle_around_y(x, z, flat) / kTwoPi * m.width;
-  return true;
+  if (flat == 0.0) return std::nullopt;
+  return MappedUv{angle_around_y(x, z, flat) / kTwoPi * m.width, v};
 }
 
-bool torus(const ImageMapping& m, Vec3 p, double& u, double& v) {
+std::optional<MappedUv> torus(const ImageMapping& m, Vec3 p) {
   constexpr double kMajorRadius = 1.0;   // POV-Ray's image gradient x
   const double len = std::sqrt(p.x * p.x + p.z * p.z);
-  if (len == 0.0) return false;
+  if (len == 0.0) return std::nullopt;
   const double theta = -angle_around_y(p.x, p.z, len);
   const double x = len - kMajorRadius;
   const double tube = std::sqrt(x * x + p.y * p.y);
   double phi = std::acos(-x / tube);
   if (p.y > 0.0) phi = kTwoPi - phi;
-  u = -(theta / kTwoPi) * m.width;
-  v = phi / kTwoPi * m.height;
-  return true;
+  return MappedUv{-(theta / kTwoPi) * m.width, phi / kTwoPi * m.height};
 }
 
-// no_interpolation: the pixel at an integer-valued position, clamped to the edge with `once`, else wrapped; its
-// palette index (−1 for other images).
-const Texel& pixel(const MapImage& image, const ImageMapping& m, double x, double y, int& index) {
+// One pixel of a map image and its palette index (−1 for other images).
+struct IndexedTexel {
+  const Texel& colour;
+  int index;
+};
+
+// no_interpolation: the pixel at an integer-valued position, clamped to the edge with `once`, else wrapped.
+IndexedTexel pixel(const MapImage& image, const ImageMapping& m, double x, double y) {
   int ix = 0, iy = 0;
   if (m.once) {
     ix = x < 0.0 ? 0 : x >= m.columns ? m.columns - 1 : static_cast<int>(x);
@@ -80,8 +84,7 @@ const Texel& pixel(const MapImage& image, const ImageMapping& m, double x, doubl
     ix = static_cast<int>(wrap(x, m.columns));
     iy = static_cast<int>(wrap(y, m.rows));
   }
-  index = image.indexed ? image.index_at(ix, iy) : -1;
-  return image.at(ix, iy);
+  return {image.at(ix, iy), image.indexed ? image.index_at(ix, iy) : -1};
 }
 
 struct Sum {
@@ -94,17 +97,15 @@ struct Sum {
     t += c.t * w;
     index += i * w;
   }
+  void add_pixel(const MapImage& image, const ImageMapping& m, double x, double y, double w) {
+    const IndexedTexel p = pixel(image, m, x, y);
+    add(p.colour, p.index, w);
+  }
   Texel single() const {
     return {static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), static_cast<float>(f),
             static_cast<float>(t)};
   }
 };
-
-void add_pixel(Sum& s, const MapImage& image, const ImageMapping& m, double x, double y, double w) {
-  int index = -1;
-  const Texel& t = pixel(image, m, x, y, index);
-  s.add(t, index, w);
-}
 
 // Interp: the pixels at (ix, iy), (ix−1, iy), (ix, iy−1), (ix−1, iy−1) around the shifted position.
 Sum four_pixels(const MapImage& image, const ImageMapping& m, double x, double y) {
@@ -125,10 +126,10 @@ Sum four_pixels(const MapImage& image, const ImageMapping& m, double x, double y
     for (int i = 0; i < 4; ++i) w[i] = inv[i] / total;
   }
   Sum s;
-  add_pixel(s, image, m, ix, iy, w[0]);
-  add_pixel(s, image, m, ix - 1.0, iy, w[1]);
-  add_pixel(s, image, m, ix, iy - 1.0, w[2]);
-  add_pixel(s, image, m, ix - 1.0, iy - 1.0, w[3]);
+  s.add_pixel(image, m, ix, iy, w[0]);
+  s.add_pixel(image, m, ix - 1.0, iy, w[1]);
+  s.add_pixel(image, m, ix, iy - 1.0, w[2]);
+  s.add_pixel(image, m, ix - 1.0, iy - 1.0, w[3]);
   return s;
 }
 
@@ -149,7 +150,7 @@ Sum sixteen_pixels(const MapImage& image, const ImageMapping& m, double x, doubl
   cubic_weights(y, wy);
   Sum s;
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) add_pixel(s, image, m, ix + i - 2.0, iy + j - 2.0, wx[i] * wy[j]);
+    for (int j = 0; j < 4; ++j) s.add_pixel(image, m, ix + i - 2.0, iy + j - 2.0, wx[i] * wy[j]);
   return s;
 }
 }  // namespace
@@ -169,43 +170,38 @@ ImageMapping image_mapping(const ImageMap& map, const MapImage& image) {
 }
 
 std::optional<std::array<double, 2>> image_position(const ImageMapping& m, Vec3 p) {
-  double u = 0, v = 0;
-  bool on = false;
+  std::optional<MappedUv> mapped;
   switch (m.map_type) {
-    case 1: on = spherical(m, p, u, v); break;
-    case 2: on = cylindrical(m, p, u, v); break;
-    case 5: on = torus(m, p, u, v); break;
-    default: on = planar(m, p, u, v); break;
+    case 1: mapped = spherical(m, p); break;
+    case 2: mapped = cylindrical(m, p); break;
+    case 5: mapped = torus(m, p); break;
+    default: mapped = planar(m, p); break;
   }
-  if (!on) return std::nullopt;
-  u += m.offset_u + kEpsilon;
-  v += m.offset_v + kEpsilon;
+  if (!mapped) return std::nullopt;
+  const double u = mapped->u + (m.offset_u + kEpsilon);
+  const double v = mapped->v + (m.offset_v + kEpsilon);
   if (m.once && (u >= m.columns || v >= m.rows || u < 0.0 || v < 0.0)) return std::nullopt;
   // Rows count from the image's top, v upwards: v is negated.
   return std::array<double, 2>{wrap(u, m.columns), wrap(-v, m.rows)};
 }
 
-Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row, int* index) {
+ImageSample image_sample_at(const MapImage& image, const ImageMapping& m, double column, double row) {
   Sum s;
   switch (m.interpolate) {
     case 2:
     case 4: s = four_pixels(image, m, column, row); break;
     case 3: s = sixteen_pixels(image, m, column, row); break;
     default: {
-      int i = -1;
-      const Texel& t = pixel(image, m, column, row, i);
-      if (index) *index = i;
-      return t;
+      const IndexedTexel t = pixel(image, m, column, row);
+      return {t.colour, t.index};
     }
   }
-  if (index) *index = static_cast<int>(s.index);
-  return s.single();
+  return {s.single(), static_cast<int>(s.index)};
 }
 
-Colour image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p, bool& found) {
+std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p) {
   const auto at = image_position(m, p);
-  found = at.has_value();
-  if (!found) return Colour{1, 1, 1, 0, 1};
+  if (!at) return std::nullopt;
   const Texel c = image_colour_at(image, m, (*at)[0], (*at)[1]);
   return Colour{c.r, c.g, c.b, c.f, c.t};
 }

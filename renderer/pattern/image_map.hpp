@@ -36,12 +36,21 @@ ImageMapping image_mapping(const ImageMap& map, const MapImage& image);
 // The continuous image position (column, row from the top) of a pattern-space point; nothing when off the image.
 std::optional<std::array<double, 2>> image_position(const ImageMapping& m, Vec3 p);
 
-// The (interpolated) pixel colour at an image position; `index` (when given) receives the palette index, or −1 for
-// other images, interpolated and truncated as POV-Ray does (bump_map's use_index).
-Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row, int* index = nullptr);
+// The (interpolated) pixel colour at an image position, and the palette index there (−1 for other images),
+// interpolated and truncated as POV-Ray does (bump_map's use_index).
+struct ImageSample {
+  Texel colour;
+  int index = -1;
+};
+ImageSample image_sample_at(const MapImage& image, const ImageMapping& m, double column, double row);
+inline Texel image_colour_at(const MapImage& image, const ImageMapping& m, double column, double row) {
+  return image_sample_at(image, m, column, row).colour;
+}
 
-// The colour an image_map pigment gives at a pattern-space point; `found` is false off the image.
-Colour image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p, bool& found);
+// The colour an image_map pigment gives at a pattern-space point; none off the image (where the pigment is
+// kOffImageColour, filtering nothing).
+std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p);
+inline constexpr Colour kOffImageColour{1, 1, 1, 0, 1};   // clear white
 
 // An image_map pigment ready for lookups.
 struct RenderImageMap {

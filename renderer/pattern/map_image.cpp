@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "renderer/located_error.hpp"
@@ -30,19 +31,14 @@ float curve_encode(Curve c, float x) {
 
 Curve power_by_decoding(double g) { return Curve{false, static_cast<float>(1.0 / g)}; }
 
-// The curve the file's values are decoded with (png.cpp Read), and whether gamma handling is on at all.
-Curve file_curve(const image::PngSamples& png, const ImageGamma& gamma, bool& corrected) {
-  corrected = true;
+// The curve the file's values are decoded with (png.cpp Read); none when gamma handling is off.
+std::optional<Curve> file_curve(const image::PngSamples& png, const ImageGamma& gamma) {
   if (gamma.given) return gamma.given_srgb ? Curve{true, 1.0f} : power_by_decoding(gamma.given_gamma);
-  if (gamma.mode == ImageGammaMode::none) {
-    corrected = false;
-    return Curve{};
-  }
+  if (gamma.mode == ImageGammaMode::none) return std::nullopt;
   if (png.srgb_chunk) return Curve{true, 1.0f};
   if (png.file_gamma) return Curve{false, static_cast<float>(*png.file_gamma)};
   if (gamma.mode == ImageGammaMode::file_or_srgb) return Curve{true, 1.0f};
-  corrected = false;   // the working gamma both ways: POV-Ray's transcoding curve is neutral
-  return Curve{};
+  return std::nullopt;   // the working gamma both ways: POV-Ray's transcoding curve is neutral
 }
 
 // What Image::Create's grey table and Gray8 storage make of a decoded grey: the grey mix, times 255, truncated.
@@ -92,10 +88,9 @@ Texel direct_texel(const image::PngSamples& png, const ImageGamma& gamma, int x,
 
 float decode_sample(const image::PngSamples& png, const ImageGamma& gamma, unsigned s, unsigned max) {
   const float x = static_cast<float>(s) / static_cast<float>(max);
-  bool corrected = false;
-  const Curve file = file_curve(png, gamma, corrected);
-  if (!corrected) return x;
-  const float linear = curve_decode(file, x);
+  const std::optional<Curve> file = file_curve(png, gamma);
+  if (!file) return x;
+  const float linear = curve_decode(*file, x);
   return gamma.working == 1.0 ? linear : curve_encode(power_by_decoding(gamma.working), linear);
 }
 

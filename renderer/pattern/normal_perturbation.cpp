@@ -224,9 +224,8 @@ Vec3 bump_map_normal(const RenderImageMap& map, bool use_index, double amount, V
   const auto at = image_position(m, pattern_point);
   if (!at) return normal;
   double x = (*at)[0], y = (*at)[1];
-  int index[3];
-  Texel c[3];
-  c[0] = image_colour_at(image, m, x, y, &index[0]);
+  ImageSample c[3];
+  c[0] = image_sample_at(image, m, x, y);
   // One pixel left and up, then one right of that, each wrapped back into the image once.
   x -= 1.0;
   y += 1.0;
@@ -234,16 +233,17 @@ Vec3 bump_map_normal(const RenderImageMap& map, bool use_index, double amount, V
   else if (x >= m.columns) x -= m.columns;
   if (y < 0.0) y += m.rows;
   else if (y >= m.rows) y -= m.rows;
-  c[1] = image_colour_at(image, m, x, y, &index[1]);
+  c[1] = image_sample_at(image, m, x, y);
   x += 2.0;
   if (x < 0.0) x += m.columns;
   else if (x >= m.columns) x -= m.columns;
-  c[2] = image_colour_at(image, m, x, y, &index[2]);
-  const bool grey = !use_index || index[0] == -1 || index[1] == -1 || index[2] == -1;
+  c[2] = image_sample_at(image, m, x, y);
+  const bool grey = !use_index || c[0].index == -1 || c[1].index == -1 || c[2].index == -1;
   double h[3];
   for (int k = 0; k < 3; ++k)
-    h[k] = amount * (grey ? static_cast<double>(static_cast<float>(0.297 * c[k].r + 0.589 * c[k].g + 0.114 * c[k].b))
-                          : static_cast<double>(index[k]));
+    h[k] = amount * (grey ? static_cast<double>(static_cast<float>(0.297 * c[k].colour.r + 0.589 * c[k].colour.g +
+                                                                   0.114 * c[k].colour.b))
+                          : static_cast<double>(c[k].index));
   const Vec3 p1{0, h[0], 0}, p2{-1, h[1], 1}, p3{1, h[2], 1};
   const Vec3 bump = normalize(cross(p3 - p2, p1 - p2));
   // The frame around the normal: x across it and y, z completing it (POV-Ray's choice for a normal along y).

@@ -24,6 +24,7 @@
 #include <stdexcept>
 
 #include "renderer/shapes/text.hpp"
+#include "runtime/glyph_contour_walk.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -111,31 +112,11 @@ class GlyphHits {
       wall_point(t, 2.0 * yt2 * s + yt1, -2.0 * xt2 * s - xt1);
     }
   }
+  // The contour's pieces as inside_glyph walks them (runtime/glyph_contour_walk.hpp).
   void contour(const GlyphContour& c) {
-    const std::size_t n = c.count();
-    if (n == 0) return;
-    double x0 = c.x[0], y0 = c.y[0];
-    for (std::size_t j = 1; j <= n; ++j) {
-      if (c.on_curve[j]) {
-        edge(x0, y0, c.x[j], c.y[j]);
-        x0 = c.x[j];
-        y0 = c.y[j];
-        continue;
-      }
-      double x2 = c.x[0], y2 = c.y[0];
-      if (j < n) {
-        x2 = c.x[j + 1];
-        y2 = c.y[j + 1];
-        if (!c.on_curve[j + 1]) {
-          x2 = 0.5 * (c.x[j] + x2);
-          y2 = 0.5 * (c.y[j] + y2);
-        }
-      }
-      const double px[3] = {x0, c.x[j], x2}, py[3] = {y0, c.y[j], y2};
-      curve(px, py);
-      x0 = x2;
-      y0 = y2;
-    }
+    walk_glyph_contour(
+        c, [&](double x0, double y0, double x1, double y1) { edge(x0, y0, x1, y1); },
+        [&](const double px[3], const double py[3]) { curve(px, py); });
   }
 
   const Primitive& p_;

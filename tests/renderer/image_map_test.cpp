@@ -57,11 +57,9 @@ TEST(ImageMapPosition, OnceLeavesTheImageOutsideTheUnitSquare) {
   // x exactly 1 is inside the square, and fmod(1 · 4, 4) wraps it to column 0.
   expect_position(image_position(m, {1.0, 0.5, 0}), kEps, 2 - kEps);
   expect_position(image_position(m, {0.5, 0.5, 0}), 2 + kEps, 2 - kEps);
-  bool found = true;
   const MapImage image = coordinates_image(4, 4);
-  const Colour c = image_map_colour(image, m, {1.5, 0.5, 0}, found);
-  EXPECT_FALSE(found);
-  EXPECT_EQ(c, (Colour{1, 1, 1, 0, 1}));   // clear white off the image
+  EXPECT_FALSE(image_map_colour(image, m, {1.5, 0.5, 0}).has_value());
+  EXPECT_EQ(kOffImageColour, (Colour{1, 1, 1, 0, 1}));   // clear white off the image
 }
 
 TEST(ImageMapPosition, RepeatAndOffsetScaleAndShiftTheImage) {
