@@ -107,7 +107,7 @@ int container_hits(Search& s, ContainerSpan& span, RootList& out) {
 }
 }  // namespace
 
-void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void IsosurfaceShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const IsosurfaceData& d = data_of(p);
   ContainerSpan span;
   if (!container_span(p, d, ray, span)) return;
@@ -135,7 +135,7 @@ void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_point) {
+Vec3 IsosurfaceShape::normal_at(const Primitive& p, std::uint32_t side, Vec3 world_point) {
   const IsosurfaceData& d = data_of(p);
   Vec3 n{};
   if (side >= 1 && side <= 6) {
@@ -161,9 +161,8 @@ Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_po
   return n * (1.0 / length(n));
 }
 
-Vec3 isosurface_normal(const Primitive& p, Vec3 world_point) { return isosurface_hit_normal(p, 0, world_point); }
 
-bool inside_isosurface(const Primitive& p, Vec3 world_point) {
+bool IsosurfaceShape::inside(const Primitive& p, Vec3 world_point) {
   const IsosurfaceData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   bool in = true;
@@ -178,7 +177,7 @@ bool inside_isosurface(const Primitive& p, Vec3 world_point) {
   return in != p.inverse;
 }
 
-Bounds isosurface_object_bounds(const Primitive& p) {
+Bounds IsosurfaceShape::object_bounds(const Primitive& p) {
   const IsosurfaceData& d = data_of(p);
   if (!d.sphere_container) return Bounds{d.corner1, d.corner2};
   const Vec3 r{d.radius, d.radius, d.radius};
