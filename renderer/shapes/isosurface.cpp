@@ -75,17 +75,18 @@ struct Search {
   }
 };
 
-bool container_span(const Primitive& prim, const IsosurfaceData& d, const Ray& ray, ContainerSpan& s) {
+std::optional<ContainerSpan> container_span(const Primitive& prim, const IsosurfaceData& d, const Ray& ray) {
   if (d.sphere_container) {
     const LocalRay r = local_ray(prim, ray);
-    if (!sphere_container_span(r.p, r.d, d.centre, d.radius, s)) return false;
-    s.t1 /= r.len;
-    s.t2 /= r.len;
-    return true;
+    std::optional<ContainerSpan> s = sphere_container_span(r.p, r.d, d.centre, d.radius);
+    if (!s) return std::nullopt;
+    s->t1 /= r.len;
+    s->t2 /= r.len;
+    return s;
   }
   const Vec3 p = prim.transformed ? prim.object_from_world.point(ray.origin) : ray.origin;
   const Vec3 v = prim.transformed ? prim.object_from_world.vector(ray.direction) : ray.direction;
-  return box_container_span(p, v, d.corner1, d.corner2, s);
+  return box_container_span(p, v, d.corner1, d.corner2);
 }
 
 // The closed container's own hits (see the top of this file); returns how many roots they use up.
@@ -109,8 +110,9 @@ int container_hits(Search& s, ContainerSpan& span, RootList& out) {
 
 void IsosurfaceShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const IsosurfaceData& d = data_of(p);
-  ContainerSpan span;
-  if (!container_span(p, d, ray, span)) return;
+  const std::optional<ContainerSpan> found = container_span(p, d, ray);
+  if (!found) return;
+  ContainerSpan span = *found;
   if (span.t1 < 0.0) span.t1 = 0.0;
   Search s{d, p.transformed ? p.object_from_world.point(ray.origin) : ray.origin,
            p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction};

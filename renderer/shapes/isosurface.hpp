@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
@@ -29,9 +30,9 @@ struct ContainerSpan {
   int side1 = 0, side2 = 0;
 };
 // The box container met by the object-space ray p + t·d (d as transformed, not normalised): POV-Ray's Box::Intersect.
-bool box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2, ContainerSpan& span);
+std::optional<ContainerSpan> box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2);
 // The sphere container met by the object-space ray p + t·d with d unit length: POV-Ray's Sphere::Intersect.
-bool sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius, ContainerSpan& span);
+std::optional<ContainerSpan> sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius);
 
 std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso);
 
