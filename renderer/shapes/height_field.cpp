@@ -131,7 +131,7 @@ Vec3 HeightFieldShape::normal(const Primitive& p, Vec3 world_point) {
   const double x = q.x - px, z = q.z - pz;
   if (!f.smooth) {
     const bool upper = x + z > 1.0;
-    return HeightFieldShape::normal_at(p, static_cast<std::uint32_t>(pz * (f.width - 1) + px) * 2 + upper, world_point);
+    return normal_at(p, static_cast<std::uint32_t>(pz * (f.width - 1) + px) * 2 + upper, world_point);
   }
   Vec3 n[4];
   for (int k = 0; k < 4; ++k) {

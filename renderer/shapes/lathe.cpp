@@ -126,7 +126,7 @@ Vec3 LatheShape::normal(const Primitive& p, Vec3 world_point) {
   for (std::uint32_t k = 0; k < d.segments.size(); ++k)
     if (const ProfileSpot s = nearest_spot(d.segments[k], r, q.y, true); s.distance < best.distance)
       best = s, segment = k;
-  return LatheShape::normal_at(p, segment, best.w, world_point);
+  return normal_at(p, segment, best.w, world_point);
 }
 
 bool LatheShape::inside(const Primitive& p, Vec3 world_point) {

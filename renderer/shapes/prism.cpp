@@ -204,7 +204,7 @@ Vec3 PrismShape::normal(const Primitive& p, Vec3 world_point) {
       best = s, element = k;
   const double plane = std::min(std::fabs(q.y - d.height1), std::fabs(q.y - d.height2));
   if (d.closed && plane < best.distance * std::fabs(scale)) element = cap_element;
-  return PrismShape::normal_at(p, element, best.w, world_point);
+  return normal_at(p, element, best.w, world_point);
 }
 
 bool PrismShape::inside(const Primitive& p, Vec3 world_point) {

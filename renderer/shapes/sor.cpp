@@ -115,7 +115,7 @@ Vec3 SorShape::normal(const Primitive& p, Vec3 world_point) {
     element = base_element;
   }
   if (d.closed && r2 <= d.cap_radius2 && std::fabs(q.y - d.height2) < best) element = cap_element;
-  return SorShape::normal_at(p, element, world_point);
+  return normal_at(p, element, world_point);
 }
 
 bool SorShape::inside(const Primitive& p, Vec3 world_point) {
