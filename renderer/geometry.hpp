@@ -6,11 +6,13 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
 
 #include "scene/vecmath.hpp"
+#include "renderer/shapes/shape_list.hpp"
 
 namespace povtrace::render {
 
@@ -89,9 +91,12 @@ struct Bounds {
   double surface_area() const;
 };
 
-enum class ShapeType : std::uint8_t { sphere, plane, box, cylinder, cone, disc, torus, poly, triangle, polygon, mesh,
-                                     quadric, superellipsoid, height_field, blob, csg, text, lathe, prism, sor,
-                                     isosurface };
+// One enumerator per registered shape, in the order of renderer/shapes/shape_list.hpp.
+enum class ShapeType : std::uint8_t {
+#define POVTRACE_SHAPE_ENUMERATOR(name, Shape) name,
+  POVTRACE_SHAPES(POVTRACE_SHAPE_ENUMERATOR)
+#undef POVTRACE_SHAPE_ENUMERATOR
+};
 
 // Shape parameters too large or too varied for Primitive's inline fields (CSG children, meshes, polygons): a shape
 // derives its own data from this. Shared, not copied, between primitives (a declared mesh placed many times is
@@ -127,6 +132,10 @@ struct Primitive {
   std::shared_ptr<const ShapeData> data;   // the shape's out-of-line parameters, if it has any
   std::uint32_t element_materials = 0;     // meshes: material of texture k of the mesh's list is this + k
 };
+
+// A primitive of `type` placed by `world_from_object` (marked transformed unless that is the identity), with the
+// shape parameters and the material, object and flags still to set.
+Primitive placed_primitive(ShapeType type, const Matrix& world_from_object);
 
 // One intersection of a ray with a surface, with what shading needs to know about where it is.
 struct SurfaceHit {
@@ -178,7 +187,10 @@ Intersections intersect_all(const Primitive& p, const Ray& ray);
 // every shape.
 void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
 
-// The nearest intersection of p with depth in (t_min, t_max); false if there is none. Works for every shape.
+// The nearest intersection of p with depth in (t_min, t_max), if there is one. Works for every shape.
+std::optional<SurfaceHit> nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max);
+// The same through an out-reference, for renderer/tracer.cpp until it takes the value form (another change owns
+// that file); new code uses the form above.
 bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
 
 // World-space unit normal at a world-space point on the primitive (not flipped toward the ray; `inverse` does

@@ -100,11 +100,11 @@ inline void consider(const Primitive& p, std::uint32_t i, const Ray& ray, double
     }
     return;
   }
-  SurfaceHit hit;
-  if (!nearest_hit(p, ray, t_min, t_max, hit)) return;
-  best.t = hit.t;
+  const std::optional<SurfaceHit> hit = nearest_hit(p, ray, t_min, t_max);
+  if (!hit) return;
+  best.t = hit->t;
   best.primitive = i;
-  best.surface = hit;
+  best.surface = *hit;
 }
 
 Hit to_hit(const Nearest& best) {

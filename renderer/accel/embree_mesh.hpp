@@ -1,4 +1,4 @@
-// Embree 3's BVH over one mesh's triangles, for nearest hits only (renderer/shapes/mesh.cpp nearest_mesh_hit).
+// Embree 3's BVH over one mesh's triangles, for nearest hits only (renderer/shapes/mesh.cpp MeshShape::nearest).
 //
 // Why: on the bench's 100k-triangle torus, finding the nearest triangle through Embree made povtrace's whole render
 // 2.6x faster than its own TriangleBvh walk (1.5x at 10k triangles), images unchanged. Embree answers in single

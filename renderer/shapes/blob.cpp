@@ -187,7 +187,7 @@ bool one_signed(const double* c, double l, double w) {
 }
 }  // namespace
 
-void blob_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void BlobShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const BlobData& b = data_of(p);
   Vec3 o = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
   Vec3 d = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
@@ -290,7 +290,7 @@ Vec3 element_normal(const BlobElement& e, Vec3 q) {
 }
 }  // namespace
 
-Vec3 blob_normal(const Primitive& p, Vec3 world_point) {
+Vec3 BlobShape::normal(const Primitive& p, Vec3 world_point) {
   const BlobData& b = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   Vec3 n{};
@@ -302,7 +302,7 @@ Vec3 blob_normal(const Primitive& p, Vec3 world_point) {
   return w * (1.0 / length(w));
 }
 
-bool inside_blob(const Primitive& p, Vec3 world_point) {
+bool BlobShape::inside(const Primitive& p, Vec3 world_point) {
   const BlobData& b = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   double density = 0;
@@ -310,7 +310,7 @@ bool inside_blob(const Primitive& p, Vec3 world_point) {
   return (density > b.threshold - inside_tolerance) != p.inverse;
 }
 
-Bounds blob_object_bounds(const Primitive& p) {
+Bounds BlobShape::object_bounds(const Primitive& p) {
   Bounds out;
   for (const auto& e : data_of(p).elements) {
     if (!(e.c[2] > 0.0)) continue;

@@ -6,6 +6,8 @@
 
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/many_roots.hpp"
+#include "renderer/shapes/solid_shapes.hpp"
 
 namespace povtrace::render {
 
@@ -28,3 +30,19 @@ struct BlobData : ShapeData {
 std::shared_ptr<BlobData> blob_data(const Blob& b);
 
 }  // namespace povtrace::render
+
+namespace povtrace::render::shapes {
+
+// blob (blob.cpp, built by blob_build.cpp): BlobData in object space.
+struct BlobShape {
+  using Description = Blob;
+  static Primitive build(const Blob& description, const Matrix& world_from_object) {
+    return make_blob(description, world_from_object);
+  }
+  static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
+  static Vec3 normal(const Primitive& p, Vec3 world_point);
+  static bool inside(const Primitive& p, Vec3 world_point);
+  static Bounds object_bounds(const Primitive& p);
+};
+
+}  // namespace povtrace::render::shapes

@@ -20,11 +20,12 @@
 //   near-tie of two slabs (within CLOSE_TOLERANCE) the depth is the earlier slab's and the face is the one the
 //   ray runs more steeply into. Those ties lie within 1e-6 of an edge in depth, a sliver at ordinary scales but
 //   a whole pixel once the box is 1e-4 across. Transformed boxes carry the axis normal to world space by the
-//   inverse transpose and normalise it. box_normal, for callers that have only a point, picks the face whose
+//   inverse transpose and normalise it. BoxShape::normal, for callers that have only a point, picks the face whose
 //   plane is nearest to it.
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/box.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -32,7 +33,7 @@ namespace {
 constexpr double close_tolerance = 1e-6;  // boxes.cpp CLOSE_TOLERANCE: slab depths this close count as a tie
 }
 
-Intersections intersect_box(const Primitive& p, const Ray& ray) {
+Intersections BoxShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const Vec3 origin = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
   const Vec3 direction = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
@@ -85,7 +86,7 @@ Intersections intersect_box(const Primitive& p, const Ray& ray) {
 }
 
 // POV-Ray's Box::Normal: the axis normal of the face recorded with the root, carried to world space.
-Vec3 box_face_normal(const Primitive& p, std::uint32_t side) {
+Vec3 BoxShape::face_normal(const Primitive& p, std::uint32_t side) {
   Vec3 n{};
   n[static_cast<int>(side / 2)] = side % 2 == 1 ? 1.0 : -1.0;
   if (!p.transformed) return n;
@@ -93,7 +94,7 @@ Vec3 box_face_normal(const Primitive& p, std::uint32_t side) {
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-Vec3 box_normal(const Primitive& p, Vec3 world_point) {
+Vec3 BoxShape::normal(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   int best_axis = 0;
   double best_sign = -1.0;
@@ -119,13 +120,20 @@ Vec3 box_normal(const Primitive& p, Vec3 world_point) {
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_box(const Primitive& p, Vec3 world_point) {
+bool BoxShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   for (int axis = 0; axis < 3; ++axis)
     if (q[axis] < p.a[axis] || q[axis] > p.b[axis]) return p.inverse;
   return !p.inverse;
 }
 
-Bounds box_object_bounds(const Primitive& p) { return Bounds{p.a, p.b}; }
+Bounds BoxShape::object_bounds(const Primitive& p) { return Bounds{p.a, p.b}; }
+
+Primitive BoxShape::build(const Box& box, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::box, world_from_object);
+  p.a = box.corner1;
+  p.b = box.corner2;
+  return p;
+}
 
 }  // namespace povtrace::render::shapes

@@ -20,6 +20,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/insert_sorted.hpp"
+#include "renderer/shapes/cone.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -29,7 +30,7 @@ constexpr double cone_depth = 1e-9;   // cones.cpp Cone_Tolerance
 bool depth_ok(double t) { return t > cone_depth && t < tolerance::max_distance; }
 }  // namespace
 
-Intersections intersect_cone(const Primitive& p, const Ray& ray) {
+Intersections ConeShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const double dist = p.radius;
   const Vec3 o = p.object_from_world.point(ray.origin);
@@ -66,7 +67,7 @@ Intersections intersect_cone(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 cone_normal(const Primitive& p, Vec3 world_point) {
+Vec3 ConeShape::normal(const Primitive& p, Vec3 world_point) {
   const double dist = p.radius;
   const Vec3 q = p.object_from_world.point(world_point);
   Vec3 n{q.x, q.y, -q.z};
@@ -81,7 +82,7 @@ Vec3 cone_normal(const Primitive& p, Vec3 world_point) {
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_cone(const Primitive& p, Vec3 world_point) {
+bool ConeShape::inside(const Primitive& p, Vec3 world_point) {
   const double dist = p.radius;
   const Vec3 q = p.object_from_world.point(world_point);
   const double e = p.b.x != 0.0 ? -tolerance::epsilon : tolerance::epsilon;
@@ -89,6 +90,6 @@ bool inside_cone(const Primitive& p, Vec3 world_point) {
   return outside == p.inverse;
 }
 
-Bounds cone_object_bounds(const Primitive& p) { return Bounds{Vec3{-1, -1, p.radius}, Vec3{1, 1, 1}}; }
+Bounds ConeShape::object_bounds(const Primitive& p) { return Bounds{Vec3{-1, -1, p.radius}, Vec3{1, 1, 1}}; }
 
 }  // namespace povtrace::render::shapes

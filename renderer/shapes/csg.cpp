@@ -126,7 +126,7 @@ bool survives(const CsgData& d, std::size_t hit_child, Vec3 point, std::uint8_t 
 
 namespace shapes {
 
-void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+void CsgShape::collect(const Primitive& p, const Ray& ray, HitBuffer& out) {
   const CsgData& d = csg_data(p);
   if (d.bounding_box.finite() && !ray_meets(d.bounding_box, ray)) return;
   if (!d.bounds.empty() && !ray_in_bounds(d, ray, out)) return;
@@ -144,42 +144,37 @@ void collect_csg_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   }
 }
 
-bool nearest_csg_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+std::optional<SurfaceHit> CsgShape::nearest(const Primitive& p, const Ray& ray, double t_min, double t_max) {
   // One scratch buffer per thread, used as a stack so that nested use could never clobber an outer caller.
   thread_local HitBuffer scratch;
   const std::size_t base = scratch.size();
-  collect_csg_hits(p, ray, scratch);
-  bool found = false;
-  SurfaceHit best;
+  collect(p, ray, scratch);
+  std::optional<SurfaceHit> best;
   for (std::size_t k = base; k < scratch.size(); ++k) {
     const SurfaceHit& h = scratch[k];
-    if (h.t > t_min && h.t < t_max && (!found || h.t < best.t)) {
-      best = h;
-      found = true;
-    }
+    if (h.t > t_min && h.t < t_max && (!best || h.t < best->t)) best = h;
   }
   scratch.resize(base);
-  if (found) hit = best;
-  return found;
+  return best;
 }
 
-bool inside_csg(const Primitive& p, Vec3 world_point) {
+bool CsgShape::inside(const Primitive& p, Vec3 world_point) {
   const CsgData& d = csg_data(p);
   if (!inside_all(d.clips, world_point)) return false;
   if (d.operation == CsgOperation::intersection) return inside_all(d.children, world_point);
   for (const Primitive& child : d.children)
-    if (inside(child, world_point)) return true;
+    if (render::inside(child, world_point)) return true;
   return false;
 }
 
-Bounds csg_world_bounds(const Primitive& p) {
+Bounds CsgShape::world_bounds(const Primitive& p) {
   const CsgData& d = csg_data(p);
   // No surface can survive: a point box keeps the node in the BVH rather than in the list every ray tests.
   if (is_empty(d.surface)) return Bounds{{0, 0, 0}, {0, 0, 0}};
   return d.surface;
 }
 
-Vec3 csg_normal(const Primitive&, Vec3) {
+Vec3 CsgShape::normal(const Primitive&, Vec3) {
   throw std::logic_error("a CSG node has no surface of its own: its hits carry the child primitive as leaf");
 }
 

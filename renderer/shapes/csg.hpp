@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 
 namespace povtrace::render {
@@ -59,3 +60,19 @@ Primitive inverted(const Primitive& p);
 Bounds solid_extent(const Primitive& p);
 
 }  // namespace povtrace::render
+
+namespace povtrace::render::shapes {
+
+// CSG nodes (csg.cpp): hits come from the children through collect_hits, so there is no intersect; a node has no
+// surface of its own (its hits carry the child as leaf). Built by renderer/csg_build.cpp from the description
+// (it needs the materials of the children), so there is no build here.
+struct CsgShape {
+  using Description = Csg;
+  static void collect(const Primitive& p, const Ray& ray, HitBuffer& out);   // appends every hit
+  static std::optional<SurfaceHit> nearest(const Primitive& p, const Ray& ray, double t_min, double t_max);
+  static Vec3 normal(const Primitive& p, Vec3 world_point);
+  static bool inside(const Primitive& p, Vec3 world_point);
+  static Bounds world_bounds(const Primitive& p);
+};
+
+}  // namespace povtrace::render::shapes

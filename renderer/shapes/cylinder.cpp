@@ -22,6 +22,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/insert_sorted.hpp"
+#include "renderer/shapes/cylinder.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -31,7 +32,7 @@ constexpr double cone_depth = 1e-9;   // cones.cpp Cone_Tolerance
 bool depth_ok(double t) { return t > cone_depth && t < tolerance::max_distance; }
 }  // namespace
 
-Intersections intersect_cylinder(const Primitive& p, const Ray& ray) {
+Intersections CylinderShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const Vec3 o = p.object_from_world.point(ray.origin);
   Vec3 d = p.object_from_world.vector(ray.direction);
@@ -61,7 +62,7 @@ Intersections intersect_cylinder(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 cylinder_normal(const Primitive& p, Vec3 world_point) {
+Vec3 CylinderShape::normal(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.object_from_world.point(world_point);
   Vec3 n{q.x, q.y, 0.0};
   if (p.b.x != 0.0) {
@@ -74,13 +75,13 @@ Vec3 cylinder_normal(const Primitive& p, Vec3 world_point) {
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_cylinder(const Primitive& p, Vec3 world_point) {
+bool CylinderShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.object_from_world.point(world_point);
   const double e = p.b.x != 0.0 ? -tolerance::epsilon : tolerance::epsilon;
   const bool outside = q.x * q.x + q.y * q.y > 1.0 + e || q.z < -e || q.z > 1.0 + e;
   return outside == p.inverse;
 }
 
-Bounds cylinder_object_bounds(const Primitive&) { return Bounds{Vec3{-1, -1, 0}, Vec3{1, 1, 1}}; }
+Bounds CylinderShape::object_bounds(const Primitive&) { return Bounds{Vec3{-1, -1, 0}, Vec3{1, 1, 1}}; }
 
 }  // namespace povtrace::render::shapes

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/disc.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -23,7 +24,7 @@ constexpr double disc_depth = 1e-6;        // discs.cpp DEPTH_TOLERANCE
 constexpr double small_tolerance = 1e-3;   // SMALL_TOLERANCE, the disc's bounding box thickness
 }  // namespace
 
-Intersections intersect_disc(const Primitive& p, const Ray& ray) {
+Intersections DiscShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const Vec3 o = p.object_from_world.point(ray.origin);
   Vec3 d = p.object_from_world.vector(ray.direction);
@@ -40,14 +41,14 @@ Intersections intersect_disc(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 disc_normal(const Primitive& p, Vec3) { return p.b; }
+Vec3 DiscShape::normal(const Primitive& p, Vec3) { return p.b; }
 
-bool inside_disc(const Primitive& p, Vec3 world_point) {
+bool DiscShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.object_from_world.point(world_point);
   return (q.z >= 0.0) == p.inverse;
 }
 
-Bounds disc_object_bounds(const Primitive& p) {
+Bounds DiscShape::object_bounds(const Primitive& p) {
   const double r = std::sqrt(p.a.y);
   return Bounds{Vec3{-r, -r, -small_tolerance}, Vec3{r, r, small_tolerance}};
 }

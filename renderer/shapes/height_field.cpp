@@ -96,7 +96,7 @@ struct AxisWalk {
 };
 }  // namespace
 
-void height_field_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void HeightFieldShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const HeightFieldData& f = data_of(p);
   const Vec3 o = p.object_from_world.point(ray.origin), d = p.object_from_world.vector(ray.direction);
   double lo = 0, hi = 0;
@@ -122,9 +122,8 @@ void height_field_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point);
 
-Vec3 height_field_normal(const Primitive& p, Vec3 world_point) {
+Vec3 HeightFieldShape::normal(const Primitive& p, Vec3 world_point) {
   const HeightFieldData& f = data_of(p);
   const Vec3 q = p.object_from_world.point(world_point);
   // POV-Ray truncates and caps at the last cell; for the points of hits (x, z >= −1e-4) flooring and clamping agree.
@@ -132,7 +131,7 @@ Vec3 height_field_normal(const Primitive& p, Vec3 world_point) {
   const double x = q.x - px, z = q.z - pz;
   if (!f.smooth) {
     const bool upper = x + z > 1.0;
-    return height_field_hit_normal(p, static_cast<std::uint32_t>(pz * (f.width - 1) + px) * 2 + upper, world_point);
+    return normal_at(p, static_cast<std::uint32_t>(pz * (f.width - 1) + px) * 2 + upper, world_point);
   }
   Vec3 n[4];
   for (int k = 0; k < 4; ++k) {
@@ -145,9 +144,9 @@ Vec3 height_field_normal(const Primitive& p, Vec3 world_point) {
   return r * (1.0 / length(r));
 }
 
-Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point) {
+Vec3 HeightFieldShape::normal_at(const Primitive& p, std::uint32_t element, Vec3 world_point) {
   const HeightFieldData& f = data_of(p);
-  if (f.smooth) return height_field_normal(p, world_point);
+  if (f.smooth) return HeightFieldShape::normal(p, world_point);
   const int cell = static_cast<int>(element / 2), x = cell % (f.width - 1), z = cell / (f.width - 1);
   const double y1 = f.height(x, z), y2 = f.height(x + 1, z), y3 = f.height(x, z + 1), y4 = f.height(x + 1, z + 1);
   const Vec3 n = element % 2 ? Vec3{y3 - y4, 1.0, y2 - y4} : Vec3{y1 - y2, 1.0, y1 - y3};
@@ -155,7 +154,7 @@ Vec3 height_field_hit_normal(const Primitive& p, std::uint32_t element, Vec3 wor
   return w * (1.0 / length(w));
 }
 
-bool inside_height_field(const Primitive& p, Vec3 world_point) {
+bool HeightFieldShape::inside(const Primitive& p, Vec3 world_point) {
   const HeightFieldData& f = data_of(p);
   const Vec3 q = p.object_from_world.point(world_point);
   if (q.x < 0.0 || q.x >= f.width - 1.0 || q.z < 0.0 || q.z >= f.depth - 1.0 || q.y >= f.top) return p.inverse;
@@ -177,7 +176,7 @@ bool inside_height_field(const Primitive& p, Vec3 world_point) {
   return (dot(q, n) < dot(corner, n)) != p.inverse;
 }
 
-Bounds height_field_object_bounds(const Primitive& p) {
+Bounds HeightFieldShape::object_bounds(const Primitive& p) {
   const HeightFieldData& f = data_of(p);
   return Bounds{Vec3{0, f.bottom, 0}, Vec3{f.width - 1.0, f.top, f.depth - 1.0}};
 }

@@ -7,7 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include "scene/description.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/many_roots.hpp"
 
 namespace povtrace::render {
 
@@ -28,3 +30,23 @@ std::shared_ptr<HeightFieldData> height_field_data(std::vector<std::uint16_t> he
 Primitive place_height_field(std::shared_ptr<const HeightFieldData> data, const Matrix& world_from_object);
 
 }  // namespace povtrace::render
+
+namespace povtrace::render::shapes {
+
+// height_field (height_field.cpp, built by height_field_build.cpp): HeightFieldData in the unit-cell space of
+// place_height_field. A hit's element is the triangle: 2 · cell + (upper triangle).
+struct HeightFieldShape {
+  using Description = HeightField;
+  // Reads the image (or samples the pigment function) now; a missing or unreadable file is a ParseError at the
+  // file name in the scene.
+  static Primitive build(const HeightField& description, const Matrix& world_from_object);
+  static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
+  // The flat triangle's (or smoothed) normal: the one hit decides (POV-Ray keeps its normal with the intersection).
+  static Vec3 normal_at(const Primitive& p, std::uint32_t element, Vec3 world_point);
+  static Vec3 hit_normal(const SurfaceHit& hit, Vec3 world_point) { return normal_at(*hit.leaf, hit.element, world_point); }
+  static Vec3 normal(const Primitive& p, Vec3 world_point);
+  static bool inside(const Primitive& p, Vec3 world_point);
+  static Bounds object_bounds(const Primitive& p);
+};
+
+}  // namespace povtrace::render::shapes

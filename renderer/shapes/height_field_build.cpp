@@ -17,11 +17,14 @@
 #include <cmath>
 #include <fstream>
 
+#include "runtime/image_files.hpp"
 #include "renderer/located_error.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/image/png_samples.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
+#include "renderer/pattern/render_pigment.hpp"
+#include "renderer/tracer.hpp"
 
 namespace povtrace::render {
 
@@ -175,6 +178,37 @@ Primitive place_height_field(std::shared_ptr<const HeightFieldData> data, const 
 
 Primitive make_height_field(const HeightField& h, const Matrix& world_from_object) {
   return place_height_field(read_height_field(h), world_from_object);
+}
+
+namespace {
+// A height field made from a pigment function (`function W, H { pigment { … } }`): POV-Ray's Make_Pattern_Image
+// stores the pigment's colour at (j / (W − 1), i / (H − 1), 0) in a 16-bit RGBA image (each channel as
+// sdl::function_image_value keeps it), and image_height_at reads a 16-bit colour image as its grey
+// 0.297 r + 0.589 g + 0.114 b, · 65535, truncated. The image's bottom row is the height field's z = 0.
+
+HeightField with_pigment_samples(const HeightField& description) {
+  const HeightField* h = &description;
+  if (!h->pigment_function) return description;
+  RenderPigment pigment = build_render_pigment(*h->pigment_function);
+  set_generator(pigment, static_cast<NoiseGenerator>(h->noise_generator));
+  const int w = h->samples_width, d = h->samples_depth;
+  auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(w) * d);
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < w; ++j) {
+      const Vec3 p{static_cast<double>(j) / (w - 1), static_cast<double>(i) / (d - 1), 0.0};
+      const Colour c = evaluate_pigment(pigment, p);
+      const double grey = 0.297 * sdl::function_image_value(c.r) + 0.589 * sdl::function_image_value(c.g) +
+                          0.114 * sdl::function_image_value(c.b);
+      (*samples)[static_cast<std::size_t>(d - 1 - i) * w + j] = static_cast<std::uint16_t>(grey * 65535.0f);
+    }
+  HeightField sampled = *h;
+  sampled.samples = std::move(samples);
+  return sampled;
+}
+}  // namespace
+
+Primitive shapes::HeightFieldShape::build(const HeightField& description, const Matrix& world_from_object) {
+  return make_height_field(with_pigment_samples(description), world_from_object);
 }
 
 }  // namespace povtrace::render

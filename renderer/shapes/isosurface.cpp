@@ -75,17 +75,18 @@ struct Search {
   }
 };
 
-bool container_span(const Primitive& prim, const IsosurfaceData& d, const Ray& ray, ContainerSpan& s) {
+std::optional<ContainerSpan> container_span(const Primitive& prim, const IsosurfaceData& d, const Ray& ray) {
   if (d.sphere_container) {
     const LocalRay r = local_ray(prim, ray);
-    if (!sphere_container_span(r.p, r.d, d.centre, d.radius, s)) return false;
-    s.t1 /= r.len;
-    s.t2 /= r.len;
-    return true;
+    std::optional<ContainerSpan> s = sphere_container_span(r.p, r.d, d.centre, d.radius);
+    if (!s) return std::nullopt;
+    s->t1 /= r.len;
+    s->t2 /= r.len;
+    return s;
   }
   const Vec3 p = prim.transformed ? prim.object_from_world.point(ray.origin) : ray.origin;
   const Vec3 v = prim.transformed ? prim.object_from_world.vector(ray.direction) : ray.direction;
-  return box_container_span(p, v, d.corner1, d.corner2, s);
+  return box_container_span(p, v, d.corner1, d.corner2);
 }
 
 // The closed container's own hits (see the top of this file); returns how many roots they use up.
@@ -107,10 +108,11 @@ int container_hits(Search& s, ContainerSpan& span, RootList& out) {
 }
 }  // namespace
 
-void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void IsosurfaceShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const IsosurfaceData& d = data_of(p);
-  ContainerSpan span;
-  if (!container_span(p, d, ray, span)) return;
+  const std::optional<ContainerSpan> found = container_span(p, d, ray);
+  if (!found) return;
+  ContainerSpan span = *found;
   if (span.t1 < 0.0) span.t1 = 0.0;
   Search s{d, p.transformed ? p.object_from_world.point(ray.origin) : ray.origin,
            p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction};
@@ -135,7 +137,7 @@ void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_point) {
+Vec3 IsosurfaceShape::normal_at(const Primitive& p, std::uint32_t side, Vec3 world_point) {
   const IsosurfaceData& d = data_of(p);
   Vec3 n{};
   if (side >= 1 && side <= 6) {
@@ -161,9 +163,8 @@ Vec3 isosurface_hit_normal(const Primitive& p, std::uint32_t side, Vec3 world_po
   return n * (1.0 / length(n));
 }
 
-Vec3 isosurface_normal(const Primitive& p, Vec3 world_point) { return isosurface_hit_normal(p, 0, world_point); }
 
-bool inside_isosurface(const Primitive& p, Vec3 world_point) {
+bool IsosurfaceShape::inside(const Primitive& p, Vec3 world_point) {
   const IsosurfaceData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   bool in = true;
@@ -178,7 +179,7 @@ bool inside_isosurface(const Primitive& p, Vec3 world_point) {
   return in != p.inverse;
 }
 
-Bounds isosurface_object_bounds(const Primitive& p) {
+Bounds IsosurfaceShape::object_bounds(const Primitive& p) {
   const IsosurfaceData& d = data_of(p);
   if (!d.sphere_container) return Bounds{d.corner1, d.corner2};
   const Vec3 r{d.radius, d.radius, d.radius};

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/many_roots.hpp"
+#include "renderer/shapes/solid_shapes.hpp"
 
 namespace povtrace::render {
 
@@ -27,10 +30,29 @@ struct ContainerSpan {
   int side1 = 0, side2 = 0;
 };
 // The box container met by the object-space ray p + t·d (d as transformed, not normalised): POV-Ray's Box::Intersect.
-bool box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2, ContainerSpan& span);
+std::optional<ContainerSpan> box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2);
 // The sphere container met by the object-space ray p + t·d with d unit length: POV-Ray's Sphere::Intersect.
-bool sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius, ContainerSpan& span);
+std::optional<ContainerSpan> sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius);
 
 std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso);
 
 }  // namespace povtrace::render
+
+namespace povtrace::render::shapes {
+
+// isosurface (isosurface.cpp, isosurface_container.cpp): IsosurfaceData in object space. A hit's element is the
+// container face it lies on (0 for the function's own surface).
+struct IsosurfaceShape {
+  using Description = Isosurface;
+  static Primitive build(const Isosurface& description, const Matrix& world_from_object) {
+    return make_isosurface(description, world_from_object);
+  }
+  static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
+  static Vec3 normal_at(const Primitive& p, std::uint32_t side, Vec3 world_point);
+  static Vec3 hit_normal(const SurfaceHit& hit, Vec3 world_point) { return normal_at(*hit.leaf, hit.element, world_point); }
+  static Vec3 normal(const Primitive& p, Vec3 world_point) { return normal_at(p, 0, world_point); }
+  static bool inside(const Primitive& p, Vec3 world_point);
+  static Bounds object_bounds(const Primitive& p);
+};
+
+}  // namespace povtrace::render::shapes

@@ -28,18 +28,18 @@ bool tie_prefers(Vec3 d, int axis, int current) {
 }
 }  // namespace
 
-bool box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2, ContainerSpan& s) {
-  s = ContainerSpan{0.0, tolerance::bound_huge, 0, 0};
+std::optional<ContainerSpan> box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2) {
+  ContainerSpan s{0.0, tolerance::bound_huge, 0, 0};
   for (int axis = 0; axis < 3; ++axis) {
     const double v = d[axis];
     if (!(v < -tolerance::epsilon || v > tolerance::epsilon)) {
-      if (p[axis] < corner1[axis] || p[axis] > corner2[axis]) return false;
+      if (p[axis] < corner1[axis] || p[axis] > corner2[axis]) return std::nullopt;
       continue;
     }
     const bool ahead = v > 0.0;
     const double tie = axis == 0 ? 0.0 : close_tolerance;
     double t = ((ahead ? corner2 : corner1)[axis] - p[axis]) / v;
-    if (t < s.t1) return false;
+    if (t < s.t1) return std::nullopt;
     if (t <= s.t2 - tie) {
       s.side2 = side_of(axis, ahead), s.t2 = t;
     } else if (axis > 0 && t <= s.t2 + tie && tie_prefers(d, axis, s.side2)) {
@@ -47,25 +47,25 @@ bool box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Vec3 corner2, ContainerSpa
     }
     t = ((ahead ? corner1 : corner2)[axis] - p[axis]) / v;
     if (t >= s.t1 + tie) {
-      if (t > s.t2) return false;
+      if (t > s.t2) return std::nullopt;
       s.side1 = side_of(axis, !ahead), s.t1 = t;
     } else if (axis > 0 && t >= s.t1 - tie && tie_prefers(d, axis, s.side1)) {
       s.side1 = side_of(axis, !ahead);
     }
   }
-  return s.t2 >= box_depth;
+  if (!(s.t2 >= box_depth)) return std::nullopt;
+  return s;
 }
 
-bool sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius, ContainerSpan& s) {
+std::optional<ContainerSpan> sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius) {
   const Vec3 to_centre = centre - p;
   const double oc2 = dot(to_centre, to_centre), r2 = radius * radius;
   const double closest = dot(to_centre, d);
-  if (oc2 >= r2 && closest < tolerance::epsilon) return false;
+  if (oc2 >= r2 && closest < tolerance::epsilon) return std::nullopt;
   const double half2 = r2 - oc2 + closest * closest;
-  if (!(half2 > tolerance::epsilon)) return false;
+  if (!(half2 > tolerance::epsilon)) return std::nullopt;
   const double half = std::sqrt(half2);
-  s = ContainerSpan{closest - half, closest + half, 0, 0};
-  return true;
+  return ContainerSpan{closest - half, closest + half, 0, 0};
 }
 
 }  // namespace povtrace::render

@@ -22,6 +22,7 @@
 #include "renderer/shapes/many_roots.hpp"
 #include "renderer/shapes/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
+#include "renderer/shapes/lathe.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -85,7 +86,7 @@ bool misses_bounds(const LatheData& d, const LocalRay& r) {
 int degree_of(SplineKind s) { return s == SplineKind::linear ? 2 : s == SplineKind::quadratic ? 4 : 6; }
 }  // namespace
 
-void lathe_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void LatheShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const LatheData& d = data_of(p);
   const LocalRay r = local_ray(p, ray);
   if (d.segments.empty() || misses_bounds(d, r)) return;
@@ -101,7 +102,7 @@ void lathe_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 lathe_hit_normal(const Primitive& p, std::uint32_t segment, double w, Vec3 world_point) {
+Vec3 LatheShape::normal_at(const Primitive& p, std::uint32_t segment, double w, Vec3 world_point) {
   const ProfileSegment& s = data_of(p).segments[segment];
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   Vec3 n{0, 1, 0};
@@ -115,7 +116,7 @@ Vec3 lathe_hit_normal(const Primitive& p, std::uint32_t segment, double w, Vec3 
 }
 
 // The normal at a point without its hit: the segment point nearest in the profile plane decides.
-Vec3 lathe_normal(const Primitive& p, Vec3 world_point) {
+Vec3 LatheShape::normal(const Primitive& p, Vec3 world_point) {
   const LatheData& d = data_of(p);
   if (d.segments.empty()) return {0, 1, 0};
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
@@ -125,10 +126,10 @@ Vec3 lathe_normal(const Primitive& p, Vec3 world_point) {
   for (std::uint32_t k = 0; k < d.segments.size(); ++k)
     if (const ProfileSpot s = nearest_spot(d.segments[k], r, q.y, true); s.distance < best.distance)
       best = s, segment = k;
-  return lathe_hit_normal(p, segment, best.w, world_point);
+  return normal_at(p, segment, best.w, world_point);
 }
 
-bool inside_lathe(const Primitive& p, Vec3 world_point) {
+bool LatheShape::inside(const Primitive& p, Vec3 world_point) {
   const LatheData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   int crossings = 0;
@@ -147,7 +148,7 @@ bool inside_lathe(const Primitive& p, Vec3 world_point) {
   return (crossings % 2 == 1) != p.inverse;
 }
 
-Bounds lathe_object_bounds(const Primitive& p) {
+Bounds LatheShape::object_bounds(const Primitive& p) {
   const LatheData& d = data_of(p);
   if (d.segments.empty()) return {};
   return Bounds{{-d.radius2, d.height1, -d.radius2}, {d.radius2, d.height2, d.radius2}};

@@ -1,9 +1,12 @@
 // The shapes whose rays can meet them more often than Intersections holds (superellipsoid, blob, lathe, sor,
-// prism, height_field): each appends its roots to a RootList, and many_roots.cpp answers intersect_all,
-// collect_hits and nearest_hit for all of them from that list.
+// prism, height_field, isosurface): each has roots(), which appends its roots to a RootList, and the templates here
+// answer intersect_all, collect_hits and nearest_hit for all of them from that list (shape_registry.hpp picks them
+// for every shape with roots()).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "renderer/geometry.hpp"
@@ -21,21 +24,45 @@ struct Root {
 };
 using RootList = std::vector<Root>;
 
-bool has_many_roots(ShapeType type);
-// Appends every root of p along the ray (world depths, already filtered by the shape's own depth rules).
-void append_roots(const Primitive& p, const Ray& ray, RootList& out);
+// The thread's root list, emptied: rays allocate only while it is still growing.
+inline RootList& root_scratch() {
+  thread_local RootList roots;
+  roots.clear();
+  return roots;
+}
 
-// The geometry.hpp queries for these shapes (intersect_all keeps the nearest Intersections::capacity roots).
-Intersections first_roots(const Primitive& p, const Ray& ray);
-void collect_many_roots(const Primitive& p, const Ray& ray, HitBuffer& out);
-bool nearest_of_many_roots(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
+// intersect_all: the nearest Intersections::capacity roots, depth-sorted.
+template <class Shape>
+Intersections first_roots(const Primitive& p, const Ray& ray) {
+  RootList& roots = root_scratch();
+  Shape::roots(p, ray, roots);
+  std::sort(roots.begin(), roots.end(), [](const Root& a, const Root& b) { return a.t < b.t; });
+  Intersections out;
+  for (const Root& r : roots) {
+    if (out.count == Intersections::capacity) break;
+    out.t[out.count++] = r.t;
+  }
+  return out;
+}
 
-void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out);
-void height_field_roots(const Primitive& p, const Ray& ray, RootList& out);
-void blob_roots(const Primitive& p, const Ray& ray, RootList& out);
-void lathe_roots(const Primitive& p, const Ray& ray, RootList& out);
-void prism_roots(const Primitive& p, const Ray& ray, RootList& out);
-void sor_roots(const Primitive& p, const Ray& ray, RootList& out);
-void isosurface_roots(const Primitive& p, const Ray& ray, RootList& out);
+template <class Shape>
+void collect_roots(const Primitive& p, const Ray& ray, HitBuffer& out) {
+  RootList& roots = root_scratch();
+  Shape::roots(p, ray, roots);
+  for (const Root& r : roots) out.push_back(SurfaceHit{r.t, &p, r.element, r.u, 0});
+}
+
+template <class Shape>
+std::optional<SurfaceHit> nearest_root(const Primitive& p, const Ray& ray, double t_min, double t_max) {
+  RootList& roots = root_scratch();
+  Shape::roots(p, ray, roots);
+  std::optional<SurfaceHit> nearest;
+  for (const Root& r : roots) {
+    if (!(r.t > t_min) || !(r.t < t_max)) continue;
+    if (nearest && !(r.t < nearest->t)) continue;
+    nearest = SurfaceHit{r.t, &p, r.element, r.u, 0};
+  }
+  return nearest;
+}
 
 }  // namespace povtrace::render::shapes

@@ -26,24 +26,25 @@
 
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/watertight.hpp"
+#include "renderer/shapes/mesh.hpp"
 
 namespace povtrace::render::shapes {
 
 namespace {
 constexpr double depth_tolerance = 1e-6;
 
-const MeshShape& shape_of(const Primitive& p) { return static_cast<const MeshShape&>(*p.data); }
+const MeshShapeData& shape_of(const Primitive& p) { return static_cast<const MeshShapeData&>(*p.data); }
 
-// One MeshShape per MeshData for as long as some primitive uses it. A live MeshShape holds its MeshData, so the
+// One MeshShapeData per MeshData for as long as some primitive uses it. A live MeshShapeData holds its MeshData, so the
 // address used as the key cannot be reused by another mesh meanwhile.
-std::shared_ptr<const MeshShape> shared_mesh_shape(const std::shared_ptr<const MeshData>& data) {
+std::shared_ptr<const MeshShapeData> shared_mesh_shape(const std::shared_ptr<const MeshData>& data) {
   static std::mutex mutex;
-  static std::unordered_map<const MeshData*, std::weak_ptr<const MeshShape>> cache;
+  static std::unordered_map<const MeshData*, std::weak_ptr<const MeshShapeData>> cache;
   const std::lock_guard lock(mutex);
   if (auto found = cache.find(data.get()); found != cache.end())
     if (auto shape = found->second.lock()) return shape;
   std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
-  auto shape = std::make_shared<MeshShape>();
+  auto shape = std::make_shared<MeshShapeData>();
   shape->data = data;
   shape->bvh = TriangleBvh(data->vertices, data->faces);
   cache[data.get()] = shape;
@@ -65,7 +66,7 @@ ObjectRay to_object(const Primitive& p, const Ray& ray) {
 // Calls found(triangle, object_depth, hit) for every triangle the object ray crosses at an object depth in
 // [1e-6, 1e7] and a world depth in (t_min, t_max); found may lower t_max (world) and returns false to stop.
 template <class Found>
-void walk_triangles(const MeshShape& mesh, const ObjectRay& r, double t_min, double& t_max, Found&& found) {
+void walk_triangles(const MeshShapeData& mesh, const ObjectRay& r, double t_min, double& t_max, Found&& found) {
   const MeshData& data = *mesh.data;
   const ShearedRay sheared(r.ray);
   const double object_min = std::max(depth_tolerance, t_min * r.length) * (1.0 - 1e-12);
@@ -102,12 +103,12 @@ Vec3 to_world_normal(const Primitive& p, Vec3 n) {
 void set_up_mesh(Primitive& p, const Mesh& mesh) { p.data = shared_mesh_shape(mesh.data); }
 
 void prepare_embree_mesh(Primitive& p) {
-  const MeshShape& mesh = shape_of(p);
+  const MeshShapeData& mesh = shape_of(p);
   std::call_once(mesh.embree_once, [&] { mesh.embree = EmbreeMesh::build(mesh.data->vertices, mesh.data->faces); });
   p.embree_nearest = mesh.embree != nullptr;
 }
 
-void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+void MeshShape::collect(const Primitive& p, const Ray& ray, HitBuffer& out) {
   double t_max = tolerance::bound_huge;
   walk_triangles(shape_of(p), to_object(p, ray), 0.0, t_max, [&](std::uint32_t tri, double t, const TriangleHit& h) {
     out.push_back(SurfaceHit{t, &p, tri, h.u, h.v});
@@ -116,52 +117,51 @@ void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
 }
 
 // Embree picks the nearest triangle; its depth and weights are the watertight test's, under the same limits as
-// walk_triangles. `decided` is false when that test disagrees with Embree's pick (the own walk then answers).
-bool embree_nearest_hit(const Primitive& p, const MeshShape& mesh, const Ray& ray, double t_min, double t_max,
-                        SurfaceHit& hit, bool& decided) {
+// walk_triangles. Not `decided` when that test disagrees with Embree's pick (the own walk then answers).
+struct EmbreeAnswer {
+  bool decided = true;
+  std::optional<SurfaceHit> hit;
+};
+
+EmbreeAnswer embree_nearest_hit(const Primitive& p, const MeshShapeData& mesh, const Ray& ray, double t_min,
+                                double t_max) {
   const ObjectRay r = to_object(p, ray);
   const double object_min = std::max(depth_tolerance, t_min * r.length);
   const double object_max = std::min(tolerance::max_distance, t_max * r.length);
-  decided = true;
   std::uint32_t tri = 0;
-  if (!mesh.embree->nearest(r.ray, object_min, object_max, tri)) return false;
+  if (!mesh.embree->nearest(r.ray, object_min, object_max, tri)) return {};
   const MeshData& data = *mesh.data;
   const std::uint32_t* f = &data.faces[3 * std::size_t(tri)];
   TriangleHit h;
   const bool crossed = intersect_watertight(ShearedRay(r.ray), data.vertex(f[0]), data.vertex(f[1]),
                                             data.vertex(f[2]), h);
   const double world = h.t / r.length;
-  if (!crossed || h.t < depth_tolerance || h.t > tolerance::max_distance || !(world > t_min && world < t_max)) {
-    decided = false;
-    return false;
-  }
-  hit = SurfaceHit{world, &p, tri, h.u, h.v};
-  return true;
+  if (!crossed || h.t < depth_tolerance || h.t > tolerance::max_distance || !(world > t_min && world < t_max))
+    return {false, std::nullopt};
+  return {true, SurfaceHit{world, &p, tri, h.u, h.v}};
 }
 
-bool nearest_mesh_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+std::optional<SurfaceHit> MeshShape::nearest(const Primitive& p, const Ray& ray, double t_min, double t_max) {
   if (p.embree_nearest) {
-    bool decided = true;
-    const bool found = embree_nearest_hit(p, shape_of(p), ray, t_min, t_max, hit, decided);
-    if (decided) return found;
+    EmbreeAnswer answer = embree_nearest_hit(p, shape_of(p), ray, t_min, t_max);
+    if (answer.decided) return answer.hit;
   }
-  bool found = false;
+  std::optional<SurfaceHit> nearest;
   walk_triangles(shape_of(p), to_object(p, ray), t_min, t_max, [&](std::uint32_t tri, double t, const TriangleHit& h) {
-    hit = SurfaceHit{t, &p, tri, h.u, h.v};
+    nearest = SurfaceHit{t, &p, tri, h.u, h.v};
     t_max = t;
-    found = true;
     return true;
   });
-  return found;
+  return nearest;
 }
 
-Vec3 mesh_hit_normal(const SurfaceHit& hit) {
+Vec3 MeshShape::hit_normal(const SurfaceHit& hit, Vec3) {
   return to_world_normal(*hit.leaf, object_normal(*shape_of(*hit.leaf).data, hit.element, hit.u, hit.v));
 }
 
 // Without a hit: the normal of the triangle whose plane passes nearest the point among those containing its
 // projection (a linear search; the tracer always has the hit).
-Vec3 mesh_normal(const Primitive& p, Vec3 world_point) {
+Vec3 MeshShape::normal(const Primitive& p, Vec3 world_point) {
   const MeshData& data = *shape_of(p).data;
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   double best = std::numeric_limits<double>::infinity();
@@ -180,8 +180,8 @@ Vec3 mesh_normal(const Primitive& p, Vec3 world_point) {
   return to_world_normal(p, normal);
 }
 
-bool inside_mesh(const Primitive& p, Vec3 world_point) {
-  const MeshShape& mesh = shape_of(p);
+bool MeshShape::inside(const Primitive& p, Vec3 world_point) {
+  const MeshShapeData& mesh = shape_of(p);
   if (!mesh.data->inside_vector) return false;
   std::size_t crossings = 0;
   double t_max = tolerance::bound_huge;
@@ -193,7 +193,13 @@ bool inside_mesh(const Primitive& p, Vec3 world_point) {
   return (crossings % 2 == 1) != p.inverse;
 }
 
-Bounds mesh_object_bounds(const Primitive& p) { return shape_of(p).bvh.bounds(); }
+Bounds MeshShape::object_bounds(const Primitive& p) { return shape_of(p).bvh.bounds(); }
+
+Primitive MeshShape::build(const Mesh& mesh, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::mesh, world_from_object);
+  set_up_mesh(p, mesh);
+  return p;
+}
 
 }  // namespace povtrace::render::shapes
 

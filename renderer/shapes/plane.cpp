@@ -21,10 +21,11 @@
 #include <limits>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/plane.hpp"
 
 namespace povtrace::render::shapes {
 
-Intersections intersect_plane(const Primitive& p, const Ray& ray) {
+Intersections PlaneShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const Vec3 origin = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
   const Vec3 direction = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
@@ -37,21 +38,28 @@ Intersections intersect_plane(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 plane_normal(const Primitive& p, Vec3 /*world_point*/) {
+Vec3 PlaneShape::normal(const Primitive& p, Vec3 /*world_point*/) {
   if (!p.transformed) return p.a;
   const Vec3 n = p.object_from_world.normal_from_inverse(p.a);
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_plane(const Primitive& p, Vec3 world_point) {
+bool PlaneShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const double s = dot(q, p.a);
   return p.inverse ? (-s + p.radius) < tolerance::epsilon : (s - p.radius) < tolerance::epsilon;
 }
 
-Bounds plane_world_bounds(const Primitive& /*p*/) {
+Bounds PlaneShape::world_bounds(const Primitive& /*p*/) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   return Bounds{{-inf, -inf, -inf}, {inf, inf, inf}};
+}
+
+Primitive PlaneShape::build(const Plane& plane, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::plane, world_from_object);
+  p.a = plane.normal;
+  p.radius = plane.distance;
+  return p;
 }
 
 }  // namespace povtrace::render::shapes

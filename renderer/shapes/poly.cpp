@@ -25,6 +25,7 @@
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 #include "renderer/shapes/polynomial_roots.hpp"
+#include "renderer/shapes/poly.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -112,7 +113,7 @@ int higher_roots(const PolyData& d, Vec3 o, Vec3 v, double* roots) {
 }
 }  // namespace
 
-Intersections intersect_poly(const Primitive& p, const Ray& ray) {
+Intersections PolyShape::intersect(const Primitive& p, const Ray& ray) {
   const PolyData& d = data_of(p);
   const Vec3 o = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
   Vec3 v = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
@@ -147,7 +148,7 @@ double poly_value(const PolyData& d, Vec3 q) {
   return sum;
 }
 
-Vec3 poly_normal(const Primitive& p, Vec3 world_point) {
+Vec3 PolyShape::normal(const Primitive& p, Vec3 world_point) {
   const PolyData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const auto x = powers(q.x, d.order), y = powers(q.y, d.order), z = powers(q.z, d.order);
@@ -164,13 +165,13 @@ Vec3 poly_normal(const Primitive& p, Vec3 world_point) {
   return g * (1.0 / std::sqrt(l2));
 }
 
-bool inside_poly(const Primitive& p, Vec3 world_point) {
+bool PolyShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const bool in = poly_value(data_of(p), q) < inside_tolerance;
   return p.inverse ? !in : in;
 }
 
-Bounds poly_world_bounds(const Primitive&) {
+Bounds PolyShape::world_bounds(const Primitive&) {
   const double inf = std::numeric_limits<double>::infinity();
   return Bounds{Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};
 }

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "renderer/shapes/triangle_shapes.hpp"
+#include "renderer/shapes/polygon.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -64,7 +65,7 @@ void set_up_polygon(Primitive& p, const Polygon& polygon) {
   p.data = std::move(data);
 }
 
-Intersections intersect_polygon(const Primitive& p, const Ray& ray) {
+Intersections PolygonShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const PolygonData& d = data_of(p);
   if (d.degenerate) return out;
@@ -80,14 +81,20 @@ Intersections intersect_polygon(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 polygon_normal(const Primitive& p, Vec3) { return normalize(p.object_from_world.normal_from_inverse({0, 0, 1})); }
+Vec3 PolygonShape::normal(const Primitive& p, Vec3) { return normalize(p.object_from_world.normal_from_inverse({0, 0, 1})); }
 
-Bounds polygon_object_bounds(const Primitive& p) {
+Bounds PolygonShape::object_bounds(const Primitive& p) {
   const PolygonData& d = data_of(p);
   Bounds b;
   if (d.degenerate) return b;
   for (const auto& q : d.points) b.extend(Vec3{q[0], q[1], 0});
   return b;
+}
+
+Primitive PolygonShape::build(const Polygon& polygon, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::polygon, world_from_object);
+  set_up_polygon(p, polygon);
+  return p;
 }
 
 }  // namespace povtrace::render::shapes

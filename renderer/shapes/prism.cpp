@@ -31,6 +31,7 @@
 #include "renderer/shapes/many_roots.hpp"
 #include "renderer/shapes/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
+#include "renderer/shapes/prism.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -159,7 +160,7 @@ void segment_hits(const PrismData& d, std::uint32_t index, const LocalRay& r, Ro
 }
 }  // namespace
 
-void prism_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void PrismShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const PrismData& d = data_of(p);
   if (d.degenerate) return;
   const LocalRay r = local_ray(p, ray);
@@ -173,7 +174,7 @@ void prism_roots(const Primitive& p, const Ray& ray, RootList& out) {
   for (std::uint32_t k = 0; k < d.segments.size(); ++k) segment_hits(d, k, r, out);
 }
 
-Vec3 prism_hit_normal(const Primitive& p, std::uint32_t element, double w, Vec3 world_point) {
+Vec3 PrismShape::normal_at(const Primitive& p, std::uint32_t element, double w, Vec3 world_point) {
   const PrismData& d = data_of(p);
   Vec3 n{0, 1, 0};
   if (element != base_element && element != cap_element) {
@@ -191,7 +192,7 @@ Vec3 prism_hit_normal(const Primitive& p, std::uint32_t element, double w, Vec3 
 }
 
 // The normal at a point without its hit: an end plane when the point is nearer it than the outline.
-Vec3 prism_normal(const Primitive& p, Vec3 world_point) {
+Vec3 PrismShape::normal(const Primitive& p, Vec3 world_point) {
   const PrismData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const double scale = d.conic && std::fabs(q.y) > eps ? q.y : 1.0;
@@ -203,10 +204,10 @@ Vec3 prism_normal(const Primitive& p, Vec3 world_point) {
       best = s, element = k;
   const double plane = std::min(std::fabs(q.y - d.height1), std::fabs(q.y - d.height2));
   if (d.closed && plane < best.distance * std::fabs(scale)) element = cap_element;
-  return prism_hit_normal(p, element, best.w, world_point);
+  return normal_at(p, element, best.w, world_point);
 }
 
-bool inside_prism(const Primitive& p, Vec3 world_point) {
+bool PrismShape::inside(const Primitive& p, Vec3 world_point) {
   const PrismData& d = data_of(p);
   Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   bool in = false;
@@ -221,7 +222,7 @@ bool inside_prism(const Primitive& p, Vec3 world_point) {
   return in != p.inverse;
 }
 
-Bounds prism_object_bounds(const Primitive& p) {
+Bounds PrismShape::object_bounds(const Primitive& p) {
   const PrismData& d = data_of(p);
   if (d.segments.empty()) return {};
   return Bounds{{d.x1, d.height1, d.z1}, {d.x2, d.height2, d.z2}};

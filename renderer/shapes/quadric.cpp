@@ -15,6 +15,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/poly_shape.hpp"
+#include "renderer/shapes/quadric.hpp"
 
 namespace povtrace::render {
 
@@ -72,7 +73,7 @@ Primitive make_quadric(const Quadric& q, const Matrix& world_from_object) {
 
 namespace shapes {
 
-Intersections intersect_quadric(const Primitive& p, const Ray& ray) {
+Intersections QuadricShape::intersect(const Primitive& p, const Ray& ray) {
   const QuadricData& q = data_of(p);
   const double xo = ray.origin.x, yo = ray.origin.y, zo = ray.origin.z;
   const double xd = ray.direction.x, yd = ray.direction.y, zd = ray.direction.z;
@@ -100,7 +101,7 @@ Intersections intersect_quadric(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 quadric_normal(const Primitive& p, Vec3 w) {
+Vec3 QuadricShape::normal(const Primitive& p, Vec3 w) {
   const QuadricData& q = data_of(p);
   const Vec3 n{2.0 * q.a * w.x + q.b * w.y + q.c * w.z + q.d, q.b * w.x + 2.0 * q.e * w.y + q.f * w.z + q.g,
                q.c * w.x + q.f * w.y + 2.0 * q.h * w.z + q.i};
@@ -109,7 +110,7 @@ Vec3 quadric_normal(const Primitive& p, Vec3 w) {
   return n * (1.0 / len);
 }
 
-bool inside_quadric(const Primitive& p, Vec3 w) {
+bool QuadricShape::inside(const Primitive& p, Vec3 w) {
   const QuadricData& q = data_of(p);
   const bool in = w.x * (q.a * w.x + q.b * w.y + q.d) + w.y * (q.e * w.y + q.f * w.z + q.g) +
                       w.z * (q.h * w.z + q.c * w.x + q.i) + q.j <=
@@ -117,7 +118,7 @@ bool inside_quadric(const Primitive& p, Vec3 w) {
   return p.inverse ? !in : in;
 }
 
-Bounds quadric_world_bounds(const Primitive&) {
+Bounds QuadricShape::world_bounds(const Primitive&) {
   const double inf = std::numeric_limits<double>::infinity();
   return Bounds{Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};
 }

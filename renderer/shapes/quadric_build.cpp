@@ -108,20 +108,4 @@ Primitive make_torus(const Torus& t, const Matrix& world_from_object) {
   return p;
 }
 
-bool is_quadric_shape(const Shape& shape) {
-  return std::holds_alternative<Cylinder>(shape) || std::holds_alternative<Cone>(shape) ||
-         std::holds_alternative<Disc>(shape) || std::holds_alternative<Torus>(shape);
-}
-
-std::optional<Primitive> quadric_primitive(const Shape& shape, const Matrix& world_from_object) {
-  if (const auto* c = std::get_if<Cylinder>(&shape)) return make_cylinder(*c, world_from_object);
-  if (const auto* c = std::get_if<Cone>(&shape)) return make_cone(*c, world_from_object);
-  if (const auto* d = std::get_if<Disc>(&shape)) {
-    if (d->normal == Vec3{}) return std::nullopt;
-    return make_disc(*d, world_from_object);
-  }
-  if (const auto* t = std::get_if<Torus>(&shape)) return make_torus(*t, world_from_object);
-  return std::nullopt;
-}
-
 }  // namespace povtrace::render

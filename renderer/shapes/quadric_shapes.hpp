@@ -29,9 +29,4 @@ Primitive make_cone(const Cone& c, const Matrix& world_from_object);   // a cyli
 Primitive make_disc(const Disc& d, const Matrix& world_from_object);
 Primitive make_torus(const Torus& t, const Matrix& world_from_object);
 
-// Whether the shape is one of the four above; then the primitive for it, or nothing for a disc with a zero normal
-// (POV-Ray's NaN disc, which renders nothing).
-bool is_quadric_shape(const Shape& shape);
-std::optional<Primitive> quadric_primitive(const Shape& shape, const Matrix& world_from_object);
-
 }  // namespace povtrace::render

@@ -20,9 +20,4 @@ Primitive make_prism(const Prism& p, const Matrix& world_from_object);
 Primitive make_sor(const Sor& s, const Matrix& world_from_object);
 Primitive make_isosurface(const Isosurface& iso, const Matrix& world_from_object);
 
-// Whether the shape is one of the above; then its primitive placed by `world_from_object` (material, object index,
-// shadow and inverse flags are left to the caller).
-bool is_solid_shape(const Shape& shape);
-Primitive solid_primitive(const Shape& shape, const Matrix& world_from_object);
-
 }  // namespace povtrace::render

@@ -25,6 +25,7 @@
 #include "renderer/shapes/many_roots.hpp"
 #include "renderer/shapes/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
+#include "renderer/shapes/sor.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -65,7 +66,7 @@ std::uint32_t sor_segment_at(const SorData& d, double y) {
 }
 }  // namespace
 
-void sor_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void SorShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const SorData& d = data_of(p);
   const LocalRay r = local_ray(p, ray);
   const Vec3 q = r.p, v = r.d;
@@ -89,7 +90,7 @@ void sor_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point) {
+Vec3 SorShape::normal_at(const Primitive& p, std::uint32_t element, Vec3 world_point) {
   const SorData& d = data_of(p);
   Vec3 n{0, element == base_element ? -1.0 : 1.0, 0};
   if (element != base_element && element != cap_element) {
@@ -102,7 +103,7 @@ Vec3 sor_hit_normal(const Primitive& p, std::uint32_t element, Vec3 world_point)
 }
 
 // The normal at a point without its hit: an end disc when the point is nearer its plane than the curve.
-Vec3 sor_normal(const Primitive& p, Vec3 world_point) {
+Vec3 SorShape::normal(const Primitive& p, Vec3 world_point) {
   const SorData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const double r2 = q.x * q.x + q.z * q.z;
@@ -114,10 +115,10 @@ Vec3 sor_normal(const Primitive& p, Vec3 world_point) {
     element = base_element;
   }
   if (d.closed && r2 <= d.cap_radius2 && std::fabs(q.y - d.height2) < best) element = cap_element;
-  return sor_hit_normal(p, element, world_point);
+  return normal_at(p, element, world_point);
 }
 
-bool inside_sor(const Primitive& p, Vec3 world_point) {
+bool SorShape::inside(const Primitive& p, Vec3 world_point) {
   const SorData& d = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   bool in = false;
@@ -129,7 +130,7 @@ bool inside_sor(const Primitive& p, Vec3 world_point) {
   return in != p.inverse;
 }
 
-Bounds sor_object_bounds(const Primitive& p) {
+Bounds SorShape::object_bounds(const Primitive& p) {
   const SorData& d = data_of(p);
   return Bounds{{-d.radius2, d.height1, -d.radius2}, {d.radius2, d.height2, d.radius2}};
 }

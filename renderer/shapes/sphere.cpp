@@ -20,6 +20,7 @@
 #include <cmath>
 
 #include "renderer/geometry.hpp"
+#include "renderer/shapes/sphere.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -44,7 +45,7 @@ bool depth_ok(double t) { return t > tolerance::sphere_depth && t < tolerance::m
 
 }  // namespace
 
-Intersections intersect_sphere(const Primitive& p, const Ray& ray) {
+Intersections SphereShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const double r2 = p.radius * p.radius;
   double t1 = 0, t2 = 0;
@@ -67,14 +68,14 @@ Intersections intersect_sphere(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 sphere_normal(const Primitive& p, Vec3 world_point) {
+Vec3 SphereShape::normal(const Primitive& p, Vec3 world_point) {
   if (!p.transformed) return (world_point - p.a) * (1.0 / p.radius);
   const Vec3 local = p.object_from_world.point(world_point) - p.a;
   const Vec3 n = p.object_from_world.normal_from_inverse(local);
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_sphere(const Primitive& p, Vec3 world_point) {
+bool SphereShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const Vec3 d = p.a - q;
   const double d2 = dot(d, d);
@@ -82,10 +83,17 @@ bool inside_sphere(const Primitive& p, Vec3 world_point) {
   return p.inverse ? d2 > r2 : d2 < r2;
 }
 
-Bounds sphere_object_bounds(const Primitive& p) {
+Bounds SphereShape::object_bounds(const Primitive& p) {
   const double r = std::abs(p.radius);
   const Vec3 e{r, r, r};
   return Bounds{p.a - e, p.a + e};
+}
+
+Primitive SphereShape::build(const Sphere& s, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::sphere, world_from_object);
+  p.a = s.centre;
+  p.radius = s.radius;
+  return p;
 }
 
 }  // namespace povtrace::render::shapes

@@ -19,7 +19,7 @@
 //   the walk.
 // - A hit is kept when its world depth (object depth / L) lies in (1e-4, MAX_DISTANCE).
 // - Inside: f < 1e-10; `inverse` negates the test.
-// - Normal: POV-Ray's own gradient expression (see superellipsoid_normal), carried to world by the inverse
+// - Normal: POV-Ray's own gradient expression (see SuperellipsoidShape::normal), carried to world by the inverse
 //   transpose and normalised.
 // - Bounds: the cube [−1.0001, 1.0001]³ carried to world.
 #include <algorithm>
@@ -27,6 +27,8 @@
 #include <utility>
 
 #include "renderer/shapes/many_roots.hpp"
+#include "renderer/shapes/box.hpp"
+#include "renderer/shapes/superellipsoid.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -69,7 +71,7 @@ struct Powers {
   }
 };
 
-// Clips the ray to the box [−1.01, 1.01]³ as POV-Ray's intersect_box does; false when it misses.
+// Clips the ray to the box [−1.01, 1.01]³ as POV-Ray's BoxShape::intersect does; false when it misses.
 bool clip_slab(double o, double d, double& t_min, double& t_max, bool first) {
   if (std::abs(d) > tolerance::epsilon) {
     double lo = (-box_half - o) / d, hi = (box_half - o) / d;
@@ -182,7 +184,7 @@ bool keep(double object_depth, double len, RootList& out) {
 }
 }  // namespace
 
-void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out) {
+void SuperellipsoidShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const Powers f{p.a};
   const Vec3 o = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
   Vec3 d = p.transformed ? p.object_from_world.vector(ray.direction) : ray.direction;
@@ -212,7 +214,7 @@ void superellipsoid_roots(const Primitive& p, const Ray& ray, RootList& out) {
   }
 }
 
-Vec3 superellipsoid_normal(const Primitive& p, Vec3 world_point) {
+Vec3 SuperellipsoidShape::normal(const Primitive& p, Vec3 world_point) {
   const Vec3 e = p.a;
   Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   // On the surface (|x|^ex + |y|^ex)^ey = 1 − |z|^ez: POV-Ray's expression for the gradient, scaled per piece.
@@ -235,12 +237,12 @@ Vec3 superellipsoid_normal(const Primitive& p, Vec3 world_point) {
   return n * (1.0 / length(n));
 }
 
-bool inside_superellipsoid(const Primitive& p, Vec3 world_point) {
+bool SuperellipsoidShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   return (Powers{p.a}(q) < tolerance::epsilon) != p.inverse;
 }
 
-Bounds superellipsoid_object_bounds(const Primitive&) {
+Bounds SuperellipsoidShape::object_bounds(const Primitive&) {
   return Bounds{Vec3{-1.0001, -1.0001, -1.0001}, Vec3{1.0001, 1.0001, 1.0001}};
 }
 

@@ -137,7 +137,7 @@ bool inside_any(const TextData& d, Vec3 q, std::size_t except = static_cast<std:
 }
 }  // namespace
 
-void collect_text_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
+void TextShape::collect(const Primitive& p, const Ray& ray, HitBuffer& out) {
   const TextData& d = data_of(p);
   const LocalRay r = to_object(p, ray);
   for (std::size_t i = 0; i < d.glyphs.size(); ++i) {
@@ -156,20 +156,19 @@ void collect_text_hits(const Primitive& p, const Ray& ray, HitBuffer& out) {
   }
 }
 
-bool nearest_text_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
+std::optional<SurfaceHit> TextShape::nearest(const Primitive& p, const Ray& ray, double t_min, double t_max) {
   thread_local HitBuffer scratch;
   scratch.clear();
-  collect_text_hits(p, ray, scratch);
-  bool found = false;
+  collect(p, ray, scratch);
+  std::optional<SurfaceHit> nearest;
   for (const SurfaceHit& h : scratch) {
-    if (!(h.t > t_min) || !(h.t < t_max) || (found && !(h.t < hit.t))) continue;
-    hit = h;
-    found = true;
+    if (!(h.t > t_min) || !(h.t < t_max) || (nearest && !(h.t < nearest->t))) continue;
+    nearest = h;
   }
-  return found;
+  return nearest;
 }
 
-Vec3 text_hit_normal(const SurfaceHit& hit) {
+Vec3 TextShape::hit_normal(const SurfaceHit& hit, Vec3) {
   const auto surface = static_cast<TextSurface>(hit.element);
   Vec3 n{hit.u, hit.v, 0.0};
   if (surface == TextSurface::front) n = {0, 0, -1};
@@ -178,16 +177,16 @@ Vec3 text_hit_normal(const SurfaceHit& hit) {
   return normalize(n);
 }
 
-Vec3 text_normal(const Primitive&, Vec3) {
+Vec3 TextShape::normal(const Primitive&, Vec3) {
   throw std::logic_error("a text's normal comes with its hit (the wall or face it is on)");
 }
 
-bool inside_text(const Primitive& p, Vec3 world_point) {
+bool TextShape::inside(const Primitive& p, Vec3 world_point) {
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   return inside_any(data_of(p), q) != p.inverse;
 }
 
-Bounds text_object_bounds(const Primitive& p) {
+Bounds TextShape::object_bounds(const Primitive& p) {
   Bounds b;
   for (const TextShapeGlyph& g : data_of(p).glyphs) {
     b.extend(g.lo + Vec3{g.x, g.y, 0.0});

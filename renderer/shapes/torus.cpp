@@ -27,6 +27,7 @@
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/insert_sorted.hpp"
 #include "renderer/shapes/polynomial_roots.hpp"
+#include "renderer/shapes/torus.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -73,7 +74,7 @@ bool meets_thick_cylinder(Vec3 o, Vec3 d, double h, double r_in2, double r_out2)
 }
 }  // namespace
 
-Intersections intersect_torus(const Primitive& p, const Ray& ray) {
+Intersections TorusShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const double major = p.a.x, minor = p.a.y;
   Vec3 o = p.transformed ? p.object_from_world.point(ray.origin) : ray.origin;
@@ -104,7 +105,7 @@ Intersections intersect_torus(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 torus_normal(const Primitive& p, Vec3 world_point) {
+Vec3 TorusShape::normal(const Primitive& p, Vec3 world_point) {
   const double major = p.a.x;
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const double from_axis = std::sqrt(q.x * q.x + q.z * q.z);
@@ -114,7 +115,7 @@ Vec3 torus_normal(const Primitive& p, Vec3 world_point) {
   return n * (1.0 / std::sqrt(dot(n, n)));
 }
 
-bool inside_torus(const Primitive& p, Vec3 world_point) {
+bool TorusShape::inside(const Primitive& p, Vec3 world_point) {
   const double major = p.a.x, minor = p.a.y;
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
   const double from_circle = std::sqrt(q.x * q.x + q.z * q.z) - major;
@@ -122,7 +123,7 @@ bool inside_torus(const Primitive& p, Vec3 world_point) {
   return in != p.inverse;
 }
 
-Bounds torus_object_bounds(const Primitive& p) {
+Bounds TorusShape::object_bounds(const Primitive& p) {
   const double outer = p.a.x + p.a.y, r = p.a.y;
   return Bounds{Vec3{-outer, -r, -outer}, Vec3{outer, r, outer}};
 }

@@ -18,6 +18,7 @@
 
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/watertight.hpp"
+#include "renderer/shapes/triangle.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -58,7 +59,7 @@ void set_up_triangle(Primitive& p, const Triangle& triangle) {
   p.data = std::move(data);
 }
 
-Intersections intersect_triangle(const Primitive& p, const Ray& ray) {
+Intersections TriangleShape::intersect(const Primitive& p, const Ray& ray) {
   Intersections out;
   const TriangleData& d = data_of(p);
   if (d.degenerate) return out;
@@ -68,7 +69,7 @@ Intersections intersect_triangle(const Primitive& p, const Ray& ray) {
   return out;
 }
 
-Vec3 triangle_normal(const Primitive& p, Vec3 world_point) {
+Vec3 TriangleShape::normal(const Primitive& p, Vec3 world_point) {
   const TriangleData& d = data_of(p);
   if (!d.smooth) return normalize(cross(d.corners[0] - d.corners[1], d.corners[2] - d.corners[1]));
   double w2 = 0, w3 = 0;
@@ -77,12 +78,18 @@ Vec3 triangle_normal(const Primitive& p, Vec3 world_point) {
 }
 
 // POV-Ray's Compute_BBox: the corners' box grown by EPSILON.
-Bounds triangle_world_bounds(const Primitive& p) {
+Bounds TriangleShape::world_bounds(const Primitive& p) {
   const TriangleData& d = data_of(p);
   Bounds b;
   for (const Vec3& c : d.corners) b.extend(c);
   const Vec3 e{tolerance::epsilon, tolerance::epsilon, tolerance::epsilon};
   return Bounds{b.lo - e, b.hi + e};
+}
+
+Primitive TriangleShape::build(const Triangle& triangle, const Matrix& world_from_object) {
+  Primitive p = placed_primitive(ShapeType::triangle, world_from_object);
+  set_up_triangle(p, triangle);
+  return p;
 }
 
 }  // namespace povtrace::render::shapes

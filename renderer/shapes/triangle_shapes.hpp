@@ -1,5 +1,5 @@
-// The triangle-based shapes' render-side data and entry points (triangle.cpp, polygon.cpp, mesh.cpp): what
-// render_scene.cpp calls to turn a description into a Primitive, and what primitive.cpp dispatches to.
+// The triangle-based shapes' render-side data (triangle.cpp, polygon.cpp, mesh.cpp) and how a primitive is set up
+// from a description; their shape interfaces are triangle.hpp, polygon.hpp and mesh.hpp.
 #pragma once
 
 #include <array>
@@ -29,7 +29,7 @@ struct PolygonData : ShapeData {
 };
 
 // mesh / mesh2: the parser's arrays and a BVH over them, in object space; one per mesh, shared by every placement.
-struct MeshShape : ShapeData {
+struct MeshShapeData : ShapeData {
   std::shared_ptr<const MeshData> data;
   TriangleBvh bvh;
   // Embree's BVH over the same triangles for nearest hits (renderer/accel/embree_mesh.hpp), made by
@@ -41,24 +41,9 @@ struct MeshShape : ShapeData {
 // Fill in a primitive whose common fields (material, transform, flags) are already set.
 void set_up_triangle(Primitive& p, const Triangle& triangle);
 void set_up_polygon(Primitive& p, const Polygon& polygon);
-void set_up_mesh(Primitive& p, const Mesh& mesh);   // shares the MeshShape of every placement of the same mesh
+void set_up_mesh(Primitive& p, const Mesh& mesh);   // shares the MeshShapeData of every placement of the same mesh
 // Lets a placed mesh find its nearest hits through Embree (Primitive::embree_nearest), building Embree's BVH once
 // per mesh; leaves it on the own BVH if Embree cannot start.
 void prepare_embree_mesh(Primitive& p);
-
-Intersections intersect_triangle(const Primitive& p, const Ray& ray);
-Vec3 triangle_normal(const Primitive& p, Vec3 world_point);
-Bounds triangle_world_bounds(const Primitive& p);
-
-Intersections intersect_polygon(const Primitive& p, const Ray& ray);
-Vec3 polygon_normal(const Primitive& p, Vec3 world_point);
-Bounds polygon_object_bounds(const Primitive& p);
-
-void collect_mesh_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
-bool nearest_mesh_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
-Vec3 mesh_hit_normal(const SurfaceHit& hit);
-Vec3 mesh_normal(const Primitive& p, Vec3 world_point);
-bool inside_mesh(const Primitive& p, Vec3 world_point);
-Bounds mesh_object_bounds(const Primitive& p);
 
 }  // namespace povtrace::render::shapes

@@ -17,10 +17,14 @@
 #include <cmath>
 
 #include "renderer/geometry.hpp"
-#include "renderer/shapes/sweep.hpp"
-#include "renderer/shapes/triangle_shapes.hpp"
+#include "renderer/shapes/box.hpp"
+#include "renderer/shapes/lathe.hpp"
+#include "renderer/shapes/mesh.hpp"
+#include "renderer/shapes/sor.hpp"
+#include "renderer/shapes/sphere.hpp"
+#include "renderer/shapes/torus.hpp"
 
-namespace povtrace::render {
+namespace povtrace::render::shapes {
 
 namespace {
 constexpr double kTwoPi = 2.0 * M_PI;
@@ -44,7 +48,10 @@ double turn_around_y(Vec3 d) {
   return theta / kTwoPi;
 }
 
-std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
+}  // namespace
+
+std::array<double, 2> SphereShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  const Primitive& p = *hit.leaf;
   Vec3 d = object_point(p, world_point) - p.a;
   const double len = length(d);
   if (len == 0.0) return {0.0, 0.0};
@@ -54,7 +61,7 @@ std::array<double, 2> sphere_uv(const Primitive& p, Vec3 world_point) {
 }
 
 // A lathe: u around y, v the segment index plus the segment parameter w, over the number of segments (at most 1).
-std::array<double, 2> lathe_uv(const SurfaceHit& hit, Vec3 world_point) {
+std::array<double, 2> LatheShape::uv(const SurfaceHit& hit, Vec3 world_point) {
   const auto& d = static_cast<const LatheData&>(*hit.leaf->data);
   const double v = (hit.u + double(hit.element)) / double(d.segments.size());
   return {turn_around_y(object_point(*hit.leaf, world_point)), std::min(v, 1.0)};
@@ -62,7 +69,7 @@ std::array<double, 2> lathe_uv(const SurfaceHit& hit, Vec3 world_point) {
 
 // A sor: u around y; v the height within the segment's ring, over the number of segments; on the base disc it runs
 // from −1 at the axis to 0 at the rim, on the cap from 2 to 1 (POV-Ray's Sor::UVCoord).
-std::array<double, 2> sor_uv(const SurfaceHit& hit, Vec3 world_point) {
+std::array<double, 2> SorShape::uv(const SurfaceHit& hit, Vec3 world_point) {
   const auto& d = static_cast<const SorData&>(*hit.leaf->data);
   const Vec3 q = object_point(*hit.leaf, world_point);
   const double u = turn_around_y(q);
@@ -75,7 +82,8 @@ std::array<double, 2> sor_uv(const SurfaceHit& hit, Vec3 world_point) {
 }
 
 // The face the point lies on, as box_normal picks it: the nearest of the six planes (axis, and the high side).
-std::array<double, 2> box_uv(const Primitive& p, Vec3 world_point) {
+std::array<double, 2> BoxShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  const Primitive& p = *hit.leaf;
   const Vec3 q = object_point(p, world_point);
   int axis = 0;
   bool high = false;
@@ -97,7 +105,8 @@ std::array<double, 2> box_uv(const Primitive& p, Vec3 world_point) {
   }
 }
 
-std::array<double, 2> torus_uv(const Primitive& p, Vec3 world_point) {
+std::array<double, 2> TorusShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  const Primitive& p = *hit.leaf;
   const Vec3 q = object_point(p, world_point);
   const double u = 1.0 - (std::atan2(q.z, q.x) + M_PI) / kTwoPi;
   const double r = std::sqrt(q.x * q.x + q.z * q.z) - p.a.x;   // p.a.x: the major radius
@@ -105,8 +114,8 @@ std::array<double, 2> torus_uv(const Primitive& p, Vec3 world_point) {
   return {u, v};
 }
 
-std::array<double, 2> mesh_uv(const SurfaceHit& hit) {
-  const MeshData& data = *static_cast<const shapes::MeshShape&>(*hit.leaf->data).data;
+std::array<double, 2> MeshShape::uv(const SurfaceHit& hit, Vec3) {
+  const MeshData& data = *static_cast<const MeshShapeData&>(*hit.leaf->data).data;
   if (data.face_uvs.empty()) return {0.0, 0.0};
   const std::uint32_t* uv = &data.face_uvs[3 * std::size_t(hit.element)];
   const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
@@ -117,19 +126,5 @@ std::array<double, 2> mesh_uv(const SurfaceHit& hit) {
   }
   return out;
 }
-}  // namespace
 
-std::array<double, 2> uv_coordinates(const SurfaceHit& hit, Vec3 world_point, double scene_scale) {
-  const Primitive& p = *hit.leaf;
-  switch (p.type) {
-    case ShapeType::sphere: return sphere_uv(p, world_point);
-    case ShapeType::box: return box_uv(p, world_point);
-    case ShapeType::torus: return torus_uv(p, world_point);
-    case ShapeType::mesh: return mesh_uv(hit);
-    case ShapeType::lathe: return lathe_uv(hit, world_point);
-    case ShapeType::sor: return sor_uv(hit, world_point);
-    default: return {world_point.x / scene_scale, world_point.y / scene_scale};
-  }
-}
-
-}  // namespace povtrace::render
+}  // namespace povtrace::render::shapes

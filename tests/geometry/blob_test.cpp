@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "quadric_kit.hpp"
@@ -94,10 +95,11 @@ TEST(Blob, ANegativeComponentCarvesAHole) {
   const Primitive p = make_blob(b, Matrix::identity());
   EXPECT_FALSE(inside(p, {0, 0, 0}));
   EXPECT_TRUE(inside(p, {1, 0, 0}));
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(p, ray({0, 0, 0}, {0, 1, 0}), tolerance::min_isect_depth, tolerance::bound_huge, h));
-  EXPECT_LT(h.t, 0.8);   // the wall of the hole comes first
-  EXPECT_LT(surface_normal(h, Vec3{0, h.t, 0}).y, 0);   // facing into the hole
+  const std::optional<SurfaceHit> h = nearest_hit(p, ray({0, 0, 0}, {0, 1, 0}), tolerance::min_isect_depth,
+                                                  tolerance::bound_huge);
+  ASSERT_TRUE(h);
+  EXPECT_LT(h->t, 0.8);   // the wall of the hole comes first
+  EXPECT_LT(surface_normal(*h, Vec3{0, h->t, 0}).y, 0);   // facing into the hole
 }
 
 TEST(Blob, RandomRaysMatchMarchingOnTheDensity) {
@@ -114,15 +116,15 @@ TEST(Blob, RandomRaysMatchMarchingOnTheDensity) {
     const Ray r = ray(origin, m.point(random_unit(rng) * 0.5) - origin);
     if (member(origin)) continue;
     const std::vector<double> ref = crossings(member, r, 0.0, 60.0, 30000);
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     // A grazing ray (two crossings closer than the marching step) is counted either way.
     if (found != !ref.empty() || (ref.size() >= 2 && ref[1] - ref[0] < 1e-2)) continue;
     ++compared;
     if (!found) continue;
     ++hits;
-    EXPECT_NEAR(h.t, ref[0], 1e-7 * (1 + ref[0])) << "ray " << k;
-    const Vec3 q = inv.point(r.origin + r.direction * h.t);
+    EXPECT_NEAR(h->t, ref[0], 1e-7 * (1 + ref[0])) << "ray " << k;
+    const Vec3 q = inv.point(r.origin + r.direction * h->t);
     const double e = 1e-6;
     const Vec3 grad{density(b, q - Vec3{e, 0, 0}) - density(b, q + Vec3{e, 0, 0}),
                     density(b, q - Vec3{0, e, 0}) - density(b, q + Vec3{0, e, 0}),
@@ -141,10 +143,11 @@ TEST(Blob, ARayLeavingAHitIgnoresTheNextCentimetre) {
   b.components = std::make_shared<std::vector<BlobComponent>>(1, sphere_component({0, 0, 0}, 2, 1));
   const Primitive p = make_blob(b, Matrix::identity());
   const double r = 2 * std::sqrt(1 - std::sqrt(0.5));
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(p, ray({-r, 0, 0}, {1, 0, 0}), tolerance::min_isect_depth, tolerance::bound_huge, h));
-  EXPECT_NEAR(h.t, 2 * r, 1e-9);
-  EXPECT_FALSE(nearest_hit(p, ray({-r, 0, 0}, {-1, 0, 0}), tolerance::min_isect_depth, tolerance::bound_huge, h));
+  const std::optional<SurfaceHit> h = nearest_hit(p, ray({-r, 0, 0}, {1, 0, 0}), tolerance::min_isect_depth,
+                                                  tolerance::bound_huge);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(h->t, 2 * r, 1e-9);
+  EXPECT_FALSE(nearest_hit(p, ray({-r, 0, 0}, {-1, 0, 0}), tolerance::min_isect_depth, tolerance::bound_huge));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -115,18 +116,21 @@ TEST(Box, CloseToleranceTieTakesTheFaceTheRayRunsMoreSteeplyInto) {
   const Primitive b = box({0, 0, 0}, {1, 1, 1});
   const Vec3 o{0.5, 0.5, 0.5};
   const Vec3 steeper_y = normalize(Vec3{1, 1 + 1e-6, 0});
-  SurfaceHit hit;
-  ASSERT_TRUE(nearest_hit(b, Ray{o, steeper_y}, 0, 10, hit));
-  EXPECT_EQ(hit.t, (1 - o.x) / steeper_y.x);
-  EXPECT_EQ(surface_normal(hit, o + steeper_y * hit.t), (Vec3{0, 1, 0}));
+  std::optional<SurfaceHit> hit;
+  hit = nearest_hit(b, Ray{o, steeper_y}, 0, 10);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->t, (1 - o.x) / steeper_y.x);
+  EXPECT_EQ(surface_normal(*hit, o + steeper_y * hit->t), (Vec3{0, 1, 0}));
   // The same tie the other way round (|d.x| > |d.y|): the x face.
   const Vec3 steeper_x = normalize(Vec3{1 + 1e-6, 1, 0});
-  ASSERT_TRUE(nearest_hit(b, Ray{o, steeper_x}, 0, 10, hit));
-  EXPECT_EQ(surface_normal(hit, o + steeper_x * hit.t), (Vec3{1, 0, 0}));
+  hit = nearest_hit(b, Ray{o, steeper_x}, 0, 10);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(surface_normal(*hit, o + steeper_x * hit->t), (Vec3{1, 0, 0}));
   // Entry from outside through the low faces, z against x: from (-1, 0.5, -1) along (1, 0, 1 + 1e-7).
   const Vec3 entering = normalize(Vec3{1, 0, 1 + 1e-7});
-  ASSERT_TRUE(nearest_hit(b, Ray{{-1, 0.5, -1}, entering}, 0, 10, hit));
-  EXPECT_EQ(surface_normal(hit, Vec3{-1, 0.5, -1} + entering * hit.t), (Vec3{0, 0, -1}));
+  hit = nearest_hit(b, Ray{{-1, 0.5, -1}, entering}, 0, 10);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(surface_normal(*hit, Vec3{-1, 0.5, -1} + entering * hit->t), (Vec3{0, 0, -1}));
 }
 
 TEST(Box, InsideIsClosed) {

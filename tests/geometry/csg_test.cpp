@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -206,12 +207,12 @@ TEST(Csg, RandomTreesMatchTheMarchedSolid) {
       with_hits += !expected.empty();
       ASSERT_EQ(got.size(), expected.size()) << "tree " << tree << " ray " << k;
       for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-9);
-      SurfaceHit nearest;
-      ASSERT_EQ(nearest_hit(p, r, tolerance::min_isect_depth, t_end, nearest), !got.empty());
+      const std::optional<SurfaceHit> nearest = nearest_hit(p, r, tolerance::min_isect_depth, t_end);
+      ASSERT_EQ(nearest.has_value(), !got.empty());
       if (!got.empty()) {
-        EXPECT_EQ(nearest.t, got[0]);
-        ASSERT_NE(nearest.leaf, nullptr);
-        EXPECT_NE(nearest.leaf->type, ShapeType::csg);
+        EXPECT_EQ(nearest->t, got[0]);
+        ASSERT_NE(nearest->leaf, nullptr);
+        EXPECT_NE(nearest->leaf->type, ShapeType::csg);
       }
     }
   }
@@ -288,20 +289,22 @@ TEST(Csg, CutFacesCarryTheSubtractedObject) {
   Primitive cutter = sphere({0, 0, -1}, 0.5);
   cutter.material = 2;
   const Primitive d = make_csg(CsgOperation::intersection, {cube, inverted(cutter)});
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(d, ray({0, 0, -5}, {0, 0, 1}), tolerance::min_isect_depth, tolerance::bound_huge, h));
-  EXPECT_DOUBLE_EQ(h.t, 4.5);
-  ASSERT_NE(h.leaf, nullptr);
-  EXPECT_EQ(h.leaf->material, 2u);
-  EXPECT_TRUE(h.leaf->inverse);
+  std::optional<SurfaceHit> h;
+  h = nearest_hit(d, ray({0, 0, -5}, {0, 0, 1}), tolerance::min_isect_depth, tolerance::bound_huge);
+  ASSERT_TRUE(h);
+  EXPECT_DOUBLE_EQ(h->t, 4.5);
+  ASSERT_NE(h->leaf, nullptr);
+  EXPECT_EQ(h->leaf->material, 2u);
+  EXPECT_TRUE(h->leaf->inverse);
   // The leaf's own normal at the bottom of the dent: the sphere's outward normal, +z.
-  const Vec3 n = surface_normal(h, {0, 0, -0.5});
+  const Vec3 n = surface_normal(*h, {0, 0, -0.5});
   EXPECT_DOUBLE_EQ(n.z, 1.0);
   // Off the dent, the box face with the box's material.
-  ASSERT_TRUE(nearest_hit(d, ray({0.8, 0.8, -5}, {0, 0, 1}), tolerance::min_isect_depth, tolerance::bound_huge, h));
-  EXPECT_DOUBLE_EQ(h.t, 4.0);
-  EXPECT_EQ(h.leaf->material, 1u);
-  EXPECT_FALSE(h.leaf->inverse);
+  h = nearest_hit(d, ray({0.8, 0.8, -5}, {0, 0, 1}), tolerance::min_isect_depth, tolerance::bound_huge);
+  ASSERT_TRUE(h);
+  EXPECT_DOUBLE_EQ(h->t, 4.0);
+  EXPECT_EQ(h->leaf->material, 1u);
+  EXPECT_FALSE(h->leaf->inverse);
 }
 
 TEST(Csg, InverseFollowsDeMorgan) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 
 #include "geometry_kit.hpp"
@@ -78,18 +79,18 @@ TEST(HeightField, RandomRaysMatchBruteForceOverTheTriangles) {
       double t = 0, margin = 0;
       if (hit_triangle(tris[i], r, t, margin) && t < best) best = t, margin_at_best = margin, best_index = i;
     }
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     if (margin_at_best < 1e-3) continue;   // near a triangle's edge POV-Ray's 1e-4 slack may pick the neighbour
     ++compared;
     ASSERT_EQ(found, best < tolerance::bound_huge) << "ray " << k;
     if (!found) continue;
     ++hits;
-    EXPECT_NEAR(h.t, best, 1e-9 * (1 + best)) << "ray " << k;
-    EXPECT_EQ(h.element, best_index) << "ray " << k;
+    EXPECT_NEAR(h->t, best, 1e-9 * (1 + best)) << "ray " << k;
+    EXPECT_EQ(h->element, best_index) << "ray " << k;
     const Triangle& t = tris[best_index];
     const Vec3 flat = normalize(cross(t.b - t.a, t.c - t.a));
-    const Vec3 n = surface_normal(h, r.origin + r.direction * h.t);
+    const Vec3 n = surface_normal(*h, r.origin + r.direction * h->t);
     EXPECT_NEAR(length(n), 1.0, 1e-12);
     if (!smooth) {
       EXPECT_NEAR(std::abs(dot(n, flat)), 1.0, 1e-9) << "ray " << k;
@@ -132,9 +133,10 @@ TEST(HeightField, WaterLevelCutsTheBottom) {
   std::vector<std::uint16_t> v(9, 16384);
   v[4] = 60000;
   const Primitive p = place_height_field(height_field_data(v, 3, 3, 0.5, false), Matrix::identity());
-  SurfaceHit h;
-  EXPECT_FALSE(nearest_hit(p, ray({-1, 0.3, 0.1}, {1, 0, 0}), 1e-4, 1e9, h));
-  EXPECT_TRUE(nearest_hit(p, ray({0.5, 2, 0.5}, {0, -1, 0}), 1e-4, 1e9, h));
+  std::optional<SurfaceHit> h;
+  EXPECT_FALSE(nearest_hit(p, ray({-1, 0.3, 0.1}, {1, 0, 0}), 1e-4, 1e9));
+  h = nearest_hit(p, ray({0.5, 2, 0.5}, {0, -1, 0}), 1e-4, 1e9);
+  EXPECT_TRUE(h);
   EXPECT_TRUE(inside(p, {0.1, 0.3, 0.1}));   // below the water level: inside
 }
 
@@ -144,12 +146,12 @@ TEST(HeightField, ARayLeavingAHitFindsNoHitAtTheSamePoint) {
   for (int k = 0; k < 300; ++k) {
     const Primitive p = place_height_field(random_field(rng, 6, 6, false), Matrix::identity());
     const Ray r = ray({u(rng), 3, u(rng)}, {u(rng) - 0.5, -1, u(rng) - 0.5});
-    SurfaceHit first;
-    if (!nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, first)) continue;
-    const Ray next{r.origin + r.direction * first.t, r.direction};
-    SurfaceHit second;
-    if (nearest_hit(p, next, tolerance::min_isect_depth, tolerance::bound_huge, second)) {
-      EXPECT_NE(second.element, first.element) << "ray " << k;
+    const std::optional<SurfaceHit> first = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    if (!first) continue;
+    const Ray next{r.origin + r.direction * first->t, r.direction};
+    const std::optional<SurfaceHit> second = nearest_hit(p, next, tolerance::min_isect_depth, tolerance::bound_huge);
+    if (second) {
+      EXPECT_NE(second->element, first->element) << "ray " << k;
     }
   }
 }

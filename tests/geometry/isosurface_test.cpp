@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "geometry_kit.hpp"
@@ -51,21 +52,22 @@ TEST(Isosurface, RandomRaysFindTheSphereWithinAccuracyBeyondIt) {
     const Ray r = ray(origin, centre + random_unit(rng) * (0.7 * s) - origin);
     double t0 = 0, t1 = 0;
     const bool crosses = sphere_crossings(r, centre, 0.8 * s, t0, t1) && t1 - t0 > 0.05 * s;
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     if (!crosses) continue;
     ++hits;
     ASSERT_TRUE(found) << "ray " << k;
     // The search measures its pieces in world depth, whatever the transform.
-    EXPECT_GE(h.t, t0 - 1e-12) << "ray " << k;
-    EXPECT_LT(h.t, t0 + 0.001) << "ray " << k;
-    const Vec3 at = r.origin + r.direction * h.t;
-    EXPECT_NEAR(dot(surface_normal(h, at), normalize(at - centre)), 1.0, 1e-5) << "ray " << k;
+    EXPECT_GE(h->t, t0 - 1e-12) << "ray " << k;
+    EXPECT_LT(h->t, t0 + 0.001) << "ray " << k;
+    const Vec3 at = r.origin + r.direction * h->t;
+    EXPECT_NEAR(dot(surface_normal(*h, at), normalize(at - centre)), 1.0, 1e-5) << "ray " << k;
     // Leaving the hit finds the far side, not the same surface again.
-    SurfaceHit next;
-    ASSERT_TRUE(nearest_hit(p, Ray{at, r.direction}, tolerance::min_isect_depth, tolerance::bound_huge, next));
-    EXPECT_GE(next.t, t1 - h.t - 1e-12) << "ray " << k;
-    EXPECT_LT(next.t, t1 - h.t + 0.001) << "ray " << k;
+    const std::optional<SurfaceHit> next = nearest_hit(p, Ray{at, r.direction}, tolerance::min_isect_depth,
+                                                       tolerance::bound_huge);
+    ASSERT_TRUE(next);
+    EXPECT_GE(next->t, t1 - h->t - 1e-12) << "ray " << k;
+    EXPECT_LT(next->t, t1 - h->t + 0.001) << "ray " << k;
     ++seconds;
   }
   EXPECT_GT(hits, 1000);
@@ -91,10 +93,11 @@ TEST(Isosurface, MaxTraceKeepsThatManyRoots) {
 TEST(Isosurface, AClosedContainerShowsWhereTheFunctionIsInside) {
   // f = x − 0.3 < 0 left of x = 0.3: a ray entering the box's −x face there hits the container.
   const Primitive p = make_isosurface(parsed("function { x - 0.3 }"), Matrix::identity());
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(p, ray({-5, 0.2, 0.1}, {1, 0, 0}), tolerance::min_isect_depth, 1e10, h));
-  EXPECT_EQ(h.t, 4.0);
-  EXPECT_EQ(surface_normal(h, {-1, 0.2, 0.1}), (Vec3{-1, 0, 0}));
+  std::optional<SurfaceHit> h;
+  h = nearest_hit(p, ray({-5, 0.2, 0.1}, {1, 0, 0}), tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h->t, 4.0);
+  EXPECT_EQ(surface_normal(*h, {-1, 0.2, 0.1}), (Vec3{-1, 0, 0}));
   HitBuffer hits;
   collect_hits(p, ray({-5, 0.2, 0.1}, {1, 0, 0}), hits);
   EXPECT_EQ(hits.size(), 1u);   // the container face uses up max_trace 1
@@ -105,9 +108,10 @@ TEST(Isosurface, AClosedContainerShowsWhereTheFunctionIsInside) {
   std::sort(hits.begin(), hits.end(), [](auto& a, auto& b) { return a.t < b.t; });
   EXPECT_NEAR(hits[1].t, 5.3, 0.0011);
   const Primitive open = make_isosurface(parsed("function { x - 0.3 } open"), Matrix::identity());
-  ASSERT_TRUE(nearest_hit(open, ray({-5, 0.2, 0.1}, {1, 0, 0}), tolerance::min_isect_depth, 1e10, h));
-  EXPECT_NEAR(h.t, 5.3, 0.0011);   // open: only the plane
-  EXPECT_NEAR(surface_normal(h, {0.3, 0.2, 0.1}).x, 1.0, 1e-9);
+  h = nearest_hit(open, ray({-5, 0.2, 0.1}, {1, 0, 0}), tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(h->t, 5.3, 0.0011);   // open: only the plane
+  EXPECT_NEAR(surface_normal(*h, {0.3, 0.2, 0.1}).x, 1.0, 1e-9);
 }
 
 TEST(Isosurface, InsideIsWithinTheContainerWhereTheFunctionIsAtMostTheThreshold) {

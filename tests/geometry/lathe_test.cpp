@@ -2,6 +2,7 @@
 // parity of profile crossings in the (radius, height) plane, with the profile drawn independently (sweep_kit.hpp);
 // normals against the profile's tangent there, POV-Ray's inside rule, rays leaving a hit, the horizontal-ray path.
 #include <gtest/gtest.h>
+#include <optional>
 
 #include "renderer/shapes/solid_shapes.hpp"
 #include "sweep_kit.hpp"
@@ -80,10 +81,10 @@ TEST(Lathe, ACylinderProfileGivesTheCylinder) {
   EXPECT_NEAR(hits[1].t * normalize(Vec3{1, 0.01, 0}).x, 5 + dx, 1e-12);
   const Vec3 at = Vec3{-5, 1, 0.5} + normalize(Vec3{1, 0.01, 0}) * hits[0].t;
   EXPECT_NEAR(dot(surface_normal(hits[0], at), normalize(Vec3{at.x, 0, at.z})), 1.0, 1e-12);
-  SurfaceHit top;
-  ASSERT_TRUE(nearest_hit(p, ray({0.3, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10, top));
-  EXPECT_NEAR(top.t, 3, 1e-12);   // the top "segment" (1, 2) → (0, 2) is the cap
-  EXPECT_NEAR(std::fabs(surface_normal(top, {0.3, 2, 0}).y), 1, 1e-12);
+  const std::optional<SurfaceHit> top = nearest_hit(p, ray({0.3, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(top);
+  EXPECT_NEAR(top->t, 3, 1e-12);   // the top "segment" (1, 2) → (0, 2) is the cap
+  EXPECT_NEAR(std::fabs(surface_normal(*top, {0.3, 2, 0}).y), 1, 1e-12);
   EXPECT_TRUE(inside(p, {0.5, 1, 0}));
   EXPECT_FALSE(inside(p, {0.5, 2.5, 0}));
   EXPECT_FALSE(inside(p, {1.2, 1, 0}));
@@ -93,11 +94,11 @@ TEST(Lathe, AHorizontalRayUsesTheRadiusEquation) {
   // |Dy| ≤ 1e-10: the segment roots come from r·u² = 0, each giving the two ray points at radius |x(w)|.
   const LatheCase c = make_case({{0, 0}, {1, 0}, {1.5, 2}, {0, 2}}, SplineKind::linear, false);
   const Primitive p = make_lathe(c.lathe, Matrix::identity());
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(p, ray({-5, 1, 0}, {1, 0, 0}), tolerance::min_isect_depth, 1e10, h));
-  EXPECT_NEAR(h.t, 5 - 1.25, 1e-9);
-  EXPECT_EQ(h.element, 1u);
-  EXPECT_NEAR(h.u, 0.5, 1e-9);
+  const std::optional<SurfaceHit> h = nearest_hit(p, ray({-5, 1, 0}, {1, 0, 0}), tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(h->t, 5 - 1.25, 1e-9);
+  EXPECT_EQ(h->element, 1u);
+  EXPECT_NEAR(h->u, 0.5, 1e-9);
 }
 
 TEST(Lathe, RandomRaysMatchMarchingOnTheProfile) {
@@ -116,27 +117,28 @@ TEST(Lathe, RandomRaysMatchMarchingOnTheProfile) {
     const Vec3 origin = m.point(Vec3{pos(rng), pos(rng) + 1.5, pos(rng)});
     const Ray r = ray(origin, m.point(Vec3{u(rng) - 0.5, 1.5 * u(rng), u(rng) - 0.5}) - origin);
     const std::vector<double> ref = crossings(in, r, 0.0, 80.0, 40000);
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     if (found != !ref.empty() || (ref.size() >= 2 && ref[1] - ref[0] < 1e-2) || grazes(p, r)) continue;
     ++compared;
     if (!found) continue;
     ++hits;
-    ASSERT_NEAR(h.t, ref[0], 2e-5 * (1 + ref[0])) << "ray " << k;
+    ASSERT_NEAR(h->t, ref[0], 2e-5 * (1 + ref[0])) << "ray " << k;
     // The normal: the profile's tangent at the hit, turned about the axis.
-    const Vec3 hit = r.origin + r.direction * h.t, q = inv.point(hit);
+    const Vec3 hit = r.origin + r.direction * h->t, q = inv.point(hit);
     const double radius = std::sqrt(q.x * q.x + q.z * q.z);
     Point2 t{};
     distance_to(c.edges, radius, q.y, &t);
     const Vec3 n{t[1] * q.x / radius, -t[0], t[1] * q.z / radius};
-    EXPECT_NEAR(std::fabs(dot(surface_normal(h, hit), world_normal(m, n))), 1.0, 2e-4) << "ray " << k;
+    EXPECT_NEAR(std::fabs(dot(surface_normal(*h, hit), world_normal(m, n))), 1.0, 2e-4) << "ray " << k;
     // Leaving the hit along the ray finds the next crossing, not the same surface again.
-    SurfaceHit next;
-    const bool again = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth, tolerance::bound_huge, next);
+    const std::optional<SurfaceHit> next = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth,
+                                                       tolerance::bound_huge);
+    const bool again = next.has_value();
     if (ref.size() < 2 || ref[1] - ref[0] < 1e-3 || (ref.size() > 2 && ref[2] - ref[1] < 1e-2)) continue;
     ++seconds;
     ASSERT_TRUE(again) << "ray " << k;
-    EXPECT_NEAR(next.t, ref[1] - ref[0], 2e-5 * (1 + ref[1])) << "ray " << k;
+    EXPECT_NEAR(next->t, ref[1] - ref[0], 2e-5 * (1 + ref[1])) << "ray " << k;
   }
   EXPECT_GT(compared, 500);
   EXPECT_GT(hits, 250);
@@ -174,8 +176,8 @@ TEST(Lathe, AnEmptyBezierLatheIsNeverHit) {
   l.spline = SplineKind::bezier;
   l.points = profile({});
   const Primitive p = make_lathe(l, Matrix::identity());
-  SurfaceHit h;
-  EXPECT_FALSE(nearest_hit(p, ray({0, 0, -5}, {0, 0, 1}), tolerance::min_isect_depth, 1e10, h));
+  const std::optional<SurfaceHit> h = nearest_hit(p, ray({0, 0, -5}, {0, 0, 1}), tolerance::min_isect_depth, 1e10);
+  EXPECT_FALSE(h);
   EXPECT_FALSE(inside(p, {0, 0, 0}));
   EXPECT_TRUE(world_bounds(p).empty());
 }

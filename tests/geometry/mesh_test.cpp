@@ -2,6 +2,7 @@
 // aimed exactly at shared vertices and edges never leak), placements of one shared mesh against the same
 // triangles placed one by one, and inside_vector.
 #include <gtest/gtest.h>
+#include <optional>
 
 #include "renderer/shapes/watertight.hpp"
 #include "tests/geometry/mesh_kit.hpp"
@@ -41,10 +42,10 @@ TEST(Mesh, BvhNearestHitEqualsBruteForce) {
     const render::Ray r = ray(origin, random_unit(rng) * 0.9 - origin);   // aimed into the sphere
     double expected = 0;
     const bool found = brute_force_nearest(*bumpy, r, expected);
-    render::SurfaceHit hit;
-    ASSERT_EQ(render::nearest_hit(p, r, 0.0, 1e10, hit), found) << "ray " << i;
+    const std::optional<render::SurfaceHit> hit = render::nearest_hit(p, r, 0.0, 1e10);
+    ASSERT_EQ(hit.has_value(), found) << "ray " << i;
     if (!found) continue;
-    EXPECT_EQ(hit.t, expected) << "ray " << i;
+    EXPECT_EQ(hit->t, expected) << "ray " << i;
     ++hits;
     render::HitBuffer all;
     render::collect_hits(p, r, all);
@@ -77,15 +78,17 @@ TEST(Mesh, RaysAtSharedVerticesAndEdgesOfAClosedMeshNeverLeak) {
       const Vec3 centre = m.point({0, 0, 0});
       const render::Ray out{centre, normalize(world_target - centre)};
       const render::Ray in{world_target + (world_target - centre) * 2.0, normalize(centre - world_target)};
-      render::SurfaceHit hit;
-      EXPECT_TRUE(render::nearest_hit(p, out, 0.0, 1e10, hit)) << "outward ray leaked at target " << rays;
-      EXPECT_TRUE(render::nearest_hit(p, in, 0.0, 1e10, hit)) << "inward ray leaked at target " << rays;
+      std::optional<render::SurfaceHit> hit;
+      hit = render::nearest_hit(p, out, 0.0, 1e10);
+      EXPECT_TRUE(hit) << "outward ray leaked at target " << rays;
+      hit = render::nearest_hit(p, in, 0.0, 1e10);
+      EXPECT_TRUE(hit) << "inward ray leaked at target " << rays;
       ++rays;
     }
     for (int i = 0; i < 20000; ++i) {   // every ray from inside a closed mesh hits it
-      render::SurfaceHit hit;
-      ASSERT_TRUE(render::nearest_hit(p, render::Ray{m.point({0.01, -0.02, 0.03}), random_unit(rng)}, 0.0, 1e10,
-                                      hit));
+      const std::optional<render::SurfaceHit> hit =
+          render::nearest_hit(p, render::Ray{m.point({0.01, -0.02, 0.03}), random_unit(rng)}, 0.0, 1e10);
+      ASSERT_TRUE(hit);
     }
   }
 }
@@ -108,15 +111,15 @@ TEST(Mesh, PlacementsOfASharedMeshEqualTheSameTrianglesPlacedOneByOne) {
     for (int i = 0; i < 3000; ++i) {
       const Vec3 origin = m.point(random_unit(rng) * 4.0);
       const render::Ray aimed{origin, normalize(m.point(random_unit(rng) * 1.05) - origin)};
-      render::SurfaceHit hit;
-      const bool found = render::nearest_hit(instance, aimed, 1e-4, 1e10, hit);
+      const std::optional<render::SurfaceHit> hit = render::nearest_hit(instance, aimed, 1e-4, 1e10);
+      const bool found = hit.has_value();
       const render::Hit expected = individual.closest_hit(aimed, 1e-4, 1e10);
       if (found != expected.found()) { ++mismatched; continue; }   // grazing a silhouette edge: either answer
       if (!found) continue;
       ++hits;
-      EXPECT_NEAR(hit.t, expected.t, 1e-9 * expected.t);
-      const Vec3 at = aimed.origin + aimed.direction * hit.t;
-      EXPECT_NEAR(std::fabs(dot(render::surface_normal(hit, at),
+      EXPECT_NEAR(hit->t, expected.t, 1e-9 * expected.t);
+      const Vec3 at = aimed.origin + aimed.direction * hit->t;
+      EXPECT_NEAR(std::fabs(dot(render::surface_normal(*hit, at),
                                 render::surface_normal(expected.surface, at))), 1.0, 1e-9);
     }
     EXPECT_LE(mismatched, 3);
@@ -159,13 +162,15 @@ TEST(EmbreeMesh, NearestHitEqualsTheOwnWalk) {
   for (int i = 0; i < 5000; ++i) {
     const Vec3 origin{u(rng) * 2, u(rng) * 2, u(rng) * 2};
     const render::Ray r = ray(origin, random_unit(rng) * 0.9 - origin);
-    render::SurfaceHit a, b;
-    const bool found = render::nearest_hit(own, r, 0.0, 1e10, a);
-    ASSERT_EQ(render::nearest_hit(fast, r, 0.0, 1e10, b), found) << "ray " << i;
+    std::optional<render::SurfaceHit> a, b;
+    a = render::nearest_hit(own, r, 0.0, 1e10);
+    const bool found = a.has_value();
+    b = render::nearest_hit(fast, r, 0.0, 1e10);
+    ASSERT_EQ(b.has_value(), found) << "ray " << i;
     if (!found) continue;
     ++hits;
-    EXPECT_NEAR(b.t, a.t, 1e-6 * a.t) << "ray " << i;
-    same_triangle += a.element == b.element && a.t == b.t;
+    EXPECT_NEAR(b->t, a->t, 1e-6 * a->t) << "ray " << i;
+    same_triangle += a->element == b->element && a->t == b->t;
   }
   EXPECT_GT(hits, 2000);
   EXPECT_GE(same_triangle, hits * 99 / 100);
@@ -182,14 +187,17 @@ TEST(EmbreeMesh, RaysThroughSharedEdgesOfAClosedMeshNeverLeak) {
     for (int k = 0; k < 3; ++k) {
       const Vec3 a = d.vertex(d.faces[i + k]), b = d.vertex(d.faces[i + (k + 1) % 3]);
       for (const Vec3 target : {a, (a + b) * 0.5, a + (b - a) * (1.0 / 3.0)}) {
-        render::SurfaceHit hit;
-        EXPECT_TRUE(render::nearest_hit(p, render::Ray{{0, 0, 0}, normalize(target)}, 0.0, 1e10, hit));
-        EXPECT_TRUE(render::nearest_hit(p, render::Ray{target * 3.0, normalize(-target)}, 0.0, 1e10, hit));
+        std::optional<render::SurfaceHit> hit;
+        hit = render::nearest_hit(p, render::Ray{{0, 0, 0}, normalize(target)}, 0.0, 1e10);
+        EXPECT_TRUE(hit);
+        hit = render::nearest_hit(p, render::Ray{target * 3.0, normalize(-target)}, 0.0, 1e10);
+        EXPECT_TRUE(hit);
       }
     }
   for (int i = 0; i < 20000; ++i) {
-    render::SurfaceHit hit;
-    ASSERT_TRUE(render::nearest_hit(p, render::Ray{{0.01, -0.02, 0.03}, random_unit(rng)}, 0.0, 1e10, hit));
+    const std::optional<render::SurfaceHit> hit =
+        render::nearest_hit(p, render::Ray{{0.01, -0.02, 0.03}, random_unit(rng)}, 0.0, 1e10);
+    ASSERT_TRUE(hit);
   }
 }
 

@@ -3,6 +3,7 @@
 // normals against the outline's tangent or the end planes, POV-Ray's inside rule, rays leaving a hit, open and
 // unclosed prisms.
 #include <gtest/gtest.h>
+#include <optional>
 
 #include "renderer/shapes/solid_shapes.hpp"
 #include "renderer/shapes/sweep.hpp"
@@ -85,11 +86,12 @@ TEST(Prism, ASquareOutlineGivesABox) {
   EXPECT_NEAR(hits[0].t, 4, 1e-12);
   EXPECT_NEAR(hits[1].t, 6, 1e-12);
   EXPECT_NEAR(std::fabs(surface_normal(hits[0], {-1, 0.5, 0.2}).x), 1, 1e-12);
-  SurfaceHit top;
-  ASSERT_TRUE(nearest_hit(p, ray({0.2, 5, 0.3}, {0, -1, 0}), tolerance::min_isect_depth, 1e10, top));
-  EXPECT_NEAR(top.t, 3, 1e-12);
-  EXPECT_EQ(top.element, cap_element);
-  EXPECT_NEAR(surface_normal(top, {0.2, 2, 0.3}).y, 1, 1e-12);
+  const std::optional<SurfaceHit> top = nearest_hit(p, ray({0.2, 5, 0.3}, {0, -1, 0}), tolerance::min_isect_depth,
+                                                    1e10);
+  ASSERT_TRUE(top);
+  EXPECT_NEAR(top->t, 3, 1e-12);
+  EXPECT_EQ(top->element, cap_element);
+  EXPECT_NEAR(surface_normal(*top, {0.2, 2, 0.3}).y, 1, 1e-12);
   EXPECT_TRUE(inside(p, {0, 1, 0}));
   EXPECT_TRUE(inside(p, {0, 0, 0}));    // H1 ≤ y
   EXPECT_FALSE(inside(p, {0, 2, 0}));   // y < H2
@@ -100,11 +102,12 @@ TEST(Prism, OpenPrismsHaveNoEndPlanesButAnInside) {
   PrismCase c = make_case({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}, SplineKind::linear, false, 0, 2, false);
   c.prism.open = true;
   const Primitive p = make_prism(c.prism, Matrix::identity());
-  SurfaceHit h;
-  ASSERT_TRUE(nearest_hit(p, ray({0.2, 2.5, 0.3}, {0.5, -1, 0}), tolerance::min_isect_depth, 1e10, h));
-  EXPECT_NEAR(h.t * normalize(Vec3{0.5, -1, 0}).x, 0.8, 1e-12);   // the wall x = 1, through the open top
-  EXPECT_NE(h.element, cap_element);
-  EXPECT_NE(h.element, base_element);
+  const std::optional<SurfaceHit> h = nearest_hit(p, ray({0.2, 2.5, 0.3}, {0.5, -1, 0}), tolerance::min_isect_depth,
+                                                  1e10);
+  ASSERT_TRUE(h);
+  EXPECT_NEAR(h->t * normalize(Vec3{0.5, -1, 0}).x, 0.8, 1e-12);   // the wall x = 1, through the open top
+  EXPECT_NE(h->element, cap_element);
+  EXPECT_NE(h->element, base_element);
   EXPECT_TRUE(inside(p, {0, 1, 0}));
 }
 
@@ -112,8 +115,7 @@ TEST(Prism, AnUnclosedOutlineIsNeverHit) {
   PrismCase c = make_case({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, SplineKind::bezier, false, 0, 1, false);
   c.prism.degenerate = true;
   const Primitive p = make_prism(c.prism, Matrix::identity());
-  SurfaceHit h;
-  EXPECT_FALSE(nearest_hit(p, ray({0.5, 5, 0.5}, {0, -1, 0}), tolerance::min_isect_depth, 1e10, h));
+  EXPECT_FALSE(nearest_hit(p, ray({0.5, 5, 0.5}, {0, -1, 0}), tolerance::min_isect_depth, 1e10));
 }
 
 TEST(Prism, RandomRaysMatchMarchingOnTheOutline) {
@@ -133,18 +135,18 @@ TEST(Prism, RandomRaysMatchMarchingOnTheOutline) {
     const Vec3 origin = m.point(Vec3{pos(rng), pos(rng), pos(rng)});
     const Ray r = ray(origin, m.point(Vec3{u(rng) - 0.5, h1 + (h2 - h1) * u(rng), u(rng) - 0.5}) - origin);
     const std::vector<double> ref = crossings(in, r, 0.0, 80.0, 40000);
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     if (found != !ref.empty() || (ref.size() >= 2 && ref[1] - ref[0] < 1e-2) || grazes(p, r)) continue;
     ++compared;
     if (!found) continue;
     ++hits;
-    ASSERT_NEAR(h.t, ref[0], 2e-5 * (1 + ref[0])) << "ray " << k;
-    const Vec3 hit = r.origin + r.direction * h.t, q = inv.point(hit);
+    ASSERT_NEAR(h->t, ref[0], 2e-5 * (1 + ref[0])) << "ray " << k;
+    const Vec3 hit = r.origin + r.direction * h->t, q = inv.point(hit);
     Vec3 n{0, 1, 0};
-    if (h.element == cap_element || h.element == base_element) {
+    if (h->element == cap_element || h->element == base_element) {
       ++caps;
-      EXPECT_NEAR(q.y, h.element == cap_element ? h2 : h1, 1e-9) << "ray " << k;
+      EXPECT_NEAR(q.y, h->element == cap_element ? h2 : h1, 1e-9) << "ray " << k;
     } else {
       Point2 t{};
       const Point2 o = outline_point(c.prism, q);
@@ -152,13 +154,14 @@ TEST(Prism, RandomRaysMatchMarchingOnTheOutline) {
       n = Vec3{t[1], 0, -t[0]};
       if (conic) n.y = -(q.x * n.x + q.z * n.z) / q.y;   // the cone's normal: orthogonal to the ray from the apex
     }
-    EXPECT_NEAR(std::fabs(dot(surface_normal(h, hit), world_normal(m, n))), 1.0, 2e-4) << "ray " << k;
-    SurfaceHit next;
-    const bool again = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth, tolerance::bound_huge, next);
+    EXPECT_NEAR(std::fabs(dot(surface_normal(*h, hit), world_normal(m, n))), 1.0, 2e-4) << "ray " << k;
+    const std::optional<SurfaceHit> next = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth,
+                                                       tolerance::bound_huge);
+    const bool again = next.has_value();
     if (ref.size() < 2 || (ref.size() > 2 && ref[2] - ref[1] < 1e-2)) continue;
     ++seconds;
     ASSERT_TRUE(again) << "ray " << k;
-    EXPECT_NEAR(next.t, ref[1] - ref[0], 2e-5 * (1 + ref[1])) << "ray " << k;
+    EXPECT_NEAR(next->t, ref[1] - ref[0], 2e-5 * (1 + ref[1])) << "ray " << k;
   }
   EXPECT_GT(compared, 700);
   EXPECT_GT(hits, 400);

@@ -3,6 +3,7 @@
 // points, with slopes 2·r·Δr/Δy from their neighbours); normals against the numeric gradient of x² + z² − r²(y),
 // the end discs, POV-Ray's inside rule, rays leaving a hit, and open sors.
 #include <gtest/gtest.h>
+#include <optional>
 
 #include "renderer/shapes/solid_shapes.hpp"
 #include "renderer/shapes/sweep.hpp"
@@ -69,15 +70,16 @@ TEST(Sor, AConstantRadiusGivesACylinder) {
   EXPECT_NEAR(hits[0].t, 4, 1e-9);
   EXPECT_NEAR(hits[1].t, 6, 1e-9);
   EXPECT_NEAR(surface_normal(hits[0], {-1, 1, 0}).x, -1, 1e-9);
-  SurfaceHit top;
-  ASSERT_TRUE(nearest_hit(p, ray({0.5, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10, top));
-  EXPECT_NEAR(top.t, 3, 1e-12);
-  EXPECT_EQ(top.element, cap_element);
-  EXPECT_EQ(surface_normal(top, {0.5, 2, 0}), (Vec3{0, 1, 0}));
-  SurfaceHit bottom;
-  ASSERT_TRUE(nearest_hit(p, ray({0.5, -5, 0}, {0, 1, 0}), tolerance::min_isect_depth, 1e10, bottom));
-  EXPECT_EQ(bottom.element, base_element);
-  EXPECT_EQ(surface_normal(bottom, {0.5, 0, 0}), (Vec3{0, -1, 0}));
+  const std::optional<SurfaceHit> top = nearest_hit(p, ray({0.5, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(top);
+  EXPECT_NEAR(top->t, 3, 1e-12);
+  EXPECT_EQ(top->element, cap_element);
+  EXPECT_EQ(surface_normal(*top, {0.5, 2, 0}), (Vec3{0, 1, 0}));
+  const std::optional<SurfaceHit> bottom = nearest_hit(p, ray({0.5, -5, 0}, {0, 1, 0}), tolerance::min_isect_depth,
+                                                       1e10);
+  ASSERT_TRUE(bottom);
+  EXPECT_EQ(bottom->element, base_element);
+  EXPECT_EQ(surface_normal(*bottom, {0.5, 0, 0}), (Vec3{0, -1, 0}));
   EXPECT_TRUE(inside(p, {0.5, 1, 0}));
   EXPECT_FALSE(inside(p, {0.5, 2.5, 0}));
 }
@@ -85,8 +87,7 @@ TEST(Sor, AConstantRadiusGivesACylinder) {
 TEST(Sor, AnOpenSorHasNoEndDiscs) {
   const SorCase c = make_case({{1, -1}, {1, 0}, {1, 2}, {1, 3}}, true, false);
   const Primitive p = make_sor(c.sor, Matrix::identity());
-  SurfaceHit h;
-  EXPECT_FALSE(nearest_hit(p, ray({0.5, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10, h));
+  EXPECT_FALSE(nearest_hit(p, ray({0.5, 5, 0}, {0, -1, 0}), tolerance::min_isect_depth, 1e10));
   EXPECT_TRUE(inside(p, {0.5, 1, 0}));   // the inside ignores `open`
 }
 
@@ -104,28 +105,29 @@ TEST(Sor, RandomRaysMatchMarchingOnTheProfile) {
     const Ray r = ray(origin, m.point(Vec3{u(rng) - 0.5, c.lowest() + (c.highest() - c.lowest()) * u(rng),
                                            u(rng) - 0.5}) - origin);
     const std::vector<double> ref = crossings(in, r, 0.0, 80.0, 40000);
-    SurfaceHit h;
-    const bool found = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge, h);
+    const std::optional<SurfaceHit> h = nearest_hit(p, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool found = h.has_value();
     if (found != !ref.empty() || (ref.size() >= 2 && ref[1] - ref[0] < 1e-2) || grazes(p, r)) continue;
     ++compared;
     if (!found) continue;
     ++hits;
-    ASSERT_NEAR(h.t, ref[0], 1e-7 * (1 + ref[0])) << "ray " << k;
-    const Vec3 hit = r.origin + r.direction * h.t, q = inv.point(hit);
-    Vec3 n{0, h.element == base_element ? -1.0 : 1.0, 0};
-    if (h.element == base_element || h.element == cap_element) {
+    ASSERT_NEAR(h->t, ref[0], 1e-7 * (1 + ref[0])) << "ray " << k;
+    const Vec3 hit = r.origin + r.direction * h->t, q = inv.point(hit);
+    Vec3 n{0, h->element == base_element ? -1.0 : 1.0, 0};
+    if (h->element == base_element || h->element == cap_element) {
       ++discs;
     } else {
       const double e = 1e-6;
       n = Vec3{2 * q.x, -(c.radius2(q.y + e) - c.radius2(q.y - e)) / (2 * e), 2 * q.z};
     }
-    EXPECT_NEAR(dot(surface_normal(h, hit), world_normal(m, n)), 1.0, 1e-6) << "ray " << k;
-    SurfaceHit next;
-    const bool again = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth, tolerance::bound_huge, next);
+    EXPECT_NEAR(dot(surface_normal(*h, hit), world_normal(m, n)), 1.0, 1e-6) << "ray " << k;
+    const std::optional<SurfaceHit> next = nearest_hit(p, Ray{hit, r.direction}, tolerance::min_isect_depth,
+                                                       tolerance::bound_huge);
+    const bool again = next.has_value();
     if (ref.size() < 2 || (ref.size() > 2 && ref[2] - ref[1] < 1e-2)) continue;
     ++seconds;
     ASSERT_TRUE(again) << "ray " << k;
-    EXPECT_NEAR(next.t, ref[1] - ref[0], 1e-7 * (1 + ref[1])) << "ray " << k;
+    EXPECT_NEAR(next->t, ref[1] - ref[0], 1e-7 * (1 + ref[1])) << "ray " << k;
   }
   EXPECT_GT(compared, 600);
   EXPECT_GT(hits, 350);
@@ -149,14 +151,16 @@ TEST(Sor, TheClosedFormAgreesWithSturmUnlessTheRayIsNearlyLevel) {
     const Ray r = ray(origin, Vec3{u(rng) - 0.5, c.lowest() + (c.highest() - c.lowest()) * u(rng), u(rng) - 0.5} -
                                   origin);
     if (std::fabs(r.direction.y) < 0.2) continue;
-    SurfaceHit a, b;
-    const bool fa = nearest_hit(exact, r, tolerance::min_isect_depth, tolerance::bound_huge, a);
-    const bool fb = nearest_hit(closed, r, tolerance::min_isect_depth, tolerance::bound_huge, b);
+    std::optional<SurfaceHit> a, b;
+    a = nearest_hit(exact, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool fa = a.has_value();
+    b = nearest_hit(closed, r, tolerance::min_isect_depth, tolerance::bound_huge);
+    const bool fb = b.has_value();
     if (grazes(exact, r)) continue;
     ++compared;
     ASSERT_EQ(fa, fb) << "ray " << k;
     if (fa) {
-      EXPECT_NEAR(a.t, b.t, 1e-9 * (1 + a.t)) << "ray " << k;
+      EXPECT_NEAR(a->t, b->t, 1e-9 * (1 + a->t)) << "ray " << k;
     }
   }
   EXPECT_GT(compared, 1000);
@@ -168,10 +172,12 @@ TEST(Sor, ANearlyLevelRayWithoutSturmGetsPovRaysWrongRoots) {
   SorCase closed = c;
   closed.sor.sturm = false;
   const Ray r = ray({0, 1.01, -6}, {0.005, -0.0021, 1});
-  SurfaceHit a, b;
-  ASSERT_TRUE(nearest_hit(make_sor(c.sor, Matrix::identity()), r, tolerance::min_isect_depth, 1e10, a));
-  const bool found = nearest_hit(make_sor(closed.sor, Matrix::identity()), r, tolerance::min_isect_depth, 1e10, b);
-  EXPECT_TRUE(!found || std::fabs(b.t - a.t) > 1e-4) << a.t << " " << b.t;
+  std::optional<SurfaceHit> a, b;
+  a = nearest_hit(make_sor(c.sor, Matrix::identity()), r, tolerance::min_isect_depth, 1e10);
+  ASSERT_TRUE(a);
+  b = nearest_hit(make_sor(closed.sor, Matrix::identity()), r, tolerance::min_isect_depth, 1e10);
+  const bool found = b.has_value();
+  EXPECT_TRUE(!found || std::fabs(b->t - a->t) > 1e-4) << a->t << " " << b->t;
 }
 
 TEST(Sor, InsideIsWithinTheHeightsAndTheRadius) {

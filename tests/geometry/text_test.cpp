@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <random>
 
 #include "runtime/truetype.hpp"
@@ -174,12 +175,12 @@ TEST(Text, NormalsAreThoseOfTheFaceOrWallHit) {
     const Vec3 origin{u(rng) * 4 - 1.5, u(rng) * 4 - 1.5, u(rng) * 4 - 1.8};
     const Vec3 wo = f.world_from_object.point(origin);
     const Ray ray{wo, normalize(f.world_from_object.point(target) - wo)};
-    SurfaceHit hit;
-    if (!nearest_hit(f.prim, ray, 1e-6, 1e9, hit)) continue;
+    const std::optional<SurfaceHit> hit = nearest_hit(f.prim, ray, 1e-6, 1e9);
+    if (!hit) continue;
     // Back to text space: the world normal is W⁻ᵀ n, so W's own matrix as "the inverse" undoes it.
-    const Vec3 n = f.world_from_object.normal_from_inverse(surface_normal(hit, ray.origin + ray.direction * hit.t));
-    const Vec3 q = f.world_from_object.inverse().point(ray.origin + ray.direction * hit.t);
-    EXPECT_NEAR(length(surface_normal(hit, {})), 1.0, 1e-12);
+    const Vec3 n = f.world_from_object.normal_from_inverse(surface_normal(*hit, ray.origin + ray.direction * hit->t));
+    const Vec3 q = f.world_from_object.inverse().point(ray.origin + ray.direction * hit->t);
+    EXPECT_NEAR(length(surface_normal(*hit, {})), 1.0, 1e-12);
     if (std::abs(q.z) < 1e-7 || std::abs(q.z - 0.4) < 1e-7) {   // a face: the normal is ±z in text space
       EXPECT_NEAR(std::abs(normalize(n).z), 1.0, 1e-9);
       continue;
@@ -209,18 +210,18 @@ TEST(Text, RaysLeavingAHitMeetTheNextSurfaceNotTheSameOne) {
     const Vec3 origin{u(rng) * 4 - 1.5, u(rng) * 4 - 1.5, -2.0};
     const Vec3 wo = f.world_from_object.point(origin);
     const Ray ray{wo, normalize(f.world_from_object.point(target) - wo)};
-    SurfaceHit first;
-    if (!nearest_hit(f.prim, ray, tolerance::min_isect_depth, 1e9, first)) continue;
-    const Ray on{ray.origin + ray.direction * first.t, ray.direction};
+    const std::optional<SurfaceHit> first = nearest_hit(f.prim, ray, tolerance::min_isect_depth, 1e9);
+    if (!first) continue;
+    const Ray on{ray.origin + ray.direction * first->t, ray.direction};
     HitBuffer all;
     collect_hits(f.prim, on, all);
     for (const SurfaceHit& h : all) EXPECT_GT(h.t, 1e-6);   // POV-Ray's own depth tolerance
     // The next surface along the ray is the next change of inside the brute force finds, not the one left.
-    SurfaceHit next;
-    const bool found = nearest_hit(f.prim, on, 1e-6, 1e9, next);
+    const std::optional<SurfaceHit> next = nearest_hit(f.prim, on, 1e-6, 1e9);
+    const bool found = next.has_value();
     const Vec3 local_o = object_from_world.point(on.origin), local_d = object_from_world.vector(on.direction);
     const double brute = first_crossing(f, local_o, local_d, 8.0);
-    if (found == (brute > 0) && (!found || std::abs(next.t - brute) < 2e-3)) ++agree;
+    if (found == (brute > 0) && (!found || std::abs(next->t - brute) < 2e-3)) ++agree;
     ++tested;
   }
   EXPECT_GT(tested, 100);

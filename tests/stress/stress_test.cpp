@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "renderer/render.hpp"
@@ -54,14 +55,15 @@ TEST(Stress, PlaneToTheHorizon) {
   const render::Primitive floor = plane({0, 1, 0}, 0);
   for (double angle : {1e-1, 1e-3, 1e-5, 1.1e-7}) {
     const render::Ray r = ray({0, 1, 0}, {std::cos(angle), -std::sin(angle), 0});
-    SurfaceHit hit;
-    ASSERT_TRUE(render::nearest_hit(floor, r, render::tolerance::min_isect_depth, render::tolerance::bound_huge, hit))
+    const std::optional<SurfaceHit> hit = render::nearest_hit(floor, r, render::tolerance::min_isect_depth,
+                                                              render::tolerance::bound_huge);
+    ASSERT_TRUE(hit)
         << angle;
-    EXPECT_NEAR(hit.t * std::sin(angle), 1.0, 1e-9) << angle;
+    EXPECT_NEAR(hit->t * std::sin(angle), 1.0, 1e-9) << angle;
   }
-  SurfaceHit beyond;
-  EXPECT_FALSE(render::nearest_hit(floor, ray({0, 1, 0}, {1, -1e-8, 0}), render::tolerance::min_isect_depth,
-                                   render::tolerance::bound_huge, beyond));   // 1e8 away: past MAX_DISTANCE
+  const std::optional<SurfaceHit> beyond = render::nearest_hit(
+      floor, ray({0, 1, 0}, {1, -1e-8, 0}), render::tolerance::min_isect_depth, render::tolerance::bound_huge);
+  EXPECT_FALSE(beyond);   // 1e8 away: past MAX_DISTANCE
 }
 
 // Coincident surfaces: POV-Ray shows whichever object its bounding tree tests first. povtrace: both surfaces are
@@ -115,17 +117,20 @@ TEST(Stress, ThinShellKeepsBothWalls) {
 // does the same in an ordinary scene (a scene made of such things is rescaled as a whole, scene_scale.hpp).
 TEST(Stress, FarTinyAndHugeObjects) {
   const render::Primitive far = sphere({0, 0, 1e6}, 1);
-  SurfaceHit hit;
-  ASSERT_TRUE(render::nearest_hit(far, ray({0, 0, 0}, {0, 0.5e-6, 1}), 1e-4, 1e7, hit));
-  EXPECT_NEAR(hit.t, 1e6 - std::sqrt(1 - 0.25), 1e-3);
-  EXPECT_FALSE(render::nearest_hit(far, ray({0, 0, 0}, {0, 1.01e-6, 1}), 1e-4, 1e7, hit));
+  std::optional<SurfaceHit> hit;
+  hit = render::nearest_hit(far, ray({0, 0, 0}, {0, 0.5e-6, 1}), 1e-4, 1e7);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 1e6 - std::sqrt(1 - 0.25), 1e-3);
+  EXPECT_FALSE(render::nearest_hit(far, ray({0, 0, 0}, {0, 1.01e-6, 1}), 1e-4, 1e7));
   const render::Primitive tiny = sphere({0, 0, 1}, 1e-4);
-  ASSERT_TRUE(render::nearest_hit(tiny, ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7, hit));
-  EXPECT_NEAR(hit.t, 1 - 1e-4, 1e-12);   // 1e-8 of the radius: the cancellation in t_closest − half chord
-  EXPECT_FALSE(render::nearest_hit(sphere({0, 0, 1}, 1e-6), ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7, hit));
+  hit = render::nearest_hit(tiny, ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 1 - 1e-4, 1e-12);   // 1e-8 of the radius: the cancellation in t_closest − half chord
+  EXPECT_FALSE(render::nearest_hit(sphere({0, 0, 1}, 1e-6), ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7));
   const render::Primitive huge = sphere({0, 0, 2e6}, 1e6);
-  ASSERT_TRUE(render::nearest_hit(huge, ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7, hit));
-  EXPECT_NEAR(hit.t, 1e6, 1e-9 * 1e6);
+  hit = render::nearest_hit(huge, ray({0, 0, 0}, {0, 0, 1}), 1e-4, 1e7);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 1e6, 1e-9 * 1e6);
 }
 
 // Degenerate transforms: a mirroring (negative) scale keeps normals pointing out of the solid, as POV-Ray's
@@ -133,10 +138,10 @@ TEST(Stress, FarTinyAndHugeObjects) {
 TEST(Stress, MirroringScaleKeepsOutwardNormals) {
   const render::Primitive s = transformed(sphere({0, 0, 0}, 1), Matrix::scaling({-2, 1, 1}));
   const render::Ray r = ray({-5, 0.1, 0}, {1, 0, 0});
-  SurfaceHit hit;
-  ASSERT_TRUE(render::nearest_hit(s, r, 1e-4, 1e7, hit));
-  const Vec3 p = r.origin + r.direction * hit.t;
-  EXPECT_LT(render::surface_normal(hit, p).x, 0.0);   // the hit is on the −x side, facing −x
+  const std::optional<SurfaceHit> hit = render::nearest_hit(s, r, 1e-4, 1e7);
+  ASSERT_TRUE(hit);
+  const Vec3 p = r.origin + r.direction * hit->t;
+  EXPECT_LT(render::surface_normal(*hit, p).x, 0.0);   // the hit is on the −x side, facing −x
 }
 
 // 10^7 random rays from inside closed meshes: POV-Ray's triangle test can let rays through shared edges and
@@ -153,8 +158,8 @@ TEST(Stress, TenMillionRaysFromInsideClosedMeshesNeverLeak) {
     p.object_from_world = m.inverse();
     const Vec3 centre = m.point({0.01, -0.02, 0.03});
     for (int i = 0; i < 2'500'000; ++i) {
-      SurfaceHit hit;
-      if (!render::nearest_hit(p, render::Ray{centre, random_unit(rng)}, 0.0, 1e10, hit)) ++leaks;
+      const std::optional<SurfaceHit> hit = render::nearest_hit(p, render::Ray{centre, random_unit(rng)}, 0.0, 1e10);
+      if (!hit) ++leaks;
     }
   }
   EXPECT_EQ(leaks, 0);

@@ -1,0 +1,32 @@
+// The prism behind the shape interface (registered in shape_list.hpp; the dispatch is shape_registry.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "scene/description.hpp"
+#include "renderer/geometry.hpp"
+#include "renderer/shapes/many_roots.hpp"
+#include "renderer/shapes/solid_shapes.hpp"
+#include "renderer/shapes/sweep.hpp"
+
+namespace povtrace::render::shapes {
+
+// prism (prism.cpp): PrismData. A hit's element is the side segment or an end cap, its u the segment parameter w.
+struct PrismShape {
+  using Description = Prism;
+  static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
+  static Vec3 normal(const Primitive& p, Vec3 world_point);
+  static bool inside(const Primitive& p, Vec3 world_point);
+  static Bounds object_bounds(const Primitive& p);
+  static Primitive build(const Prism& description, const Matrix& world_from_object) {
+    return make_prism(description, world_from_object);
+  }
+  static Vec3 normal_at(const Primitive& p, std::uint32_t element, double w, Vec3 world_point);
+  static Vec3 hit_normal(const SurfaceHit& hit, Vec3 world_point) {
+    return normal_at(*hit.leaf, hit.element, hit.u, world_point);
+  }
+};
+
+}  // namespace povtrace::render::shapes
