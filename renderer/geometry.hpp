@@ -189,9 +189,6 @@ void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
 
 // The nearest intersection of p with depth in (t_min, t_max), if there is one. Works for every shape.
 std::optional<SurfaceHit> nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max);
-// The same through an out-reference, for renderer/tracer.cpp until it takes the value form (another change owns
-// that file); new code uses the form above.
-bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit);
 
 // World-space unit normal at a world-space point on the primitive (not flipped toward the ray; `inverse` does
 // not change it either — the shading side flips normals to face the viewer as POV-Ray does).

@@ -558,9 +558,9 @@ std::uint32_t& Tracer::shadow_cache_slot(const RenderLight& l) {
 // POV-Ray tests the cached object with FindIntersection(object, …, light distance): any hit from MIN_ISECT_DEPTH
 // up to the light itself, with neither SHADOW_TOLERANCE limit of the ordinary walk.
 bool Tracer::cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const {
-  SurfaceHit hit;
-  return nearest_hit(scene_.accelerator.primitives()[primitive], ray, tolerance::min_isect_depth, distance, hit) &&
-         opaque_at(hit);
+  const std::optional<SurfaceHit> hit =
+      nearest_hit(scene_.accelerator.primitives()[primitive], ray, tolerance::min_isect_depth, distance);
+  return hit && opaque_at(*hit);
 }
 
 // POV-Ray's shadow ray exactly (trace.cpp TracePointLightShadowRay): first the object in the shadow cache; then

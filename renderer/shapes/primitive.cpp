@@ -45,12 +45,6 @@ std::optional<SurfaceHit> nearest_hit(const Primitive& p, const Ray& ray, double
       p.type, [&]<class S>(std::type_identity<S>) { return shapes::nearest_hit_of<S>(p, ray, t_min, t_max); });
 }
 
-bool nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max, SurfaceHit& hit) {
-  const std::optional<SurfaceHit> found = nearest_hit(p, ray, t_min, t_max);
-  if (found) hit = *found;
-  return found.has_value();
-}
-
 Vec3 surface_normal(const SurfaceHit& hit, Vec3 world_point) {
   return shapes::visit_shape(
       hit.leaf->type, [&]<class S>(std::type_identity<S>) { return shapes::hit_normal_of<S>(hit, world_point); });

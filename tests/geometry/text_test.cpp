@@ -137,10 +137,9 @@ TEST(Text, NearestHitEqualsMarchingThroughTheOutline) {
     const Ray ray{world_o, normalize(world_t - world_o)};
     const Vec3 local_d = object_from_world.vector(ray.direction);
     const double brute = first_crossing(f, origin, local_d, 8.0);
-    SurfaceHit hit;
-    const bool found = nearest_hit(f.prim, ray, 1e-6, 1e9, hit);
-    if (found) ++hits;
-    if (found == (brute > 0) && (!found || std::abs(hit.t - brute) < 2e-3)) ++agree;
+    const std::optional<SurfaceHit> hit = nearest_hit(f.prim, ray, 1e-6, 1e9);
+    if (hit) ++hits;
+    if (hit.has_value() == (brute > 0) && (!hit || std::abs(hit->t - brute) < 2e-3)) ++agree;
   }
   EXPECT_GT(hits, 100);
   EXPECT_GE(agree, rays - 3);   // grazing rays may part ways by the flattening's error
