@@ -8,6 +8,7 @@
 #include "renderer/csg_build.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"
+#include "renderer/shapes/isosurface.hpp"
 #include "renderer/shapes/poly_shape.hpp"
 #include "renderer/shapes/quadric_shapes.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
@@ -21,11 +22,14 @@ namespace {
 // sdl::function_image_value keeps it), and image_height_at reads a 16-bit colour image as its grey
 // 0.297 r + 0.589 g + 0.114 b, · 65535, truncated. The image's bottom row is the height field's z = 0.
 
-Shape with_pigment_samples(const Shape& shape) {
+// The pigment's patterns use the generator in force when the height field was parsed (POV-Ray samples it then),
+// functions in it the scene's (`scene_generator`).
+Shape with_pigment_samples(const Shape& shape, int scene_generator) {
   const auto* h = std::get_if<HeightField>(&shape);
   if (!h || !h->pigment_function) return shape;
   RenderPigment pigment = build_render_pigment(*h->pigment_function);
   set_generator(pigment, static_cast<NoiseGenerator>(h->noise_generator));
+  set_function_generator(pigment, scene_generator);
   const int w = h->samples_width, d = h->samples_depth;
   auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(w) * d);
   for (int i = 0; i < d; ++i)
@@ -40,10 +44,17 @@ Shape with_pigment_samples(const Shape& shape) {
   sampled.samples = std::move(samples);
   return sampled;
 }
+
+// An isosurface's data with the scene's noise generator, which its function reads.
+std::shared_ptr<const ShapeData> with_noise_generator(const std::shared_ptr<const ShapeData>& data, int generator) {
+  auto iso = std::make_shared<IsosurfaceData>(static_cast<const IsosurfaceData&>(*data));
+  iso->noise_generator = generator;
+  return iso;
+}
 }  // namespace
 
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
-                          std::vector<Primitive>& out) {
+                          const BuildContext& context, std::vector<Primitive>& out) {
   Primitive p;
   p.material = material;
   p.object = object_index;
@@ -94,14 +105,16 @@ void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t
     shapes::set_up_polygon(p, *poly);
   } else if (const auto* mesh = std::get_if<Mesh>(&o.shape)) {
     p.type = ShapeType::mesh;
-    shapes::set_up_mesh(p, *mesh);
+    shapes::set_up_mesh(p, context.meshes.shape_for(mesh->data));
   } else if (is_solid_shape(o.shape)) {
-    const Primitive shape = solid_primitive(with_pigment_samples(o.shape), o.world_from_object);
+    const Primitive shape =
+        solid_primitive(with_pigment_samples(o.shape, context.noise_generator), o.world_from_object);
     p.type = shape.type;
     p.a = shape.a;
     p.b = shape.b;
     p.radius = shape.radius;
-    p.data = shape.data;
+    p.data = std::holds_alternative<Isosurface>(o.shape) ? with_noise_generator(shape.data, context.noise_generator)
+                                                         : shape.data;
     p.transformed = shape.transformed;
     p.world_from_object = shape.world_from_object;
     p.object_from_world = shape.object_from_world;

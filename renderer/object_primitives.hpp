@@ -6,13 +6,24 @@
 #include <vector>
 
 #include "scene/description.hpp"
+#include "scene/object_geometry.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/shared_meshes.hpp"
 
 namespace povtrace::render {
+
+// What building primitives reads besides the objects, for one scene build or one parse-time geometry query.
+struct BuildContext {
+  // The scene's noise generator (1, 2 or 3) as functions read it: isosurfaces' and those in a height field's
+  // pigment function. A render passes global_settings' (as the scene ends), a parse-time query the one in force.
+  int noise_generator;
+  SharedMeshes& meshes;             // one BVH per mesh, whatever its placements
+  const ObjectGeometry& geometry;   // height-field extents for POV-Ray's boxes of placed CSG (csg_build.cpp)
+};
 
 // Appends the object's primitive (none for a disc with a zero normal, which POV-Ray does not render either), with
 // the given material and top-level object index. CSG objects go through build_csg_node (csg_build.hpp) instead.
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
-                          std::vector<Primitive>& out);
+                          const BuildContext& context, std::vector<Primitive>& out);
 
 }  // namespace povtrace::render

@@ -18,6 +18,7 @@ struct IsosurfaceData : ShapeData {
   double threshold = 0, accuracy = 0.001, max_gradient = 1.1;
   int max_trace = 1;
   bool closed = true;
+  int noise_generator = 2;   // the scene's (global_settings), which the function reads (f_noise3d, patterns)
 };
 
 // Where a ray runs through the container: depths t1 ≤ t2 (world units) and the box faces it enters and leaves by

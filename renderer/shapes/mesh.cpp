@@ -21,8 +21,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
-#include <unordered_map>
 
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/watertight.hpp"
@@ -33,22 +31,6 @@ namespace {
 constexpr double depth_tolerance = 1e-6;
 
 const MeshShape& shape_of(const Primitive& p) { return static_cast<const MeshShape&>(*p.data); }
-
-// One MeshShape per MeshData for as long as some primitive uses it. A live MeshShape holds its MeshData, so the
-// address used as the key cannot be reused by another mesh meanwhile.
-std::shared_ptr<const MeshShape> shared_mesh_shape(const std::shared_ptr<const MeshData>& data) {
-  static std::mutex mutex;
-  static std::unordered_map<const MeshData*, std::weak_ptr<const MeshShape>> cache;
-  const std::lock_guard lock(mutex);
-  if (auto found = cache.find(data.get()); found != cache.end())
-    if (auto shape = found->second.lock()) return shape;
-  std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
-  auto shape = std::make_shared<MeshShape>();
-  shape->data = data;
-  shape->bvh = TriangleBvh(data->vertices, data->faces);
-  cache[data.get()] = shape;
-  return shape;
-}
 
 // The world ray in object space, normalised, with the factor L that turns object depths into world depths.
 struct ObjectRay {
@@ -99,7 +81,14 @@ Vec3 to_world_normal(const Primitive& p, Vec3 n) {
 }
 }  // namespace
 
-void set_up_mesh(Primitive& p, const Mesh& mesh) { p.data = shared_mesh_shape(mesh.data); }
+std::shared_ptr<const MeshShape> make_mesh_shape(const std::shared_ptr<const MeshData>& data) {
+  auto shape = std::make_shared<MeshShape>();
+  shape->data = data;
+  shape->bvh = TriangleBvh(data->vertices, data->faces);
+  return shape;
+}
+
+void set_up_mesh(Primitive& p, std::shared_ptr<const MeshShape> shape) { p.data = std::move(shape); }
 
 void prepare_embree_mesh(Primitive& p) {
   const MeshShape& mesh = shape_of(p);
