@@ -30,8 +30,8 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.image_width = o.width;
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
-  p.object_geometry = render::object_geometry();
-  p.pattern_evaluator = render::pattern_evaluator();
+  p.object_geometry = std::make_shared<render::RendererGeometry>();
+  p.pattern_evaluator = std::make_shared<render::RendererPatterns>();
   p.povray_tolerances = o.povray_tolerances;
   p.expression_programs = o.expression_programs;
   return p;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "parser/parse_scene.hpp"
@@ -21,8 +22,9 @@ const povtrace::ParseOptions& fuzz_options() {
     povtrace::ParseOptions o;
     o.message_sink = [](const std::string&) {};   // #debug and warnings are dropped
     o.max_tokens = 200000;                          // every input ends (a runaway #while is legal SDL)
-    o.object_geometry = povtrace::render::object_geometry();   // trace() and inside() as povtrace runs them
-    o.pattern_evaluator = povtrace::render::pattern_evaluator();   // pattern functions likewise
+    // trace(), inside() and pattern functions as povtrace runs them
+    o.object_geometry = std::make_shared<povtrace::render::RendererGeometry>();
+    o.pattern_evaluator = std::make_shared<povtrace::render::RendererPatterns>();
     return o;
   }();
   return options;

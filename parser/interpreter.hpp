@@ -202,13 +202,13 @@ class Interpreter {
   std::string expect_identifier_raw(std::string_view context);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
-  // The cell a function keeps to read the scene's noise generator (noise_generator_cell_), kept up to date.
-  std::shared_ptr<const int> noise_generator_cell() const { return noise_generator_cell_; }
+  // The scene's noise generator in force now (POV-Ray's: 1 before #version 3.5, 2 from then on, unless
+  // global_settings set it), which functions evaluated during the parse read.
+  int noise_generator() const {
+    return scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
+  }
   // The renderer's pattern values for pattern functions (ParseOptions::pattern_evaluator); may be null.
   const PatternEvaluator* pattern_evaluator() const { return options_.pattern_evaluator.get(); }
-  void update_noise_generator_cell() {
-    *noise_generator_cell_ = scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
-  }
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
@@ -348,7 +348,7 @@ class Interpreter {
   const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
   const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
-  ObjectExtents extents() const { return ObjectExtents(options_.object_geometry.get()); }
+  ObjectExtents extents() const { return ObjectExtents(options_.object_geometry.get(), noise_generator()); }
 
   // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
   friend class FunctionParser;
@@ -614,13 +614,13 @@ class Interpreter {
   // The scene's noise generator as functions see it when they run (POV-Ray's f_noise3d reads the scene's current
   // setting): updated at #version, at global_settings and once more when the parse ends, so that functions
   // evaluated while rendering see the final one.
-  std::shared_ptr<int> noise_generator_cell_ = std::make_shared<int>(2);
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
   // Declared objects made ready for trace() and inside() by ParseOptions::object_geometry (object_queries.cpp).
   struct PreparedEntry {
     std::shared_ptr<const SceneItem> item;   // keeps the key's object alive
     std::unique_ptr<const PreparedObject> prepared;
+    int noise_generator;   // the scene's when it was prepared (its isosurfaces' functions read it)
   };
   std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by

@@ -4,7 +4,6 @@
 #include "renderer/csg_build.hpp"
 
 #include "runtime/object_extents.hpp"
-#include "renderer/object_geometry.hpp"
 #include "renderer/shapes/csg.hpp"
 
 namespace povtrace::render {
@@ -21,8 +20,8 @@ CsgOperation operation_of(CsgKind kind) {
   return CsgOperation::union_;
 }
 
-// `placed`: the object is placed in the scene itself, not inside a CSG.
-Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed);
+// `placed`: the build's context when the object is placed in the scene itself, null inside a CSG.
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, const BuildContext* placed);
 
 // The box POV-Ray culls the rays of an object placed in the scene with (its bounding slabs test each object's box):
 // the box as the parser makes it (runtime/object_extents.hpp). It shows where the object's surface reaches beyond its
@@ -34,9 +33,9 @@ struct CullingBox {
   std::optional<Bounds> box;   // empty: POV-Ray's huge box, nothing is culled
 };
 
-CullingBox povray_culling_box(const Object& o) {
+CullingBox povray_culling_box(const Object& o, const BuildContext& context) {
   try {
-    const ExtentBox b = sdl::ObjectExtents(object_geometry().get()).box(o);
+    const ExtentBox b = sdl::ObjectExtents(&context.geometry, context.noise_generator).box(o);
     for (int i = 0; i < 3; ++i)
       if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
     return {true, Bounds{b.lo(), b.hi()}};
@@ -47,7 +46,7 @@ CullingBox povray_culling_box(const Object& o) {
 
 // One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
 Primitive primitive_for(const Object& o, bool shaded, const LeafBuilder& add_leaf) {
-  if (needs_csg_node(o)) return node_for(o, shaded, add_leaf, false);
+  if (needs_csg_node(o)) return node_for(o, shaded, add_leaf, nullptr);
   std::vector<Primitive> leaves;
   add_leaf(o, shaded, leaves);
   for (Primitive& leaf : leaves) leaf.csg_child = true;
@@ -62,7 +61,7 @@ std::vector<Primitive> primitives_for(const std::vector<Object>& objects, bool s
   return out;
 }
 
-Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed) {
+Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, const BuildContext* placed) {
   CsgOperation operation = CsgOperation::union_;
   std::vector<Primitive> children;
   if (const auto* csg = std::get_if<Csg>(&o.shape)) {
@@ -83,7 +82,7 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bo
   // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
   // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
   if (placed) {
-    const CullingBox culling = povray_culling_box(o);
+    const CullingBox culling = povray_culling_box(o, *placed);
     if (culling.known) p = with_culling_box(p, culling.box);
     else if (!clips.empty()) p = with_clipping_box_from(p, clips);
   }
@@ -117,8 +116,8 @@ bool needs_csg_node(const Object& o) {
          !o.removed_bounds.empty();
 }
 
-Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf) {
-  Primitive p = node_for(o, true, add_leaf, true);
+Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf, const BuildContext& context) {
+  Primitive p = node_for(o, true, add_leaf, &context);
   if (const auto* csg = std::get_if<Csg>(&o.shape); csg && csg->kind == CsgKind::union_ && all_children_without_shadow(*csg))
     p.casts_shadow = false;
   return p;

@@ -9,6 +9,7 @@
 
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/object_primitives.hpp"
 
 namespace povtrace::render {
 
@@ -30,7 +31,7 @@ bool needs_csg_node(const Object& o);
 
 // The node for `o` (needs_csg_node(o)), with its children, clips and bounds built recursively. Its casts_shadow
 // follows the object's no_shadow (and POV-Ray's rule that a union whose children all have no_shadow has it too);
-// material and object index are left to the caller.
-Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf);
+// material and object index are left to the caller. `context` gives the box POV-Ray culls the node's rays with.
+Primitive build_csg_node(const Object& o, const LeafBuilder& add_leaf, const BuildContext& context);
 
 }  // namespace povtrace::render

@@ -1,9 +1,6 @@
 #include "renderer/object_geometry.hpp"
 
 #include <filesystem>
-#include <mutex>
-#include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "renderer/csg_build.hpp"
@@ -16,18 +13,18 @@ namespace {
 
 // The object's primitives as build_render_scene makes them, without materials (trace() and inside() never shade):
 // a union POV-Ray splits becomes its children, other CSG and clipped or bounded objects one CSG node.
-void add_geometry(const Object& o, std::vector<Primitive>& out) {
+void add_geometry(const Object& o, const BuildContext& context, std::vector<Primitive>& out) {
   if (splits_into_children(o)) {
-    for (const auto& child : std::get<Csg>(o.shape).children) add_geometry(child, out);
+    for (const auto& child : std::get<Csg>(o.shape).children) add_geometry(child, context, out);
     return;
   }
   if (needs_csg_node(o)) {
-    out.push_back(build_csg_node(o, [](const Object& leaf, bool, std::vector<Primitive>& dst) {
-      add_shape_primitives(leaf, 0, 0, dst);
-    }));
+    out.push_back(build_csg_node(
+        o, [&](const Object& leaf, bool, std::vector<Primitive>& dst) { add_shape_primitives(leaf, 0, 0, context, dst); },
+        context));
     return;
   }
-  add_shape_primitives(o, 0, 0, out);
+  add_shape_primitives(o, 0, 0, context, out);
 }
 
 class PreparedPrimitives final : public PreparedObject {
@@ -58,52 +55,43 @@ class PreparedPrimitives final : public PreparedObject {
   Accelerator accelerator_;
 };
 
-class RendererGeometry final : public ObjectGeometry {
- public:
-  std::unique_ptr<const PreparedObject> prepare(const Object& object) const override {
-    std::vector<Primitive> primitives;
-    add_geometry(object, primitives);
-    return std::make_unique<PreparedPrimitives>(std::move(primitives));
-  }
-
-  // The samples as the render reads them: the height field's data, built alone without smoothing (normals do not
-  // change the box). An image file's extent is kept per file, modification time and water level, since every CSG
-  // holding the height field asks for it when it is made.
-  HeightFieldExtent height_field_extent(const HeightField& h) const override {
-    const bool from_file = !h.samples && !h.pigment_function;
-    std::string key;
-    if (from_file) {
-      std::error_code error;   // an unreadable file gets no time here and fails below, when it is read
-      const auto written = std::filesystem::last_write_time(h.file, error);
-      key = h.file + '\n' + std::to_string(written.time_since_epoch().count()) + '\n' + std::to_string(h.water_level);
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (const auto found = file_extents_.find(key); found != file_extents_.end()) return found->second;
-    }
-    Object o;
-    HeightField unsmoothed = h;
-    unsmoothed.smooth = false;
-    o.shape = std::move(unsmoothed);
-    std::vector<Primitive> primitives;
-    add_shape_primitives(o, 0, 0, primitives);
-    const auto& d = static_cast<const HeightFieldData&>(*primitives.at(0).data);
-    const HeightFieldExtent extent{d.width, d.depth, d.bottom, d.top};
-    if (from_file) {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      file_extents_.emplace(key, extent);
-    }
-    return extent;
-  }
-
- private:
-  mutable std::mutex mutex_;
-  mutable std::unordered_map<std::string, HeightFieldExtent> file_extents_;
-};
-
 }  // namespace
 
-std::shared_ptr<const ObjectGeometry> object_geometry() {
-  static const std::shared_ptr<const ObjectGeometry> geometry = std::make_shared<RendererGeometry>();
-  return geometry;
+// A prepared object's meshes are shared among its own parts only: the parser keeps the prepared object while it
+// traces it, and the render builds its own.
+std::unique_ptr<const PreparedObject> RendererGeometry::prepare(const Object& object, int noise_generator) const {
+  SharedMeshes meshes;
+  std::vector<Primitive> primitives;
+  add_geometry(object, BuildContext{noise_generator, meshes, *this}, primitives);
+  return std::make_unique<PreparedPrimitives>(std::move(primitives));
+}
+
+// The samples as the render reads them: the height field's data, built alone without smoothing (normals do not
+// change the box). An image file's extent is kept per file, modification time and water level.
+HeightFieldExtent RendererGeometry::height_field_extent(const HeightField& h, int noise_generator) const {
+  const bool from_file = !h.samples && !h.pigment_function;
+  std::string key;
+  if (from_file) {
+    std::error_code error;   // an unreadable file gets no time here and fails below, when it is read
+    const auto written = std::filesystem::last_write_time(h.file, error);
+    key = h.file + '\n' + std::to_string(written.time_since_epoch().count()) + '\n' + std::to_string(h.water_level);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (const auto found = file_extents_.find(key); found != file_extents_.end()) return found->second;
+  }
+  Object o;
+  HeightField unsmoothed = h;
+  unsmoothed.smooth = false;
+  o.shape = std::move(unsmoothed);
+  SharedMeshes meshes;
+  std::vector<Primitive> primitives;
+  add_shape_primitives(o, 0, 0, BuildContext{noise_generator, meshes, *this}, primitives);
+  const auto& d = static_cast<const HeightFieldData&>(*primitives.at(0).data);
+  const HeightFieldExtent extent{d.width, d.depth, d.bottom, d.top};
+  if (from_file) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    file_extents_.emplace(key, extent);
+  }
+  return extent;
 }
 
 }  // namespace povtrace::render

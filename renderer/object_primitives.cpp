@@ -9,8 +9,8 @@
 namespace povtrace::render {
 
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
-                          std::vector<Primitive>& out) {
-  const std::optional<Primitive> shape = shapes::build_shape(o.shape, o.world_from_object);
+                          const BuildContext& context, std::vector<Primitive>& out) {
+  const std::optional<Primitive> shape = shapes::build_shape(o.shape, o.world_from_object, context);
   if (!shape) return;   // a disc with a zero normal: POV-Ray renders nothing either
   Primitive p = *shape;
   p.material = material;

@@ -6,13 +6,16 @@
 #include <vector>
 
 #include "scene/description.hpp"
+#include "scene/object_geometry.hpp"
+#include "renderer/build_context.hpp"
 #include "renderer/geometry.hpp"
+#include "renderer/shared_meshes.hpp"
 
 namespace povtrace::render {
 
 // Appends the object's primitive (none for a disc with a zero normal, which POV-Ray does not render either), with
 // the given material and top-level object index. CSG objects go through build_csg_node (csg_build.hpp) instead.
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
-                          std::vector<Primitive>& out);
+                          const BuildContext& context, std::vector<Primitive>& out);
 
 }  // namespace povtrace::render

@@ -68,29 +68,23 @@ bool uses_uv_mapping(const Pigment& p) {
   return false;
 }
 
-class RendererPatterns final : public PatternEvaluator {
- public:
-  std::variant<std::shared_ptr<const PreparedPattern>, std::string> prepare(const Pigment& p) const override {
-    switch (p.pattern) {
-      case PatternKind::solid: return std::string("a pattern function without a pattern");
-      case PatternKind::average: return std::string("the pattern 'average' in a pattern function");
-      case PatternKind::image_map: return std::string("the pattern 'image_map' in a pattern function");
-      case PatternKind::uv_mapping: return std::string("uv_mapping in a pattern function");
-      default: break;
-    }
-    return std::shared_ptr<const PreparedPattern>(std::make_shared<RendererPattern>(p));
-  }
-  std::variant<std::shared_ptr<const PreparedPigment>, std::string> prepare_pigment(const Pigment& p) const override {
-    if (uses_uv_mapping(p)) return std::string("uv_mapping (a pigment function has no surface, so no u, v)");
-    return std::shared_ptr<const PreparedPigment>(std::make_shared<RendererPigment>(p));
-  }
-};
-
 }  // namespace
 
-std::shared_ptr<const PatternEvaluator> pattern_evaluator() {
-  static const std::shared_ptr<const PatternEvaluator> evaluator = std::make_shared<RendererPatterns>();
-  return evaluator;
+std::variant<std::shared_ptr<const PreparedPattern>, std::string> RendererPatterns::prepare(const Pigment& p) const {
+  switch (p.pattern) {
+    case PatternKind::solid: return std::string("a pattern function without a pattern");
+    case PatternKind::average: return std::string("the pattern 'average' in a pattern function");
+    case PatternKind::image_map: return std::string("the pattern 'image_map' in a pattern function");
+    case PatternKind::uv_mapping: return std::string("uv_mapping in a pattern function");
+    default: break;
+  }
+  return std::shared_ptr<const PreparedPattern>(std::make_shared<RendererPattern>(p));
+}
+
+std::variant<std::shared_ptr<const PreparedPigment>, std::string> RendererPatterns::prepare_pigment(
+    const Pigment& p) const {
+  if (uses_uv_mapping(p)) return std::string("uv_mapping (a pigment function has no surface, so no u, v)");
+  return std::shared_ptr<const PreparedPigment>(std::make_shared<RendererPigment>(p));
 }
 
 }  // namespace povtrace::render

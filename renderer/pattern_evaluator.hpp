@@ -3,12 +3,20 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <variant>
 
 #include "scene/pattern_evaluator.hpp"
 
 namespace povtrace::render {
 
-// The implementation to hand the parser in ParseOptions::pattern_evaluator. Stateless and shareable.
-std::shared_ptr<const PatternEvaluator> pattern_evaluator();
+// The implementation to hand the parser in ParseOptions::pattern_evaluator: the program makes one. Stateless and
+// shareable between threads.
+class RendererPatterns final : public PatternEvaluator {
+ public:
+  std::variant<std::shared_ptr<const PreparedPattern>, std::string> prepare(const Pigment& pattern) const override;
+  std::variant<std::shared_ptr<const PreparedPigment>, std::string> prepare_pigment(
+      const Pigment& pigment) const override;
+};
 
 }  // namespace povtrace::render

@@ -3,6 +3,7 @@
 #include "renderer/render.hpp"
 
 #include "renderer/csg_build.hpp"
+#include "renderer/object_geometry.hpp"
 #include "renderer/object_primitives.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
 
@@ -82,21 +83,25 @@ class MaterialTable {
 // children side by side gives (POV-Ray splits such unions too). The parser has already moved the union's
 // transforms and inherited textures into the children. Other CSG, and clipped or bounded objects, become one
 // CSG node (csg_build.hpp) whose leaves are built by add_primitives like any other shape.
-void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, std::vector<Primitive>& out) {
+void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, const BuildContext& context,
+                std::vector<Primitive>& out) {
   if (splits_into_children(o)) {
-    for (const auto& child : std::get<Csg>(o.shape).children) add_object(child, object_index, materials, out);
+    for (const auto& child : std::get<Csg>(o.shape).children) add_object(child, object_index, materials, context, out);
     return;
   }
   if (needs_csg_node(o)) {
-    Primitive node = build_csg_node(o, [&](const Object& leaf, bool shaded, std::vector<Primitive>& dst) {
-      add_shape_primitives(leaf, shaded ? materials.material_for(leaf) : 0, object_index, dst);
-    });
+    Primitive node = build_csg_node(
+        o,
+        [&](const Object& leaf, bool shaded, std::vector<Primitive>& dst) {
+          add_shape_primitives(leaf, shaded ? materials.material_for(leaf) : 0, object_index, context, dst);
+        },
+        context);
     node.material = materials.material_for(o);   // only for whole-object checks; hits shade their leaf's material
     node.object = object_index;
     out.push_back(std::move(node));
     return;
   }
-  add_shape_primitives(o, materials.material_for(o), object_index, out);
+  add_shape_primitives(o, materials.material_for(o), object_index, context, out);
   if (const auto* mesh = std::get_if<Mesh>(&o.shape))
     out.back().element_materials = materials.append(mesh->textures, o);
 }
@@ -149,8 +154,13 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   primitives.reserve(scene.objects.size());
   ImageCache images;
   MaterialTable materials(r.materials, images);
+  // The scene's noise generator as it stands when the scene ends (POV-Ray: 1 before #version 3.5, 2 from then on).
+  const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
+  SharedMeshes meshes;              // one BVH per declared mesh, however often it is placed
+  const RendererGeometry geometry;  // height-field extents for POV-Ray's culling boxes, kept per build
+  const BuildContext context{generator, meshes, geometry};
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
-    add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, primitives);
+    add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, context, primitives);
   if (may_rescale) {
     // A scene far from the ordinary scale is rendered as its rescaled twin (scene_scale.hpp).
     if (const double k = normalizing_scale(object_sizes(primitives)); k != 1.0) {
@@ -167,7 +177,6 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     if (!m.opaque && p.casts_shadow && in.fade_power > 0 && std::fabs(in.fade_distance) > tolerance::epsilon)
       r.any_shadow_fade = true;
   }
-  const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
   r.specialisation = choose_specialisation(r, options.specialise);
   if (r.specialisation.embree_meshes)
@@ -195,6 +204,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     for (const Pigment& p : scene.sky_sphere->pigments) {
       r.sky_pigments.push_back(build_render_pigment(p, &images));
       set_generator(r.sky_pigments.back(), generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
+      set_function_generator(r.sky_pigments.back(), generator);   // functions read the scene's, Perlin's too
     }
     r.sky_emission = rgb_of(scene.sky_sphere->emission);
     r.sky_transformed = !(scene.sky_sphere->world_from_sky == Matrix::identity());

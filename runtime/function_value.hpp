@@ -84,9 +84,6 @@ struct FunctionValue {
   int frame_size = 0;              // parameters, then the loop variables of sum()/prod()
   int max_stack = 0;               // operand stack the body needs beyond its frame
 
-  // The scene's noise generator when the function runs (f_noise3d and its like read it), shared with the parse.
-  std::shared_ptr<const int> scene_noise_generator;
-
   Matrix transform;                // Kind::transform
   std::optional<Colour> colour;    // Kind::pigment when the pigment is a plain colour
   std::shared_ptr<const Pigment> pigment;   // Kind::pigment: the pigment; Kind::pattern: the pattern block
@@ -112,9 +109,12 @@ class FunctionError : public std::runtime_error {
 
 // Evaluates `f` on `args` (exactly f.parameter_count values). A float function returns its value; a vector
 // function writes its return_size components to `vector_out` (which must hold 5) and returns the first.
+// `noise_generator` is the scene's (1, 2 or 3) as POV-Ray reads it when the function runs: f_noise3d and the
+// pattern and pigment functions use it, in `f` and in every function it calls. The parser passes the one in force
+// when it evaluates, the renderer the scene's global_settings one.
 // `steps_left`, if given, bounds the work: each sum()/prod() iteration and each call takes one step, and a
 // FunctionError is thrown when none are left (ParseOptions::max_tokens: every parse must end).
-double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
+double evaluate_function(const FunctionValue& f, const double* args, double* vector_out, int noise_generator,
                          std::uint64_t* steps_left = nullptr);
 
 // The first part of `f` that evaluate_function would refuse (a noise-based internal function, a pattern…), as its description(); nothing when f can be evaluated everywhere. Lets a shape that evaluates f while

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <vector>
 
 #include "runtime/function_value.hpp"
 
@@ -98,18 +99,15 @@ std::string unsupported_message(const FunctionValue& f) {
   return "unsupported: " + f.description() + " is a POV-Ray feature that povtrace does not render yet";
 }
 
-// The scene's noise generator for a function (2, POV-Ray's default, for functions made outside a parse).
-int scene_noise_generator(const FunctionValue& f) { return f.scene_noise_generator ? *f.scene_noise_generator : 2; }
-
 // Values the vector kinds produce; float kinds return through `out[0]`.
-void evaluate_native(const FunctionValue& f, const double* args, double* out) {
+void evaluate_native(const FunctionValue& f, const double* args, int noise_generator, double* out) {
   switch (f.kind) {
     case FunctionValue::Kind::internal: {
       const InternalFunctionInfo& info = internal_function_info(f.internal_id);
       if (!info.evaluable) throw FunctionError(unsupported_message(f));
       double p[16];
       std::copy(args, args + info.parameter_count, p);
-      out[0] = evaluate_internal_function(f.internal_id, p, scene_noise_generator(f));
+      out[0] = evaluate_internal_function(f.internal_id, p, noise_generator);
       return;
     }
     case FunctionValue::Kind::transform: {
@@ -135,7 +133,7 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
         return;
       }
       if (f.prepared_pigment) {
-        const Colour c = f.prepared_pigment->colour({args[0], args[1], args[2]}, scene_noise_generator(f));
+        const Colour c = f.prepared_pigment->colour({args[0], args[1], args[2]}, noise_generator);
         out[0] = c.r;
         out[1] = c.g;
         out[2] = c.b;
@@ -146,17 +144,44 @@ void evaluate_native(const FunctionValue& f, const double* args, double* out) {
       throw FunctionError(unsupported_message(f));
     case FunctionValue::Kind::pattern:
       if (!f.pattern) throw FunctionError(unsupported_message(f));
-      out[0] = f.pattern->value({args[0], args[1], args[2]}, scene_noise_generator(f));
+      out[0] = f.pattern->value({args[0], args[1], args[2]}, noise_generator);
       return;
     case FunctionValue::Kind::expression: break;
   }
   throw FunctionError(unsupported_message(f));
 }
 
+// A growable array whose first N elements live in the object itself: the machine lives on the caller's stack, and
+// nearly every evaluation fits there without touching the heap.
+template <class T, std::size_t N>
+class InlineBuffer {
+ public:
+  InlineBuffer() = default;
+  InlineBuffer(const InlineBuffer&) = delete;
+  InlineBuffer& operator=(const InlineBuffer&) = delete;
+  T* data() { return data_; }
+  // Room for n elements; the first `used` keep their values.
+  void reserve(std::size_t n, std::size_t used) {
+    if (n <= capacity_) return;
+    std::vector<T> grown(std::max(n, capacity_ * 2));
+    std::copy(data_, data_ + used, grown.begin());
+    heap_ = std::move(grown);
+    data_ = heap_.data();
+    capacity_ = heap_.size();
+  }
+
+ private:
+  T inline_[N];
+  std::vector<T> heap_;
+  T* data_ = inline_;
+  std::size_t capacity_ = N;
+};
+
+// One evaluation's scratch (value stack and call frames), made on the stack of evaluate_function's caller: no state
+// outlives a call, so any number of threads evaluate at once.
 class Machine {
  public:
-  double run(const FunctionValue& entry, const double* args, std::uint64_t* steps_left) {
-    frames_.clear();
+  double run(const FunctionValue& entry, const double* args, int noise_generator, std::uint64_t* steps_left) {
     auto step = [steps_left]() {
       if (!steps_left) return;
       if (*steps_left == 0)
@@ -165,9 +190,10 @@ class Machine {
       --*steps_left;
     };
     std::size_t base = 0;
-    std::size_t sp = 0;   // next free stack slot
+    std::size_t sp = 0;      // next free stack slot
+    std::size_t depth = 0;   // active calls below the current function (frames_ in use)
     const FunctionValue* fn = &entry;
-    reserve(static_cast<std::size_t>(fn->frame_size + fn->max_stack));
+    stack_.reserve(static_cast<std::size_t>(fn->frame_size + fn->max_stack), 0);
     double* s = stack_.data();
     std::copy(args, args + fn->parameter_count, s);
     std::fill(s + fn->parameter_count, s + fn->frame_size, 0.0);
@@ -241,14 +267,14 @@ class Machine {
           const std::size_t n = in.b;
           sp -= n;
           std::copy(s + sp, s + sp + n, p);
-          s[sp++] = evaluate_internal_function(in.a, p, scene_noise_generator(*fn));
+          s[sp++] = evaluate_internal_function(in.a, p, noise_generator);
           break;
         }
         case FnOp::vector_call: {
           const FunctionValue& callee = *fn->callees[static_cast<std::size_t>(in.a)];
           sp -= static_cast<std::size_t>(callee.parameter_count);
           double out[5] = {0, 0, 0, 0, 0};
-          evaluate_native(callee, s + sp, out);
+          evaluate_native(callee, s + sp, noise_generator, out);
           s[sp++] = vector_component(out, in.b);
           break;
         }
@@ -256,12 +282,13 @@ class Machine {
         case FnOp::call: {
           const FunctionValue* callee = fn->callees[static_cast<std::size_t>(in.a)].get();
           step();
-          if (frames_.size() >= kMaxCallDepth)
+          if (depth >= kMaxCallDepth)
             throw FunctionError("function calls nested more than " + std::to_string(kMaxCallDepth) + " deep");
-          frames_.push_back({fn, pc, base});
+          frames_.reserve(depth + 1, depth);
+          frames_.data()[depth++] = Frame{fn, pc, base};
           base = sp - in.b;
           fn = callee;
-          reserve(base + static_cast<std::size_t>(fn->frame_size + fn->max_stack));
+          stack_.reserve(base + static_cast<std::size_t>(fn->frame_size + fn->max_stack), sp);
           s = stack_.data();
           std::fill(s + sp, s + base + static_cast<std::size_t>(fn->frame_size), 0.0);
           sp = base + static_cast<std::size_t>(fn->frame_size);
@@ -271,9 +298,8 @@ class Machine {
         }
         case FnOp::ret: {
           const double result = s[sp - 1];
-          if (frames_.empty()) return result;
-          const Frame f = frames_.back();
-          frames_.pop_back();
+          if (depth == 0) return result;
+          const Frame f = frames_.data()[--depth];
           sp = base;
           s[sp++] = result;
           fn = f.fn;
@@ -287,16 +313,13 @@ class Machine {
   }
 
  private:
-  void reserve(std::size_t n) {
-    if (stack_.size() < n) stack_.resize(std::max(n, stack_.size() * 2));
-  }
   struct Frame {
     const FunctionValue* fn;   // the caller
     std::size_t pc;            // resume position in the caller
     std::size_t base;          // the caller's frame
   };
-  std::vector<double> stack_;
-  std::vector<Frame> frames_;
+  InlineBuffer<double, 256> stack_;
+  InlineBuffer<Frame, 16> frames_;
 };
 
 }  // namespace
@@ -350,16 +373,16 @@ std::optional<std::string> unevaluable_part(const FunctionValue& f) {
   }
 }
 
-double evaluate_function(const FunctionValue& f, const double* args, double* vector_out,
+double evaluate_function(const FunctionValue& f, const double* args, double* vector_out, int noise_generator,
                          std::uint64_t* steps_left) {
   if (f.kind != FunctionValue::Kind::expression) {
     double out[5] = {0, 0, 0, 0, 0};
-    evaluate_native(f, args, out);
+    evaluate_native(f, args, noise_generator, out);
     if (vector_out) std::copy(out, out + 5, vector_out);
     return out[0];
   }
-  static thread_local Machine machine;
-  return machine.run(f, args, steps_left);
+  Machine machine;
+  return machine.run(f, args, noise_generator, steps_left);
 }
 
 }  // namespace povtrace::sdl

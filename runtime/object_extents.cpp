@@ -316,7 +316,7 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
 // (Parse_HField's scaling by 1/(width − 1), 1/65536, 1/(depth − 1)), then the object's transforms.
 ExtentBox ObjectExtents::height_field_box(const Object& o, const HeightField& h) const {
   if (!geometry_) throw ExtentUnavailable(ExtentGap::height_field_samples);
-  const HeightFieldExtent e = geometry_->height_field_extent(h);
+  const HeightFieldExtent e = geometry_->height_field_extent(h, noise_generator_);
   const Vec3 lower{0, e.bottom, 0}, upper{e.width - 1.0, e.top, e.depth - 1.0};
   const Matrix unit = Matrix::scaling({1.0 / (e.width - 1.0), 1.0 / 65536.0, 1.0 / (e.depth - 1.0)});
   return ExtentBox::make(lower, upper - lower).transformed(unit * o.world_from_object);

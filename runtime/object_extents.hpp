@@ -17,7 +17,9 @@ struct ExtentUnavailable : std::runtime_error {
 
 class ObjectExtents {
  public:
-  explicit ObjectExtents(const ObjectGeometry* geometry) : geometry_(geometry) {}
+  // `noise_generator`: the scene's in force, for height fields made from pigment functions (ObjectGeometry).
+  ObjectExtents(const ObjectGeometry* geometry, int noise_generator)
+      : geometry_(geometry), noise_generator_(noise_generator) {}
 
   // The object's box as POV-Ray holds it now. Throws ExtentUnavailable.
   ExtentBox box(const Object& o) const;
@@ -41,6 +43,7 @@ class ObjectExtents {
   void recompute_quadric(Object& q, Vec3 clip_lo, Vec3 clip_hi) const;
 
   const ObjectGeometry* geometry_;
+  int noise_generator_;
 };
 
 }  // namespace povtrace::sdl

@@ -43,10 +43,12 @@ class ObjectGeometry {
  public:
   virtual ~ObjectGeometry() = default;
   // The height field's samples read as for rendering (its image, or its pigment function sampled).
-  virtual HeightFieldExtent height_field_extent(const HeightField& h) const = 0;
+  // `noise_generator` is the scene's in force (1, 2 or 3), which functions in a pigment function read.
+  virtual HeightFieldExtent height_field_extent(const HeightField& h, int noise_generator) const = 0;
   // The object as placed (its transforms composed, CSG children inverted as POV-Ray inverts them). The object
-  // carries no unsupported geometry (the caller refuses those by name first).
-  virtual std::unique_ptr<const PreparedObject> prepare(const Object& object) const = 0;
+  // carries no unsupported geometry (the caller refuses those by name first). Its functions (isosurfaces) read
+  // `noise_generator`, the scene's in force: prepare again when it changes.
+  virtual std::unique_ptr<const PreparedObject> prepare(const Object& object, int noise_generator) const = 0;
 };
 
 }  // namespace povtrace

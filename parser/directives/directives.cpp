@@ -81,7 +81,6 @@ void Interpreter::directive_version(const Token& at) {
   const double v = parse_float();
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
-  update_noise_generator_cell();
   if (peek_raw().is(";")) next();
   if (!statement_seen_ && frames_.size() == 1) scene_.version_given = true;
   (void)at;

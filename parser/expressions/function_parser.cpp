@@ -165,7 +165,6 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
   auto f = std::make_shared<FunctionValue>();
   out_ = f.get();
   f->loc = keyword.loc;
-  f->scene_noise_generator = in_.noise_generator_cell();
   Token t = in_.next();
   const bool has_parameters = t.is("(");
   if (has_parameters) {
@@ -882,7 +881,7 @@ Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<c
       function_steps_left_ = options_.max_tokens * 16;   // shared by every call of the parse
       function_budget_set_ = true;
     }
-    result = evaluate_function(f, args, out, options_.max_tokens ? &function_steps_left_ : nullptr);
+    result = evaluate_function(f, args, out, noise_generator(), options_.max_tokens ? &function_steps_left_ : nullptr);
   } catch (const FunctionError& e) {
     fail_at(name, e.what());
   }

@@ -168,14 +168,19 @@ const std::shared_ptr<const SceneItem>& Interpreter::object_identifier(const Tok
   return *item;
 }
 
-// The renderer's form of a declared object, made once per declared value: scenes trace the same object in loops.
-// The cache keeps the values it was made from alive, so an address is never reused for another object; it is
-// emptied when it grows past a few hundred objects (a loop declaring and tracing a new object each time).
+// The renderer's form of a declared object, made once per declared value and noise generator: scenes trace the
+// same object in loops. The cache keeps the values it was made from alive, so an address is never reused for
+// another object; it is emptied when it grows past a few hundred objects (a loop declaring and tracing a new object
+// each time).
 const PreparedObject& Interpreter::prepared_object(const std::shared_ptr<const SceneItem>& item) {
   constexpr std::size_t kMaxPreparedObjects = 256;
-  if (auto found = prepared_objects_.find(item.get()); found != prepared_objects_.end()) return *found->second.prepared;
+  const int generator = noise_generator();
+  if (auto found = prepared_objects_.find(item.get()); found != prepared_objects_.end()) {
+    if (found->second.noise_generator == generator) return *found->second.prepared;
+    prepared_objects_.erase(found);
+  }
   if (prepared_objects_.size() >= kMaxPreparedObjects) prepared_objects_.clear();
-  PreparedEntry entry{item, options_.object_geometry->prepare(std::get<Object>(*item))};
+  PreparedEntry entry{item, options_.object_geometry->prepare(std::get<Object>(*item), generator), generator};
   return *prepared_objects_.emplace(item.get(), std::move(entry)).first->second.prepared;
 }
 

@@ -52,7 +52,7 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
     // A 16-bit RGBA image of the pigment's colours at the same points, made by the renderer (render_height_field).
     if (fn->pigment->unsupported) taint(o.unsupported, fn->pigment->unsupported);
     h.pigment_function = fn->pigment;
-    h.noise_generator = *noise_generator_cell_;
+    h.noise_generator = noise_generator();
     h.samples_width = width;
     h.samples_depth = depth;
     return;
@@ -76,7 +76,8 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
       args[1] = static_cast<double>(i) / (d - 1);
       for (int j = 0; j < width; ++j) {
         args[0] = static_cast<double>(j) / (w - 1);
-        const double value = evaluate_function(*fn, args, out, options_.max_tokens ? &function_steps_left_ : nullptr);
+        const double value =
+            evaluate_function(*fn, args, out, noise_generator(), options_.max_tokens ? &function_steps_left_ : nullptr);
         (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] =
             static_cast<std::uint16_t>(function_image_value(value) * 65535.0f);
       }

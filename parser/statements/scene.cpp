@@ -12,7 +12,6 @@ Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
 }
 
 SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
-  update_noise_generator_cell();
   frames_.push_back(frame_for(*main_file, 0, Frame::Kind::main, {}, {}));
   files_.push_back(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
@@ -40,7 +39,6 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
     const Control& open = controls_.back();
     fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
   }
-  update_noise_generator_cell();
   return std::move(scene_);
 }
 
@@ -110,7 +108,6 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       const double g = std::trunc(parse_float());
       if (!(g >= 1 && g <= 3)) fail_at(value_at, "Value for noise_generator in global_settings must be 1, 2, or 3.");
       scene_.settings.noise_generator = static_cast<int>(g);
-      update_noise_generator_cell();
     } else if (k == "charset") {
       // ascii or utf8 (sys is refused): how text { } turns strings into characters and picks a character map.
       const Token c = next();

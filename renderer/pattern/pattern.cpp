@@ -75,9 +75,9 @@ double cycloidal(double v) {
 // wave step, which wraps them). A value that is not a number (0/0 in the function) is taken as 0: POV-Ray's map
 // lookup then depends on how NaN compares.
 namespace {
-double function_pattern(const sdl::FunctionValue& f, Vec3 p) {
+double function_pattern(const sdl::FunctionValue& f, int noise_generator, Vec3 p) {
   const double args[3] = {p.x, p.y, p.z};
-  const double v = sdl::evaluate_function(f, args, nullptr);
+  const double v = sdl::evaluate_function(f, args, nullptr, noise_generator);
   if (std::isnan(v)) return 0.0;
   return v > 1.0 ? std::fmod(v, 1.0) : v;
 }
@@ -111,7 +111,7 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     // POV-Ray applies frequency and phase inside these two and once more in the wave step.
     case PatternKind::ripples: return patterns::ripples(p, params.frequency, params.phase);
     case PatternKind::waves: return patterns::waves(p, params.frequency, params.phase);
-    case PatternKind::function: return function_pattern(*params.function, p);
+    case PatternKind::function: return function_pattern(*params.function, params.function_noise_generator, p);
     case PatternKind::quilted: return quilted(p, params.control0, params.control1);
     case PatternKind::spiral1: return patterns::spiral1(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::spiral2: return patterns::spiral2(p, params.arms, params.turbulence, params.noise_generator);

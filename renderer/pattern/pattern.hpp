@@ -23,6 +23,9 @@ struct PatternParams {
   std::shared_ptr<const sdl::FunctionValue> function;   // the function pattern
   int arms = 0;                                          // spiral1, spiral2
   double control0 = 1.0, control1 = 1.0;                 // quilted
+  // The scene's noise generator as the function pattern's function reads it (f_noise3d): set with noise_generator
+  // (set_generator), but the scene's own where a pigment's patterns use another (sky_sphere, height fields).
+  int function_noise_generator = 2;
 };
 
 // The frequency/phase/wave step every pattern value goes through.

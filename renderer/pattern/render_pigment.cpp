@@ -56,7 +56,13 @@ std::shared_ptr<const RenderImageMap> build_render_image(const ImageMap& map, Im
 
 void set_generator(RenderPigment& r, NoiseGenerator generator) {
   r.params.noise_generator = generator;
+  r.params.function_noise_generator = static_cast<int>(generator);
   for (auto& c : r.children) set_generator(c, generator);
+}
+
+void set_function_generator(RenderPigment& r, int generator) {
+  r.params.function_noise_generator = generator;
+  for (auto& c : r.children) set_function_generator(c, generator);
 }
 
 RenderPigment build_render_pigment(const Pigment& p, ImageCache* images) {
@@ -71,7 +77,7 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images) {
   r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected,
                            p.frequency,  p.phase,    p.function,   p.arms,
-                           p.control0,   p.control1};
+                           p.control0,   p.control1, 2};   // both generators set for the scene (set_generator)
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).

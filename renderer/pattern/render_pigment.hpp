@@ -21,7 +21,10 @@ bool pigment_has_transparency(const RenderPigment& pigment);
 
 // The noise generator of the scene (POV-Ray: 1 before #version 3.5, 2 from then on) for every pigment.
 void use_noise_generator(std::vector<Material>& materials, NoiseGenerator generator);
-// The same for one pigment and the pigments of its maps (a sky_sphere's).
+// The same for one pigment and the pigments of its maps (a sky_sphere's), its function patterns included.
 void set_generator(RenderPigment& r, NoiseGenerator generator);
+// Only the generator its function patterns' functions read (PatternParams::function_noise_generator): the scene's,
+// where the pigment's own patterns use another.
+void set_function_generator(RenderPigment& r, int generator);
 
 }  // namespace povtrace::render

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/description.hpp"
+#include "renderer/build_context.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/many_roots.hpp"
 
@@ -39,7 +40,7 @@ struct HeightFieldShape {
   using Description = HeightField;
   // Reads the image (or samples the pigment function) now; a missing or unreadable file is a ParseError at the
   // file name in the scene.
-  static Primitive build(const HeightField& description, const Matrix& world_from_object);
+  static Primitive build(const HeightField& description, const Matrix& world_from_object, const BuildContext& context);
   static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
   // The flat triangle's (or smoothed) normal: the one hit decides (POV-Ray keeps its normal with the intersection).
   static Vec3 normal_at(const Primitive& p, std::uint32_t element, Vec3 world_point);

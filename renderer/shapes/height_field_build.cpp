@@ -186,11 +186,14 @@ namespace {
 // sdl::function_image_value keeps it), and image_height_at reads a 16-bit colour image as its grey
 // 0.297 r + 0.589 g + 0.114 b, · 65535, truncated. The image's bottom row is the height field's z = 0.
 
-HeightField with_pigment_samples(const HeightField& description) {
+// The pigment's patterns use the generator in force when the height field was parsed (POV-Ray samples it then),
+// functions in it the scene's (`scene_generator`).
+HeightField with_pigment_samples(const HeightField& description, int scene_generator) {
   const HeightField* h = &description;
   if (!h->pigment_function) return description;
   RenderPigment pigment = build_render_pigment(*h->pigment_function);
   set_generator(pigment, static_cast<NoiseGenerator>(h->noise_generator));
+  set_function_generator(pigment, scene_generator);
   const int w = h->samples_width, d = h->samples_depth;
   auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(w) * d);
   for (int i = 0; i < d; ++i)
@@ -207,8 +210,9 @@ HeightField with_pigment_samples(const HeightField& description) {
 }
 }  // namespace
 
-Primitive shapes::HeightFieldShape::build(const HeightField& description, const Matrix& world_from_object) {
-  return make_height_field(with_pigment_samples(description), world_from_object);
+Primitive shapes::HeightFieldShape::build(const HeightField& description, const Matrix& world_from_object,
+                                          const BuildContext& context) {
+  return make_height_field(with_pigment_samples(description, context.noise_generator), world_from_object);
 }
 
 }  // namespace povtrace::render

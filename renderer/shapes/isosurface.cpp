@@ -34,7 +34,7 @@ const IsosurfaceData& data_of(const Primitive& p) { return static_cast<const Iso
 
 double function_at(const IsosurfaceData& d, Vec3 q) {
   const double args[3] = {q.x, q.y, q.z};
-  return sdl::evaluate_function(*d.function, args, nullptr);
+  return sdl::evaluate_function(*d.function, args, nullptr, d.noise_generator);
 }
 
 // One ray's search: the object-space ray, and the sign the function is taken with (POV-Ray's Inv3).

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "scene/description.hpp"
+#include "renderer/build_context.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/many_roots.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
@@ -21,6 +22,7 @@ struct IsosurfaceData : ShapeData {
   double threshold = 0, accuracy = 0.001, max_gradient = 1.1;
   int max_trace = 1;
   bool closed = true;
+  int noise_generator = 2;   // the scene's (global_settings), which the function reads (f_noise3d, patterns)
 };
 
 // Where a ray runs through the container: depths t1 ≤ t2 (world units) and the box faces it enters and leaves by
@@ -44,9 +46,8 @@ namespace povtrace::render::shapes {
 // container face it lies on (0 for the function's own surface).
 struct IsosurfaceShape {
   using Description = Isosurface;
-  static Primitive build(const Isosurface& description, const Matrix& world_from_object) {
-    return make_isosurface(description, world_from_object);
-  }
+  // The data carries the scene's noise generator, which its function reads (f_noise3d and its like).
+  static Primitive build(const Isosurface& description, const Matrix& world_from_object, const BuildContext& context);
   static void roots(const Primitive& p, const Ray& ray, RootList& out);   // appends every root
   static Vec3 normal_at(const Primitive& p, std::uint32_t side, Vec3 world_point);
   static Vec3 hit_normal(const SurfaceHit& hit, Vec3 world_point) { return normal_at(*hit.leaf, hit.element, world_point); }

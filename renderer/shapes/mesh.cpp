@@ -21,12 +21,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
-#include <unordered_map>
 
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/watertight.hpp"
 #include "renderer/shapes/mesh.hpp"
+#include "renderer/shared_meshes.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -34,22 +33,6 @@ namespace {
 constexpr double depth_tolerance = 1e-6;
 
 const MeshShapeData& shape_of(const Primitive& p) { return static_cast<const MeshShapeData&>(*p.data); }
-
-// One MeshShapeData per MeshData for as long as some primitive uses it. A live MeshShapeData holds its MeshData, so the
-// address used as the key cannot be reused by another mesh meanwhile.
-std::shared_ptr<const MeshShapeData> shared_mesh_shape(const std::shared_ptr<const MeshData>& data) {
-  static std::mutex mutex;
-  static std::unordered_map<const MeshData*, std::weak_ptr<const MeshShapeData>> cache;
-  const std::lock_guard lock(mutex);
-  if (auto found = cache.find(data.get()); found != cache.end())
-    if (auto shape = found->second.lock()) return shape;
-  std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
-  auto shape = std::make_shared<MeshShapeData>();
-  shape->data = data;
-  shape->bvh = TriangleBvh(data->vertices, data->faces);
-  cache[data.get()] = shape;
-  return shape;
-}
 
 // The world ray in object space, normalised, with the factor L that turns object depths into world depths.
 struct ObjectRay {
@@ -100,7 +83,14 @@ Vec3 to_world_normal(const Primitive& p, Vec3 n) {
 }
 }  // namespace
 
-void set_up_mesh(Primitive& p, const Mesh& mesh) { p.data = shared_mesh_shape(mesh.data); }
+std::shared_ptr<const MeshShapeData> make_mesh_shape(const std::shared_ptr<const MeshData>& data) {
+  auto shape = std::make_shared<MeshShapeData>();
+  shape->data = data;
+  shape->bvh = TriangleBvh(data->vertices, data->faces);
+  return shape;
+}
+
+void set_up_mesh(Primitive& p, std::shared_ptr<const MeshShapeData> shape) { p.data = std::move(shape); }
 
 void prepare_embree_mesh(Primitive& p) {
   const MeshShapeData& mesh = shape_of(p);
@@ -195,9 +185,9 @@ bool MeshShape::inside(const Primitive& p, Vec3 world_point) {
 
 Bounds MeshShape::object_bounds(const Primitive& p) { return shape_of(p).bvh.bounds(); }
 
-Primitive MeshShape::build(const Mesh& mesh, const Matrix& world_from_object) {
+Primitive MeshShape::build(const Mesh& mesh, const Matrix& world_from_object, const BuildContext& context) {
   Primitive p = placed_primitive(ShapeType::mesh, world_from_object);
-  set_up_mesh(p, mesh);
+  set_up_mesh(p, context.meshes.shape_for(mesh.data));
   return p;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "scene/description.hpp"
+#include "renderer/build_context.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
 
@@ -15,7 +16,7 @@ namespace povtrace::render::shapes {
 // element is the triangle, u and v its barycentric coordinates there.
 struct MeshShape {
   using Description = Mesh;
-  static Primitive build(const Mesh& description, const Matrix& world_from_object);
+  static Primitive build(const Mesh& description, const Matrix& world_from_object, const BuildContext& context);
   static void collect(const Primitive& p, const Ray& ray, HitBuffer& out);   // appends every hit
   static std::optional<SurfaceHit> nearest(const Primitive& p, const Ray& ray, double t_min, double t_max);
   static Vec3 normal(const Primitive& p, Vec3 world_point);

@@ -72,19 +72,22 @@ namespace shapes {
 
 namespace {
 template <class S>
-std::optional<Primitive> build_from(const typename S::Description& description, const Matrix& world_from_object) {
-  if constexpr (HasBuild<S>) return S::build(description, world_from_object);
+std::optional<Primitive> build_from(const typename S::Description& description, const Matrix& world_from_object,
+                                    const BuildContext& context) {
+  if constexpr (HasContextBuild<S>) return S::build(description, world_from_object, context);
+  else if constexpr (HasBuild<S>) return S::build(description, world_from_object);
   else throw std::logic_error("CSG objects become CSG nodes in add_object and never reach add_shape_primitives");
 }
 }  // namespace
 
-std::optional<Primitive> build_shape(const Shape& description, const Matrix& world_from_object) {
+std::optional<Primitive> build_shape(const Shape& description, const Matrix& world_from_object,
+                                     const BuildContext& context) {
   return std::visit(
       [&](const auto& d) -> std::optional<Primitive> {
         using D = std::decay_t<decltype(d)>;
 #define POVTRACE_SHAPE_BUILD(name, Shape)                        \
   if constexpr (std::is_same_v<D, typename Shape::Description>) \
-    return build_from<Shape>(d, world_from_object);              \
+    return build_from<Shape>(d, world_from_object, context);     \
   else
         POVTRACE_SHAPES(POVTRACE_SHAPE_BUILD)
 #undef POVTRACE_SHAPE_BUILD

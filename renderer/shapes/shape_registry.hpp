@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "scene/description.hpp"
+#include "renderer/build_context.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/shape_list.hpp"
 
@@ -64,6 +65,11 @@ template <class S>
 concept HasUv = requires(const SurfaceHit& h, Vec3 w) { { S::uv(h, w) } -> std::same_as<std::array<double, 2>>; };
 template <class S>
 concept HasBuild = requires(const typename S::Description& d, const Matrix& m) { S::build(d, m); };
+// A shape whose build reads the scene build's context (shared meshes, the scene's noise generator).
+template <class S>
+concept HasContextBuild = requires(const typename S::Description& d, const Matrix& m, const BuildContext& c) {
+  S::build(d, m, c);
+};
 
 // Calls visit(std::type_identity<S>{}) for the registered struct S of `type`.
 template <class Visit>
@@ -153,6 +159,7 @@ std::array<double, 2> uv_of(const SurfaceHit& hit, Vec3 world_point, double scen
 // The primitive of a shape description placed by `world_from_object` (type, shape parameters, data and
 // transform; material, object index and flags are the caller's), or nothing when the shape renders nothing (a disc
 // with a zero normal). Throws std::logic_error for a description no registered shape builds (CSG).
-std::optional<Primitive> build_shape(const Shape& description, const Matrix& world_from_object);
+std::optional<Primitive> build_shape(const Shape& description, const Matrix& world_from_object,
+                                     const BuildContext& context);
 
 }  // namespace povtrace::render::shapes

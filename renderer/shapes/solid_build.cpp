@@ -67,4 +67,13 @@ Primitive make_isosurface(const Isosurface& iso, const Matrix& world_from_object
   return p;
 }
 
+Primitive shapes::IsosurfaceShape::build(const Isosurface& iso, const Matrix& world_from_object,
+                                         const BuildContext& context) {
+  Primitive p = placed_primitive(ShapeType::isosurface, world_from_object);
+  std::shared_ptr<IsosurfaceData> data = isosurface_data(iso);
+  data->noise_generator = context.noise_generator;
+  p.data = std::move(data);
+  return p;
+}
+
 }  // namespace povtrace::render

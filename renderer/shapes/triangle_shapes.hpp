@@ -41,7 +41,9 @@ struct MeshShapeData : ShapeData {
 // Fill in a primitive whose common fields (material, transform, flags) are already set.
 void set_up_triangle(Primitive& p, const Triangle& triangle);
 void set_up_polygon(Primitive& p, const Polygon& polygon);
-void set_up_mesh(Primitive& p, const Mesh& mesh);   // shares the MeshShapeData of every placement of the same mesh
+// A mesh's shape and BVH, built once per mesh and shared by its placements (renderer/shared_meshes.hpp).
+std::shared_ptr<const MeshShapeData> make_mesh_shape(const std::shared_ptr<const MeshData>& data);
+void set_up_mesh(Primitive& p, std::shared_ptr<const MeshShapeData> shape);
 // Lets a placed mesh find its nearest hits through Embree (Primitive::embree_nearest), building Embree's BVH once
 // per mesh; leaves it on the own BVH if Embree cannot start.
 void prepare_embree_mesh(Primitive& p);

@@ -34,7 +34,7 @@ inline std::shared_ptr<const MeshData> mesh_data(const std::vector<Vec3>& vertic
 inline render::Primitive mesh(std::shared_ptr<const MeshData> data) {
   render::Primitive p;
   p.type = render::ShapeType::mesh;
-  render::shapes::set_up_mesh(p, Mesh{std::move(data), {}});
+  render::shapes::set_up_mesh(p, render::shapes::make_mesh_shape(data));
   return p;
 }
 

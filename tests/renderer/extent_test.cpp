@@ -15,7 +15,7 @@ namespace {
 std::string extents(const std::string& body) {
   Messages m;
   ParseOptions o = options_into(m);
-  o.object_geometry = render::object_geometry();
+  o.object_geometry = std::make_shared<render::RendererGeometry>();
   parse_scene_text("#version 3.7;\n#macro V(S, P) #debug concat(S, \" \", vstr(3, P, \",\", 0, 9), \"\\n\") #end\n"
                    "#macro E(S, O) V(concat(S, \" min\"), min_extent(O)) V(concat(S, \" max\"), max_extent(O)) #end\n" +
                        body,

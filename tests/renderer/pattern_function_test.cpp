@@ -15,7 +15,7 @@ namespace {
 
 ParseOptions with_patterns(Messages& messages) {
   ParseOptions o = options_into(messages);
-  o.pattern_evaluator = render::pattern_evaluator();
+  o.pattern_evaluator = std::make_shared<render::RendererPatterns>();
   return o;
 }
 

@@ -16,7 +16,7 @@ namespace {
 
 ParseOptions with_geometry(Messages& messages) {
   ParseOptions o = options_into(messages);
-  o.object_geometry = render::object_geometry();
+  o.object_geometry = std::make_shared<render::RendererGeometry>();
   return o;
 }
 
@@ -184,7 +184,7 @@ TEST(TraceFunction, AZeroDirectionMeetsNothingWithAWarning) {
 
 TEST(TraceFunction, TheFourthArgumentMustBeAVectorIdentifier) {
   ParseOptions o;
-  o.object_geometry = render::object_geometry();
+  o.object_geometry = std::make_shared<render::RendererGeometry>();
   const ParseError f = parse_error("#declare S = sphere { 0, 1 }\n#declare F = 1;\n#declare P = trace(S, 5*y, -y, F);\n", o);
   EXPECT_EQ(f.location().line, 3);
   EXPECT_EQ(f.location().column, 32);
@@ -199,7 +199,7 @@ TEST(TraceFunction, TheFourthArgumentMustBeAVectorIdentifier) {
 
 TEST(TraceFunction, UnsupportedGeometryIsRefusedByName) {
   ParseOptions o;
-  o.object_geometry = render::object_geometry();
+  o.object_geometry = std::make_shared<render::RendererGeometry>();
   const ParseError e = parse_error("#declare B = bicubic_patch { type 0 flatness 0 u_steps 1 v_steps 1 "
                                    "<0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>,<0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>,"
                                    "<0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>,<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }\n"
