@@ -3,8 +3,6 @@
 // handled the same way here.
 #include "renderer/csg_build.hpp"
 
-#include "runtime/object_extents.hpp"
-#include "renderer/object_geometry.hpp"
 #include "renderer/shapes/csg.hpp"
 
 namespace povtrace::render {
@@ -25,24 +23,21 @@ CsgOperation operation_of(CsgKind kind) {
 Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, bool placed);
 
 // The box POV-Ray culls the rays of an object placed in the scene with (its bounding slabs test each object's box):
-// the box as the parser makes it (runtime/object_extents.hpp). It shows where the object's surface reaches beyond its
-// box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where the clip's box alone
-// would let rays through that POV-Ray never tests; a merge or an intersection holding such a child keeps its own
-// box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests only their bounded_by).
+// the box the parser made when it placed the object (Object::placed_box). It shows where the object's surface
+// reaches beyond its box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where
+// the clip's box alone would let rays through that POV-Ray never tests; a merge or an intersection holding such a
+// child keeps its own box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests only their bounded_by).
 struct CullingBox {
   bool known = false;       // false: the parser cannot make the box (the clips' box is used instead)
   std::optional<Bounds> box;   // empty: POV-Ray's huge box, nothing is culled
 };
 
 CullingBox povray_culling_box(const Object& o) {
-  try {
-    const ExtentBox b = sdl::ObjectExtents(object_geometry().get()).box(o);
-    for (int i = 0; i < 3; ++i)
-      if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
-    return {true, Bounds{b.lo(), b.hi()}};
-  } catch (const sdl::ExtentUnavailable&) {
-    return {};
-  }
+  if (!o.placed_box || !o.placed_box->known) return {};
+  const ExtentBox& b = o.placed_box->box;
+  for (int i = 0; i < 3; ++i)
+    if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
+  return {true, Bounds{b.lo(), b.hi()}};
 }
 
 // One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
