@@ -33,7 +33,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/lexing/lexer.hpp"
-#include "runtime/object_extents.hpp"
+#include "parser/extents/object_extents.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/lexing/reserved_words.hpp"
 #include "parser/directives/symbols.hpp"

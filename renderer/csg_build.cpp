@@ -3,7 +3,6 @@
 // handled the same way here.
 #include "renderer/csg_build.hpp"
 
-#include "runtime/object_extents.hpp"
 #include "renderer/shapes/csg.hpp"
 
 namespace povtrace::render {
@@ -24,24 +23,22 @@ CsgOperation operation_of(CsgKind kind) {
 Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, const BuildContext* placed);
 
 // The box POV-Ray culls the rays of an object placed in the scene with (its bounding slabs test each object's box):
-// the box as the parser makes it (runtime/object_extents.hpp). It shows where the object's surface reaches beyond its
-// box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where the clip's box alone
-// would let rays through that POV-Ray never tests; a merge or an intersection holding such a child keeps its own
-// box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests only their bounded_by).
+// the box the parser made when it placed the object (Object::placed_box). It shows where the object's surface
+// reaches beyond its box: a quadric clipped by a height field keeps the quadric's own box within the clip's, where
+// the clip's box alone would let rays through that POV-Ray never tests; a merge or an intersection holding such a
+// child keeps its own box. Objects inside a CSG are not culled by their boxes (CSGUnion::All_Intersections tests
+// only their bounded_by).
 struct CullingBox {
   bool known = false;       // false: the parser cannot make the box (the clips' box is used instead)
   std::optional<Bounds> box;   // empty: POV-Ray's huge box, nothing is culled
 };
 
-CullingBox povray_culling_box(const Object& o, const BuildContext& context) {
-  try {
-    const ExtentBox b = sdl::ObjectExtents(&context.geometry, context.noise_generator).box(o);
-    for (int i = 0; i < 3; ++i)
-      if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
-    return {true, Bounds{b.lo(), b.hi()}};
-  } catch (const sdl::ExtentUnavailable&) {
-    return {};
-  }
+CullingBox povray_culling_box(const Object& o) {
+  if (!o.placed_box || !o.placed_box->known) return {};
+  const ExtentBox& b = o.placed_box->box;
+  for (int i = 0; i < 3; ++i)
+    if (!(b.lengths[i] < kBoundHuge / 2)) return {true, std::nullopt};
+  return {true, Bounds{b.lo(), b.hi()}};
 }
 
 // One primitive for any object: its node, its single leaf primitive, or a union of its leaf primitives.
@@ -82,7 +79,7 @@ Primitive node_for(const Object& o, bool shaded, const LeafBuilder& add_leaf, co
   // Then the clipping objects' box (Parse_Object_Mods): rays that miss it see nothing of the object, even where the
   // clip's inside reaches beyond its box (a height field's inside goes on below its bottom).
   if (placed) {
-    const CullingBox culling = povray_culling_box(o, *placed);
+    const CullingBox culling = povray_culling_box(o);
     if (culling.known) p = with_culling_box(p, culling.box);
     else if (!clips.empty()) p = with_clipping_box_from(p, clips);
   }

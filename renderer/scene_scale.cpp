@@ -18,6 +18,21 @@ void scale_interiors(Object& o, double k) {
     for (Object& child : csg->children) scale_interiors(child, k);
 }
 
+// POV-Ray's box of a placed object as its Transform would remake it after the scaling (PlacedBox::moved: a power of
+// two scales the box exactly as it scales the shape).
+void scale_placed_box(Object& o, const Matrix& m) {
+  if (auto* csg = std::get_if<Csg>(&o.shape))   // the children of a union the parser placed one by one
+    for (Object& child : csg->children) scale_placed_box(child, m);
+  if (!o.placed_box || !o.placed_box->known) return;
+  PlacedBox& placed = *o.placed_box;
+  if (!placed.moved) {
+    placed.box = ExtentBox::huge();
+    return;
+  }
+  placed.moved = placed.moved->transformed(m);
+  placed.box = *placed.moved;
+}
+
 void fold_sphere_transforms(Object& o) {
   if (auto* sphere = std::get_if<Sphere>(&o.shape); sphere && !sphere->ellipsoid) {
     const Matrix& m = o.world_from_object;
@@ -62,6 +77,7 @@ SceneDescription scaled_scene(const SceneDescription& scene, double k) {
   const Matrix m = Matrix::scaling({k, k, k});
   for (Object& o : s.objects) {
     transform_object(o, m);
+    scale_placed_box(o, m);
     scale_interiors(o, k);
   }
   for (Light& l : s.lights) {

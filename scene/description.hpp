@@ -420,6 +420,18 @@ struct Isosurface {
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
                            Superellipsoid, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface>;
 
+// POV-Ray's bounding box of an object placed in the scene (what min_extent()/max_extent() give then), made by the
+// parser when it places the object (parser/extents/); the renderer culls the object's rays with it (csg_build.cpp).
+struct PlacedBox {
+  bool known = false;   // false: the parser could not make it (a height field's samples without the renderer's geometry)
+  ExtentBox box;        // the box as placed; POV-Ray's huge box culls nothing
+  // The box a later uniform scaling by a power of two carries (renderer/scene_scale.cpp), so that the scaled box is
+  // the one POV-Ray's Transform would give: a carried box itself; for the shapes whose box is remade from the shape,
+  // that box without the narrowing by clip objects (a transform drops it) — a clipped poly's, its first clip's.
+  // Unset when the remade box is the huge box whatever the transform (a plane, a poly without clips).
+  std::optional<ExtentBox> moved;
+};
+
 struct Object {
   Shape shape;
   Matrix world_from_object;                 // composed object transforms in written order
@@ -469,6 +481,9 @@ struct Object {
   // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
   // is remade from the shape read it.
   bool box_skips_clips = false;
+  // Made when the object is placed in the scene; unset for CSG children, clip and bound objects, and objects built in
+  // code (the renderer then culls by the clip objects' box).
+  std::optional<PlacedBox> placed_box;
 };
 
 // ---- Camera and lights ----------------------------------------------------------------------------------

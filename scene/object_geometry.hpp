@@ -1,6 +1,6 @@
 // Ray-object geometry the SDL needs at parse time: trace(O, Start, Dir [, Normal]), inside(O, P) of shapes whose
 // inside test the parser does not carry itself (object_queries.cpp), and the samples behind a height field's
-// bounding box (object_extents.cpp). Intersecting objects is the renderer's work,
+// bounding box (parser/extents/object_extents.cpp). Intersecting objects is the renderer's work,
 // and the parser never includes renderer code: it asks through this interface, which the program hands it in
 // ParseOptions::object_geometry (renderer/object_geometry.hpp implements it). Without one, trace() is refused by
 // name.

@@ -18,6 +18,7 @@
 
 #include <stdexcept>
 
+#include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
@@ -180,7 +181,11 @@ const PreparedObject& Interpreter::prepared_object(const std::shared_ptr<const S
     prepared_objects_.erase(found);
   }
   if (prepared_objects_.size() >= kMaxPreparedObjects) prepared_objects_.clear();
-  PreparedEntry entry{item, options_.object_geometry->prepare(std::get<Object>(*item), generator), generator};
+  // Prepared as if placed: the renderer culls the rays of a placed object by POV-Ray's box of it, as POV-Ray's
+  // trace() tests the object's own box first.
+  Object placed = std::get<Object>(*item);
+  set_placed_boxes(placed, extents());
+  PreparedEntry entry{item, options_.object_geometry->prepare(placed, generator), generator};
   return *prepared_objects_.emplace(item.get(), std::move(entry)).first->second.prepared;
 }
 

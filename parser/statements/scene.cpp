@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "parser/expressions/int_cast.hpp"
+#include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -324,6 +325,7 @@ void Interpreter::add_light(Light light) {
   for (Object& shown : light.looks_like) {
     settle_deferred_texture_transforms(shown);
     post_process(shown);
+    set_placed_boxes(shown, extents());
     scene_.objects.push_back(std::move(shown));
   }
   light.looks_like.clear();
@@ -414,6 +416,7 @@ void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   settle_deferred_texture_transforms(object);
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
+  set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)
   scene_.objects.push_back(std::move(object));
 }
 

@@ -1,7 +1,7 @@
 // min_extent() and max_extent() of every kind of object, through the parser with the renderer's geometry (a height
 // field's samples are the renderer's to read). The expected lines are POV-Ray 3.7.0.10's own output for the same
 // scenes (vstr(3, V, ",", 0, 9)): single-precision boxes made, carried through later transforms, narrowed by clip
-// and bounding objects and combined by CSG as POV-Ray does (runtime/object_extents.cpp).
+// and bounding objects and combined by CSG as POV-Ray does (parser/extents/object_extents.cpp).
 #include <string>
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // (povray-sdl-and-geometry.md §5), made, carried and narrowed as POV-Ray 3.7 does it at parse time.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 
 #include "scene/description.hpp"
@@ -35,11 +36,15 @@ class ObjectExtents {
   // clipped_by on a quadric (Parse_Object_Mods recomputes its box with its current coefficients, within its clips).
   void quadric_clipped(Object& o) const;
 
+  // The box of an object as it is placed in the scene (Object::placed_box), which the renderer culls its rays with.
+  PlacedBox placed(const Object& o) const;
+
  private:
   ExtentBox shape_box(const Object& o) const;
   ExtentBox csg_box(Object& o) const;
   ExtentBox height_field_box(const Object& o, const HeightField& h) const;
   ExtentBox narrowed(const Object& o, ExtentBox box) const;
+  std::optional<ExtentBox> moved_box(const Object& o) const;
   void recompute_quadric(Object& q, Vec3 clip_lo, Vec3 clip_hi) const;
 
   const ObjectGeometry* geometry_;

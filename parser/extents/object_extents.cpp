@@ -14,7 +14,8 @@
 //   becomes the huge box.
 // - At the end of every object's modifiers, the common box of its bounding objects, then of its clip objects
 //   (inverted ones left out), replaces the object's box when its volume is smaller.
-#include "runtime/object_extents.hpp"
+#include "parser/extents/object_extents.hpp"
+#include "parser/extents/placed_boxes.hpp"
 
 #include "runtime/quadric_extent.hpp"
 #include "runtime/sweep_extents.hpp"
@@ -401,6 +402,45 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
     if (common.volume() < b.volume()) b = common;
   }
   return b;
+}
+
+// The box a later transform leaves to be carried, as POV-Ray's Transform handles each shape: a carried box itself;
+// a box remade from the shape, without the narrowing by clip objects a transform drops (Object::box_skips_clips),
+// where a sphere that is still a sphere becomes an ellipsoid holding its moved centre and radius (Sphere::Transform);
+// a clipped poly's first clip's (Poly::Compute_BBox). Unset: the huge box whatever the transform. A uniform scaling
+// by a power of two carries this box exactly as the remade one (every product scales exactly), except a triangle's
+// EPSILON margin, which POV-Ray adds after the transform (1e-10 in a float box: below a float's precision but at
+// coordinates within 1e-3 of zero).
+std::optional<ExtentBox> ObjectExtents::moved_box(const Object& o) const {
+  if (o.carried_extent) return *o.carried_extent;
+  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  if (std::holds_alternative<Plane>(o.shape)) return std::nullopt;
+  if (std::holds_alternative<Poly>(o.shape)) {
+    if (o.clipped_by.empty()) return std::nullopt;
+    return moved_box(o.clipped_by.front());
+  }
+  if (const auto* s = std::get_if<Sphere>(&o.shape); s && !s->ellipsoid) {
+    const Matrix& m = o.world_from_object;
+    const double r = s->radius * length(Vec3{m.m[0][0], m.m[0][1], m.m[0][2]});   // as carry_sphere_frame scales it
+    return ExtentBox::make(m.point(s->centre) - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r});
+  }
+  if (std::holds_alternative<Csg>(o.shape) || std::holds_alternative<Quadric>(o.shape)) return box(o);   // from code
+  return shape_box(o);
+}
+
+PlacedBox ObjectExtents::placed(const Object& o) const {
+  try {
+    return PlacedBox{true, box(o), moved_box(o)};
+  } catch (const ExtentUnavailable&) {
+    return PlacedBox{};
+  }
+}
+
+void set_placed_boxes(Object& o, const ObjectExtents& extents) {
+  o.placed_box = extents.placed(o);
+  auto* csg = std::get_if<Csg>(&o.shape);
+  if (csg && csg->kind == CsgKind::union_ && o.clipped_by.empty() && o.bounded_by.empty())
+    for (Object& child : csg->children) set_placed_boxes(child, extents);
 }
 
 void ObjectExtents::made(Object& o) const {
