@@ -215,18 +215,20 @@ std::optional<std::filesystem::path> Interpreter::find_include(const std::string
   const bool has_inc = name.size() > 4 && (name.ends_with(".inc") || name.ends_with(".INC"));
   if (has_inc) candidates = {name, name + ".inc", name + ".INC"};
   else candidates = {name + ".inc", name + ".INC", name};
-  std::vector<std::filesystem::path> dirs{std::filesystem::current_path()};
+  // Every file-system query takes an error_code: a name the system rejects (too long, say) is simply not found,
+  // and the caller reports "cannot find include file" with its position instead of an exception escaping.
+  std::error_code ec;
+  std::vector<std::filesystem::path> dirs;
+  if (auto cwd = std::filesystem::current_path(ec); !ec) dirs.push_back(std::move(cwd));
   for (const auto& d : options_.library_paths) dirs.push_back(d);
   for (const auto& candidate : candidates) {
     const std::filesystem::path p(candidate);
     if (p.is_absolute()) {
-      if (std::filesystem::is_regular_file(p)) return p;
+      if (std::filesystem::is_regular_file(p, ec)) return p;
       continue;
     }
-    for (const auto& d : dirs) {
-      std::error_code ec;
+    for (const auto& d : dirs)
       if (std::filesystem::is_regular_file(d / p, ec)) return d / p;
-    }
   }
   return std::nullopt;
 }

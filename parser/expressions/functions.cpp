@@ -215,7 +215,8 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     if (n == "strlen") return Numeric::scalar(static_cast<double>(s.size()));
     if (n == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
     if (n == "val") return Numeric::scalar(std::atof(s.c_str()));
-    return Numeric::scalar(find_include(s) || std::filesystem::exists(s) ? 1.0 : 0.0);
+    std::error_code ec;   // a name the file system rejects (too long, say) does not exist
+    return Numeric::scalar(find_include(s) || std::filesystem::exists(s, ec) ? 1.0 : 0.0);
   }
   if (n == "strcmp") {
     expect("(", "");

@@ -22,12 +22,12 @@ namespace povtrace::sdl {
 std::string Interpreter::locate_image_file(const std::string& name) const {
   const std::filesystem::path p(name);
   if (p.is_absolute()) return name;
-  std::vector<std::filesystem::path> dirs{std::filesystem::current_path()};
+  std::error_code ec;   // never throws: a name the file system rejects is not found (see find_include)
+  std::vector<std::filesystem::path> dirs;
+  if (auto cwd = std::filesystem::current_path(ec); !ec) dirs.push_back(std::move(cwd));
   for (const auto& d : options_.library_paths) dirs.push_back(d);
-  for (const auto& d : dirs) {
-    std::error_code ec;
+  for (const auto& d : dirs)
     if (std::filesystem::is_regular_file(d / p, ec)) return (d / p).string();
-  }
   return name;
 }
 

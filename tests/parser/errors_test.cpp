@@ -178,6 +178,21 @@ TEST(IncludeErrors, FileNotFound) {
   EXPECT_NE(e.bare_message().find(lib.path().string()), std::string::npos) << "names the searched folders";
 }
 
+// Found by the parse fuzzer: a name longer than the file system allows made std::filesystem throw out of the
+// include search (and so out of the parser). It is a file that cannot be found, reported at its position.
+TEST(IncludeErrors, NameTooLongForTheFileSystemIsNotFound) {
+  const std::string name(5000, 'n');
+  const ParseError e = parse_error("#version 3.7;\n#include \"" + name + "\"\n");
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_EQ(e.location().column, 10);
+  EXPECT_NE(e.bare_message().find("cannot find include file"), std::string::npos) << e.bare_message();
+}
+
+TEST(IncludeErrors, FileExistsOfANameTooLongIsFalse) {
+  const std::string name(5000, 'n');
+  EXPECT_EQ(debug_output("#version 3.7;\n#debug str(file_exists(\"" + name + "\"), 0, 0)\n"), "0");
+}
+
 TEST(IncludeErrors, SelfIncludingFileFailsCleanly) {
   ScratchFolder lib;
   const auto self = lib.write("ptest_self.inc", "#declare N = 1;\n#include \"ptest_self.inc\"\n");
