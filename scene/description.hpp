@@ -481,8 +481,10 @@ struct Object {
   // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
   // is remade from the shape read it.
   bool box_skips_clips = false;
-  // Made when the object is placed in the scene; unset for CSG children, clip and bound objects, and objects built in
-  // code (the renderer then culls by the clip objects' box).
+  // Made when the object is placed in the scene, for the objects the renderer culls by it: CSG (and the children of
+  // a union without clip or bounding objects, which are placed one by one) and objects with clip, bounding or
+  // removed bounding objects. Unset for other shapes, which the renderer bounds by their own bounds, for clip and
+  // bound objects, and for objects built in code (the renderer then culls by the clip objects' box).
   std::optional<PlacedBox> placed_box;
 };
 

@@ -10,4 +10,8 @@ namespace povtrace::sdl {
 // children in turn.
 void set_placed_boxes(Object& o, const ObjectExtents& extents);
 
+// Whether set_placed_boxes gives the object a box: only objects the renderer culls by it (CSG, and objects with
+// clip, bounding or removed bounding objects).
+bool culled_by_placed_box(const Object& o);
+
 }  // namespace povtrace::sdl
