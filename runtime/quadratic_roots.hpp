@@ -1,7 +1,7 @@
 // The real roots of a quadratic, as povtrace has always solved them (the closed form POV-Ray's Solve_Polynomial
 // uses for degree 2, written without its cancellation). One definition for both sides: the parser finds the turning
 // points of lathe, prism and sor profiles with it (runtime/sweep_extents.cpp, for their bounding boxes), and the
-// renderer's polynomial solver (renderer/shapes/polynomial_roots.hpp) uses it for its quadratics, so that the
+// polynomial solver the renderer's shapes call (runtime/polynomial_roots.hpp) uses it for its quadratics, so that the
 // bounding boxes the SDL sees and the shapes the renderer intersects are built from the same roots.
 #pragma once
 

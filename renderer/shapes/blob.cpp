@@ -27,7 +27,7 @@
 
 #include "renderer/shapes/blob.hpp"
 #include "renderer/shapes/many_roots.hpp"
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 
 namespace povtrace::render::shapes {
 

@@ -20,7 +20,7 @@
 #include <cmath>
 
 #include "renderer/shapes/many_roots.hpp"
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
 #include "renderer/shapes/lathe.hpp"
 

@@ -24,7 +24,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/poly_shape.hpp"
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/poly.hpp"
 
 namespace povtrace::render::shapes {

@@ -29,7 +29,7 @@
 #include <cmath>
 
 #include "renderer/shapes/many_roots.hpp"
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
 #include "renderer/shapes/prism.hpp"
 

@@ -2,7 +2,7 @@
 // it lies on, so the candidates are the parameters where x(w) = ±u or y(w) = v.
 #include <cmath>
 
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
 
 namespace povtrace::render {

@@ -26,7 +26,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/insert_sorted.hpp"
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/torus.hpp"
 
 namespace povtrace::render::shapes {

@@ -7,11 +7,11 @@
 #include <random>
 #include <vector>
 
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 
 namespace {
 
-using namespace povtrace::render::poly;
+using namespace povtrace::poly;
 
 // Coefficients (highest first) of lead · Π (t − rᵢ).
 std::vector<double> from_roots(const std::vector<double>& roots, double lead = 1.0) {

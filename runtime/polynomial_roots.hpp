@@ -11,7 +11,7 @@
 // solve_polynomial picks between them with POV-Ray's rules (see there).
 #pragma once
 
-namespace povtrace::render::poly {
+namespace povtrace::poly {
 
 inline constexpr int max_degree = 6;   // a lathe's cubic profile gives sextics
 
@@ -43,4 +43,4 @@ int solve_sturm(int degree, const double* c, double lo, double hi, double* roots
 int solve_polynomial(int degree, const double* c, double* roots, bool sturm, double elimination_tolerance,
                      double sturm_limit);
 
-}  // namespace povtrace::render::poly
+}  // namespace povtrace::poly

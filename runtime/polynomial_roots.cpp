@@ -1,5 +1,5 @@
 // Real roots of polynomials up to degree 6 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
-#include "renderer/shapes/polynomial_roots.hpp"
+#include "runtime/polynomial_roots.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "runtime/quadratic_roots.hpp"
 
-namespace povtrace::render::poly {
+namespace povtrace::poly {
 
 namespace {
 constexpr double kSmallEnough = 1e-10;        // POV-Ray's SMALL_ENOUGH: a coefficient this small is zero
@@ -317,4 +317,4 @@ int solve_polynomial(int degree, const double* c, double* roots, bool sturm, dou
   }
 }
 
-}  // namespace povtrace::render::poly
+}  // namespace povtrace::poly
