@@ -80,6 +80,8 @@ class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
   SceneDescription run(std::unique_ptr<SourceFile> main_file);
+  // `name` held in the parse's file names (the SceneDescription keeps them: its locations point to them).
+  FileName file_name(std::string_view name) { return file_names_->intern(name); }
 
  private:
   // ---- token stream (token_stream.cpp) ----
@@ -623,6 +625,7 @@ class Interpreter {
     int noise_generator;   // the scene's when it was prepared (its isosurfaces' functions read it)
   };
   std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
+  std::shared_ptr<FileNames> file_names_ = std::make_shared<FileNames>();
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
   // global_settings { charset }.
   std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;

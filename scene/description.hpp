@@ -572,6 +572,8 @@ struct GlobalSettings {
 };
 
 struct SceneDescription {
+  // The file names the locations of everything in the description point to (source_location.hpp).
+  std::shared_ptr<const FileNames> file_names;
   int language_version = 370;            // round(100 · #version); 370 when no #version was seen
   bool version_given = false;            // a #version directive appeared before the first statement
   GlobalSettings settings;

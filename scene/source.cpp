@@ -6,21 +6,19 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
-#include <mutex>
 #include <sstream>
-#include <unordered_set>
 
 namespace povtrace {
 
-FileName::FileName(const std::shared_ptr<const std::string>& name) : name_(name ? intern(*name) : nullptr) {}
-
-const std::string* FileName::intern(std::string_view name) {
-  // Parses may run on several threads (tests do); interning happens once per file, so a lock costs nothing.
-  static std::mutex mutex;
-  static auto* pool = new std::unordered_set<std::string>();   // never freed: locations may outlive main()
-  const std::lock_guard<std::mutex> lock(mutex);
-  return &*pool->emplace(name).first;
+namespace {
+// A copy of `loc` whose file name lives in `names` (a pool the error owns, as the parse's may be gone by the time
+// the error is read).
+SourceLoc kept_in(const SourceLoc& loc, FileNames& names) {
+  SourceLoc kept = loc;
+  if (loc.file) kept.file = names.intern(*loc.file);
+  return kept;
 }
+}  // namespace
 
 std::string_view SourceFile::line_text(int line) const {
   std::size_t begin = 0;
@@ -85,12 +83,14 @@ std::string format_diagnostic(const SourceLoc& loc, std::string_view severity, s
 ParseError::ParseError(const SourceLoc& loc, const std::string& message, std::string line_text,
                        const std::string& context)
     : std::runtime_error(format_diagnostic(loc, "error", message, line_text) + (context.empty() ? "" : "\n") + context),
-      loc_(loc),
+      file_names_(std::make_shared<FileNames>()),
+      loc_(kept_in(loc, *file_names_)),
       message_(message),
       context_(context) {}
 
 ParseError::ParseError(const ParseError& inner, const std::string& context)
     : std::runtime_error(std::string(inner.what()) + (context.empty() ? "" : "\n") + context),
+      file_names_(inner.file_names_),
       loc_(inner.loc_),
       message_(inner.message_),
       context_(inner.context_.empty() ? context : inner.context_ + "\n" + context) {}

@@ -51,6 +51,7 @@ class ParseError : public std::runtime_error {
   const std::string& context() const { return context_; }
 
  private:
+  std::shared_ptr<FileNames> file_names_;   // holds loc_'s file name: the error outlives the parse
   SourceLoc loc_;
   std::string message_;
   std::string context_;

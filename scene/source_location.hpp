@@ -5,20 +5,17 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 
 namespace povtrace {
 
-// A file name interned in a process-wide pool that is never freed: copying a location copies one pointer (no
-// reference count to update: every token carries a location), and equal names are the same pointer. The pool
-// holds one entry per distinct file name, so it stays small.
+// A file name held in a FileNames pool: copying a location copies one pointer (no reference count to update:
+// every token carries a location), and equal names of one pool are the same pointer. It is valid as long as its
+// pool lives.
 class FileName {
  public:
   FileName() = default;
-  FileName(std::nullptr_t) {}   // NOLINT: "no file", as a null shared_ptr was
-  // Implicit, so that code written for the former shared_ptr member (make_shared<const std::string>(…)) keeps
-  // compiling.
-  FileName(const std::shared_ptr<const std::string>& name);   // NOLINT
-  explicit FileName(std::string_view name) : name_(intern(name)) {}
+  FileName(std::nullptr_t) {}   // NOLINT: "no file"
 
   const std::string& operator*() const { return *name_; }
   const std::string* operator->() const { return name_; }
@@ -27,8 +24,20 @@ class FileName {
   friend bool operator==(const FileName&, const FileName&) = default;
 
  private:
-  static const std::string* intern(std::string_view name);
+  friend class FileNames;
+  explicit FileName(const std::string* name) : name_(name) {}
   const std::string* name_ = nullptr;
+};
+
+// The file names locations point to, one entry per distinct name (so it stays small). A parse makes one and hands
+// it to its SceneDescription (SceneDescription::file_names), so the locations of what the parse made stay valid
+// as long as the description does; a ParseError keeps a pool of its own for its one name.
+class FileNames {
+ public:
+  FileName intern(std::string_view name) { return FileName(&*names_.emplace(name).first); }
+
+ private:
+  std::unordered_set<std::string> names_;   // node-based: a name never moves
 };
 
 struct SourceLoc {

@@ -145,7 +145,7 @@ void Interpreter::directive_fopen(const Token& at) {
   file->name = name;
   if (mode.is("read")) {
     file->reading = true;
-    file->data.name = std::make_shared<const std::string>(path.string());
+    file->data.name = file_name(path.string());
     file->data.path = path;
     try {
       file->data.text = read_text_file(path);

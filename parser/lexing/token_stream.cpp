@@ -524,7 +524,7 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
                     "; does a file include itself?)");
   auto file = std::make_unique<SourceFile>();
   file->path = path;
-  file->name = std::make_shared<const std::string>(path.string());
+  file->name = file_name(path.string());
   try {
     file->text = read_text_file(path);
   } catch (const std::exception& e) {

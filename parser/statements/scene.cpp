@@ -40,6 +40,7 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
     const Control& open = controls_.back();
     fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
   }
+  scene_.file_names = file_names_;
   return std::move(scene_);
 }
 
@@ -437,12 +438,12 @@ ParseOptions with_standard_includes(const ParseOptions& options) {
 
 // Takes the text over: a scene file read from disk is not copied once more (7 MB in a large scene).
 SceneDescription parse_owned_text(std::string text, const std::string& name, const ParseOptions& options) {
-  auto file = std::make_unique<SourceFile>();
-  file->name = std::make_shared<const std::string>(name);
-  file->path = name;
-  file->text = std::move(text);
   const ParseOptions o = with_standard_includes(options);
   sdl::Interpreter interpreter(o);
+  auto file = std::make_unique<SourceFile>();
+  file->name = interpreter.file_name(name);
+  file->path = name;
+  file->text = std::move(text);
   return interpreter.run(std::move(file));
 }
 }  // namespace
@@ -456,7 +457,8 @@ SceneDescription parse_scene(const std::filesystem::path& path, const ParseOptio
   try {
     text = read_text_file(path);
   } catch (const std::exception& e) {
-    throw ParseError(SourceLoc{std::make_shared<const std::string>(path.string()), 0, 0}, e.what());
+    FileNames name;   // the error keeps a copy
+    throw ParseError(SourceLoc{name.intern(path.string()), 0, 0}, e.what());
   }
   return parse_owned_text(std::move(text), path.string(), options);
 }

@@ -176,7 +176,8 @@ TEST(HeightField, GreyPngHeights) {
   EXPECT_EQ(f.height(1, 1), 65535);
   EXPECT_NEAR(f.height(0, 0), 128.0 / 255 * 257 * 255, 1.0);
   h.file = (dir / "missing.png").string();
-  h.file_loc = SourceLoc{FileName("scene.pov"), 7, 18};
+  FileNames names;
+  h.file_loc = SourceLoc{names.intern("scene.pov"), 7, 18};
   try {
     make_height_field(h, Matrix::identity());
     FAIL() << "a missing image must be an error";

@@ -12,9 +12,14 @@
 namespace povtrace::sdl {
 namespace {
 
+FileNames& test_file_names() {   // lives through the test program, as the files made below do
+  static FileNames names;
+  return names;
+}
+
 SourceFile make_file(const std::string& text) {
   SourceFile f;
-  f.name = std::make_shared<const std::string>("lex.pov");
+  f.name = test_file_names().intern("lex.pov");
   f.path = "lex.pov";
   f.text = text;
   return f;
