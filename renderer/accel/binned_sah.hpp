@@ -21,19 +21,22 @@ struct SahSplit {
 };
 
 // The cheapest split of the items [first, last). `usable(a)`: whether axis a has a non-degenerate centroid extent;
-// `bin_of(item, a)`: the item's bin on axis a, in [0, sah_bin_count); `box_of(item)`: its box. Box is
-// default-constructed empty and has extend(const Box&) and surface_area().
-template <class Box, class Usable, class BinOf, class BoxOf>
-SahSplit cheapest_sah_split(const std::uint32_t* first, const std::uint32_t* last, Usable usable, BinOf bin_of,
-                            BoxOf box_of) {
+// `binner_for(a)`: a callable giving an item's bin on axis a, in [0, sah_bin_count) — made once per axis, so that
+// the axis's offset and scale are plain values in the binning loop (a lambda reading them through references
+// cost the scene BVH build 30% more instructions); `box_of(item)`: its box. Box is default-constructed empty and has
+// extend(const Box&) and surface_area().
+template <class Box, class Usable, class BinnerFor, class BoxOf>
+SahSplit cheapest_sah_split(const std::uint32_t* first, const std::uint32_t* last, Usable usable,
+                            BinnerFor binner_for, BoxOf box_of) {
   double best_cost = std::numeric_limits<double>::infinity();
   SahSplit best;
   for (int a = 0; a < 3; ++a) {
     if (!usable(a)) continue;
     Box bins[sah_bin_count];
     std::uint32_t counts[sah_bin_count] = {};
+    const auto bin_of = binner_for(a);
     for (const std::uint32_t* k = first; k != last; ++k) {
-      const int b = bin_of(*k, a);
+      const int b = bin_of(*k);
       ++counts[b];
       bins[b].extend(box_of(*k));
     }
@@ -65,10 +68,10 @@ SahSplit cheapest_sah_split(const std::uint32_t* first, const std::uint32_t* las
 }
 
 // Moves the items left of `split` before the others; returns where the right side begins.
-template <class BinOf>
-std::uint32_t* partition_at(std::uint32_t* first, std::uint32_t* last, SahSplit split, BinOf bin_of) {
-  return std::partition(first, last,
-                        [&](std::uint32_t item) { return bin_of(item, split.axis) <= split.last_left_bin; });
+template <class BinnerFor>
+std::uint32_t* partition_at(std::uint32_t* first, std::uint32_t* last, SahSplit split, BinnerFor binner_for) {
+  const auto bin_of = binner_for(split.axis);
+  return std::partition(first, last, [&](std::uint32_t item) { return bin_of(item) <= split.last_left_bin; });
 }
 
 }  // namespace povtrace::render

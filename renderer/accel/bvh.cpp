@@ -166,17 +166,16 @@ std::uint32_t Accelerator::build_node(std::uint32_t begin, std::uint32_t end, in
 
   if (extent[axis] > 0 && depth < sah_depth_limit) {
     // Binned SAH on every axis with a non-degenerate centroid extent.
-    double scale[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a)
-      if (extent[a] > 0) scale[a] = sah_bin_count / extent[a];
-    const auto bin_of = [&](std::uint32_t i, int a) {
-      return std::clamp(static_cast<int>((centroids[i][a] - centroid_bounds.lo[a]) * scale[a]), 0, sah_bin_count - 1);
+    const auto binner_for = [&centroids, &centroid_bounds, &extent](int a) {
+      return [&centroids, a, lo = centroid_bounds.lo[a], scale = sah_bin_count / extent[a]](std::uint32_t i) {
+        return std::clamp(static_cast<int>((centroids[i][a] - lo) * scale), 0, sah_bin_count - 1);
+      };
     };
     const SahSplit split = cheapest_sah_split<Bounds>(
-        order_.data() + begin, order_.data() + end, [&](int a) { return extent[a] > 0; }, bin_of,
+        order_.data() + begin, order_.data() + end, [&](int a) { return extent[a] > 0; }, binner_for,
         [&](std::uint32_t i) -> const Bounds& { return bounds[i]; });
     if (split.axis >= 0) {
-      mid = static_cast<std::uint32_t>(partition_at(order_.data() + begin, order_.data() + end, split, bin_of) -
+      mid = static_cast<std::uint32_t>(partition_at(order_.data() + begin, order_.data() + end, split, binner_for) -
                                        order_.data());
       axis = split.axis;
       split_done = mid > begin && mid < end;
