@@ -26,6 +26,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/box.hpp"
+#include "renderer/shapes/uv_helpers.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -134,6 +135,34 @@ Primitive BoxShape::build(const Box& box, const Matrix& world_from_object) {
   p.a = box.corner1;
   p.b = box.corner2;
   return p;
+}
+
+// uv for uv_mapping as POV-Ray's Box::UVCoord (boxes.cpp): the point normalised to the box ([0, 1] per axis); each
+// face gets its own region of a 4 × 3 cube layout (−x: u = z/4, v = 1/3 + y/3; +x: u = 3/4 − z/4; −y: u = 1/4 + x/4,
+// v = z/3; +y: v = 1 − z/3; −z: u = 1 − x/4; +z: u = 1/4 + x/4; the four side faces v = 1/3 + y/3).
+// The face the point lies on, as box_normal picks it: the nearest of the six planes (axis, and the high side).
+std::array<double, 2> BoxShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  using uv_helpers::object_point;
+  const Primitive& p = *hit.leaf;
+  const Vec3 q = object_point(p, world_point);
+  int axis = 0;
+  bool high = false;
+  double best = std::abs(q.x - p.a.x);
+  for (int k = 0; k < 3; ++k) {
+    if (const double d = std::abs(q[k] - p.a[k]); d < best) { best = d; axis = k; high = false; }
+    if (const double d = std::abs(q[k] - p.b[k]); d < best) { best = d; axis = k; high = true; }
+  }
+  const Vec3 diff = p.b - p.a;
+  const Vec3 n{(q.x - p.a.x) / diff.x, (q.y - p.a.y) / diff.y, (q.z - p.a.z) / diff.z};
+  const double side_v = 1.0 / 3.0 + n.y / 3.0;
+  switch (axis * 2 + (high ? 1 : 0)) {
+    case 0: return {n.z / 4.0, side_v};
+    case 1: return {3.0 / 4.0 - n.z / 4.0, side_v};
+    case 2: return {1.0 / 4.0 + n.x / 4.0, n.z / 3.0};
+    case 3: return {1.0 / 4.0 + n.x / 4.0, 3.0 / 3.0 - n.z / 3.0};
+    case 4: return {1.0 - n.x / 4.0, side_v};
+    default: return {1.0 / 4.0 + n.x / 4.0, side_v};
+  }
 }
 
 }  // namespace povtrace::render::shapes

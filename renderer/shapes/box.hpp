@@ -18,7 +18,7 @@ struct BoxShape {
   static Vec3 normal(const Primitive& p, Vec3 world_point);
   static bool inside(const Primitive& p, Vec3 world_point);
   static Bounds object_bounds(const Primitive& p);
-  static std::array<double, 2> uv(const SurfaceHit& hit, Vec3 world_point);   // shapes/uv_coordinates.cpp
+  static std::array<double, 2> uv(const SurfaceHit& hit, Vec3 world_point);
   static Vec3 face_normal(const Primitive& p, std::uint32_t side);   // POV-Ray's Side1/Side2
   static Vec3 hit_normal(const SurfaceHit& hit, Vec3) { return face_normal(*hit.leaf, hit.element); }
 };

@@ -17,12 +17,14 @@
 //   y(w) = Py for w in [0, 1] with x(w) ≥ the point's distance from the axis; an odd count is inside.
 // - Normal: (y'(w)·Px, −x'(w)·r, y'(w)·Pz) with r the distance from the axis, or (0, 1, 0) on the axis (r² ≤ 1e-10).
 // - Bounds: x in [−X, X], z likewise, y in the profile's heights, X the largest x.
+#include <algorithm>
 #include <cmath>
 
 #include "renderer/shapes/many_roots.hpp"
 #include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
 #include "renderer/shapes/lathe.hpp"
+#include "renderer/shapes/uv_helpers.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -152,6 +154,16 @@ Bounds LatheShape::object_bounds(const Primitive& p) {
   const LatheData& d = data_of(p);
   if (d.segments.empty()) return {};
   return Bounds{{-d.radius2, d.height1, -d.radius2}, {d.radius2, d.height2, d.radius2}};
+}
+
+// uv for uv_mapping as POV-Ray's Lathe::UVCoord (lathe.cpp): u around y as the sphere's, v the segment index plus
+// the segment parameter w, over the number of segments (at most 1).
+std::array<double, 2> LatheShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  using uv_helpers::object_point;
+  using uv_helpers::turn_around_y;
+  const auto& d = static_cast<const LatheData&>(*hit.leaf->data);
+  const double v = (hit.u + double(hit.element)) / double(d.segments.size());
+  return {turn_around_y(object_point(*hit.leaf, world_point)), std::min(v, 1.0)};
 }
 
 }  // namespace povtrace::render::shapes

@@ -20,7 +20,7 @@ struct LatheShape {
   static Vec3 normal(const Primitive& p, Vec3 world_point);
   static bool inside(const Primitive& p, Vec3 world_point);
   static Bounds object_bounds(const Primitive& p);
-  static std::array<double, 2> uv(const SurfaceHit& hit, Vec3 world_point);   // shapes/uv_coordinates.cpp
+  static std::array<double, 2> uv(const SurfaceHit& hit, Vec3 world_point);
   static Primitive build(const Lathe& description, const Matrix& world_from_object) {
     return make_lathe(description, world_from_object);
   }

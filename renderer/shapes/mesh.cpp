@@ -191,6 +191,21 @@ Primitive MeshShape::build(const Mesh& mesh, const Matrix& world_from_object, co
   return p;
 }
 
+// uv for uv_mapping as POV-Ray's Mesh::UVCoord (mesh.cpp): the triangle's uv_vectors weighted by the point's
+// barycentric coordinates (<0, 0> without uv_vectors).
+std::array<double, 2> MeshShape::uv(const SurfaceHit& hit, Vec3) {
+  const MeshData& data = *static_cast<const MeshShapeData&>(*hit.leaf->data).data;
+  if (data.face_uvs.empty()) return {0.0, 0.0};
+  const std::uint32_t* uv = &data.face_uvs[3 * std::size_t(hit.element)];
+  const double w[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
+  std::array<double, 2> out{0.0, 0.0};
+  for (int k = 0; k < 3; ++k) {
+    out[0] += w[k] * data.uvs[2 * std::size_t(uv[k])];
+    out[1] += w[k] * data.uvs[2 * std::size_t(uv[k]) + 1];
+  }
+  return out;
+}
+
 }  // namespace povtrace::render::shapes
 
 namespace povtrace::render {

@@ -26,6 +26,7 @@
 #include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/sweep.hpp"
 #include "renderer/shapes/sor.hpp"
+#include "renderer/shapes/uv_helpers.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -133,6 +134,22 @@ bool SorShape::inside(const Primitive& p, Vec3 world_point) {
 Bounds SorShape::object_bounds(const Primitive& p) {
   const SorData& d = data_of(p);
   return Bounds{{-d.radius2, d.height1, -d.radius2}, {d.radius2, d.height2, d.radius2}};
+}
+
+// A sor: u around y; v the height within the segment's ring, over the number of segments; on the base disc it runs
+// from −1 at the axis to 0 at the rim, on the cap from 2 to 1 (POV-Ray's Sor::UVCoord).
+std::array<double, 2> SorShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  using uv_helpers::object_point;
+  using uv_helpers::turn_around_y;
+  const auto& d = static_cast<const SorData&>(*hit.leaf->data);
+  const Vec3 q = object_point(*hit.leaf, world_point);
+  const double u = turn_around_y(q);
+  const double r = std::sqrt(q.x * q.x + q.z * q.z);
+  if (hit.element == base_element) return {u, r / std::sqrt(d.base_radius2) - 1.0};
+  if (hit.element == cap_element) return {u, 2.0 - r / std::sqrt(d.cap_radius2)};
+  const Ring& ring = d.rings[hit.element];
+  const double per_segment = 1.0 / double(d.segments.size());
+  return {u, (q.y - ring.h1) / (ring.h2 - ring.h1) * per_segment + double(hit.element) * per_segment};
 }
 
 }  // namespace povtrace::render::shapes

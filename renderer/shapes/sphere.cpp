@@ -21,6 +21,7 @@
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/sphere.hpp"
+#include "renderer/shapes/uv_helpers.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -94,6 +95,21 @@ Primitive SphereShape::build(const Sphere& s, const Matrix& world_from_object) {
   p.a = s.centre;
   p.radius = s.radius;
   return p;
+}
+
+// uv for uv_mapping as POV-Ray's Sphere::UVCoord (spheres.cpp): in the sphere's own space (every transform
+// undone), u the angle from +x towards +z over 2π, v the latitude 0.5 + asin(y)/π; at the poles (x² + z² ≤ 1e-10)
+// u is 0.
+std::array<double, 2> SphereShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  using uv_helpers::object_point;
+  using uv_helpers::turn_around_y;
+  const Primitive& p = *hit.leaf;
+  Vec3 d = object_point(p, world_point) - p.a;
+  const double len = length(d);
+  if (len == 0.0) return {0.0, 0.0};
+  d = d / len;
+  const double v = 0.5 + std::asin(d.y) / M_PI;
+  return {turn_around_y(d), v};
 }
 
 }  // namespace povtrace::render::shapes

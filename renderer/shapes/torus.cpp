@@ -28,6 +28,7 @@
 #include "renderer/shapes/insert_sorted.hpp"
 #include "runtime/polynomial_roots.hpp"
 #include "renderer/shapes/torus.hpp"
+#include "renderer/shapes/uv_helpers.hpp"
 
 namespace povtrace::render::shapes {
 
@@ -126,6 +127,19 @@ bool TorusShape::inside(const Primitive& p, Vec3 world_point) {
 Bounds TorusShape::object_bounds(const Primitive& p) {
   const double outer = p.a.x + p.a.y, r = p.a.y;
   return Bounds{Vec3{-outer, -r, -outer}, Vec3{outer, r, outer}};
+}
+
+// uv for uv_mapping as POV-Ray's Torus::CalcUV (torus.cpp): u = 1 − (atan2(z, x) + π)/2π around y,
+// v = (atan2(y, r − R) + π)/2π around the tube.
+std::array<double, 2> TorusShape::uv(const SurfaceHit& hit, Vec3 world_point) {
+  using uv_helpers::object_point;
+  using uv_helpers::kTwoPi;
+  const Primitive& p = *hit.leaf;
+  const Vec3 q = object_point(p, world_point);
+  const double u = 1.0 - (std::atan2(q.z, q.x) + M_PI) / kTwoPi;
+  const double r = std::sqrt(q.x * q.x + q.z * q.z) - p.a.x;   // p.a.x: the major radius
+  const double v = (std::atan2(q.y, r) + M_PI) / kTwoPi;
+  return {u, v};
 }
 
 }  // namespace povtrace::render::shapes
