@@ -1,0 +1,27 @@
+# Issue 17's layering rule, checked on the sources: a library includes only what it links.
+#   scene/    nothing of the others        runtime/  scene/ only
+#   parser/   scene/ and runtime/          renderer/ scene/ and runtime/, never parser/
+# Run as `cmake -DROOT=<source dir> -P check_includes.cmake`; prints every offending line and fails.
+set(forbidden_scene "parser/|renderer/|runtime/|app/")
+set(forbidden_runtime "parser/|renderer/|app/")
+set(forbidden_parser "renderer/|app/")
+set(forbidden_renderer "parser/|app/")
+set(offences "")
+foreach(lib scene runtime parser renderer)
+  file(GLOB_RECURSE sources "${ROOT}/${lib}/*.hpp" "${ROOT}/${lib}/*.cpp")
+  list(LENGTH sources count)
+  if(count EQUAL 0)
+    message(FATAL_ERROR "no sources found under ${ROOT}/${lib}: is ROOT the source directory?")
+  endif()
+  foreach(source ${sources})
+    file(STRINGS "${source}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"(${forbidden_${lib}})")
+    foreach(line ${lines})
+      file(RELATIVE_PATH rel "${ROOT}" "${source}")
+      string(APPEND offences "  ${rel}: ${line}\n")
+    endforeach()
+  endforeach()
+endforeach()
+if(offences)
+  message(FATAL_ERROR "includes across the layering (docs/architecture.md):\n${offences}")
+endif()
+message(STATUS "layering of includes holds")
