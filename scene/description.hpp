@@ -85,6 +85,7 @@ struct ImageMap {
 // Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
 namespace sdl {
 struct FunctionValue;   // a compiled `function { … }` (function_value.hpp; evaluated by sdl::evaluate_function)
+struct ObjectNotes;     // the parser's notes on an object it is building (parser/extents/object_notes.hpp)
 }
 
 enum class PatternKind {
@@ -468,19 +469,10 @@ struct Object {
   // but the bounding box they gave the object stays, and rays that miss that box miss the object (see
   // renderer/csg_build.cpp).
   std::vector<Object> removed_bounds;
-  // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
-  // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
-  // made with the object, then transformed, clipped and bounded as POV-Ray does, for min_extent()/max_extent().
-  // Unset for the other shapes, whose box follows from the shape and world_from_object (object_queries.cpp), and
-  // for a CSG whose box needs data only the renderer reads (a height field's image) when the parser has none.
-  std::optional<ExtentBox> carried_extent;
-  // Why carried_extent could not be made (then unset for good: later boxes hang on it).
-  ExtentGap extent_gap = ExtentGap::none;
-  // A transform reached the object since its modifiers last ended: POV-Ray then holds the box its shape gives,
-  // without the narrowing by clip and bounding objects that the end of Parse_Object_Mods applies (a parent's or a
-  // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
-  // is remade from the shape read it.
-  bool box_skips_clips = false;
+  // What the parser keeps on the object while building it (parser/extents/object_notes.hpp: the state of POV-Ray's
+  // bounding box of the object), opaque here: the renderer never reads it. Shared by copies, and dropped when the
+  // object is placed, so always null in a SceneDescription returned by the parser.
+  std::shared_ptr<const sdl::ObjectNotes> parser_notes;
   // Made when the object is placed in the scene, for the objects the renderer culls by it: CSG (and the children of
   // a union without clip or bounding objects, which are placed one by one) and objects with clip, bounding or
   // removed bounding objects. Unset for other shapes, which the renderer bounds by their own bounds, for clip and

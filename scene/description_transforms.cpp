@@ -85,7 +85,8 @@ void apply_deferred_texture_transforms(Object& object) {
   object.deferred_texture_transform.reset();
 }
 
-void transform_object(Object& object, const Matrix& m, TransformKind kind) {
+void transform_object(Object& object, const Matrix& m, TransformKind kind, ObjectTransformObserver* observer) {
+  if (observer) observer->transforming(object, m, kind);
   if (!object.uv_mapping && object.texture) {
     if (texture_ignores_transforms(*object.texture)) {
       object.deferred_texture_transform =
@@ -95,20 +96,18 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
       transform_texture(object.texture, m);
     }
   }
-  if (object.carried_extent) object.carried_extent = object.carried_extent->transformed(m);
   if (auto* poly = std::get_if<Poly>(&object.shape); poly && !object.clipped_by.empty()) poly->box_from_first_clip = true;
   if (auto* plane = std::get_if<Plane>(&object.shape)) carry_plane_frame(*plane, object.world_from_object, kind, m);
-  for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
-  for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
-  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);
+  for (auto& clip : object.clipped_by) transform_object(clip, m, kind, observer);
+  for (auto& bound : object.bounded_by) transform_object(bound, m, kind, observer);
+  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind, observer);
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) transform_object(child, m, kind);
-    for (auto& light : csg->lights) transform_light(light, m);
+    for (auto& child : csg->children) transform_object(child, m, kind, observer);
+    for (auto& light : csg->lights) transform_light(light, m, observer);
     return;
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
-  object.box_skips_clips = true;
   if (auto* sphere = std::get_if<Sphere>(&object.shape)) carry_sphere_frame(*sphere, object.world_from_object, kind, m);
   if (auto* box = std::get_if<Box>(&object.shape)) {
     if (!box->rotated && (kind == TransformKind::translate || kind == TransformKind::scale)) {
@@ -120,12 +119,12 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
   object.world_from_object = object.world_from_object * m;
 }
 
-void transform_light(Light& light, const Matrix& m) {
+void transform_light(Light& light, const Matrix& m, ObjectTransformObserver* observer) {
   light.location = m.point(light.location);
   light.point_at = m.point(light.point_at);
   light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
   light.axis2 = m.vector(light.axis2);
-  for (Object& o : light.looks_like) transform_object(o, m);
+  for (Object& o : light.looks_like) transform_object(o, m, TransformKind::other, observer);
 }
 
 }  // namespace povtrace

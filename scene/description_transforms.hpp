@@ -25,12 +25,24 @@ void apply_deferred_texture_transforms(Object& object);
 // (POV-Ray's Box::Translate, Box::Scale).
 enum class TransformKind { translate, rotate, scale, other };
 
-// A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
-// UV_FLAG; deferred for a texture that ignores transforms —, clip and bounding objects), and for CSG every child and light inside (POV-Ray transforms a CSG by
-// transforming its children; the node keeps no matrix).
-void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
+// What a transform must also move that the description does not hold: the parser's notes on the objects it is
+// building (parser/objects/object_transform.hpp). Told of the object transformed and of every object the transform
+// reaches through it (clip and bounding objects, removed bounds, CSG children, looks_like objects of lights), each
+// before the transform changes it, so that it sees the object as it was (its matrix, a sphere not yet an ellipsoid).
+class ObjectTransformObserver {
+ public:
+  virtual ~ObjectTransformObserver() = default;
+  virtual void transforming(Object& object, const Matrix& m, TransformKind kind) = 0;
+};
 
-// A light's location, point_at and area axes (as directions), and its looks_like object.
-void transform_light(Light& light, const Matrix& m);
+// A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
+// UV_FLAG; deferred for a texture that ignores transforms —, clip and bounding objects), and for CSG every child and
+// light inside (POV-Ray transforms a CSG by transforming its children; the node keeps no matrix). `observer`, when
+// given, is told of each object moved.
+void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other,
+                      ObjectTransformObserver* observer = nullptr);
+
+// A light's location, point_at and area axes (as directions), and its looks_like object (`observer` as above).
+void transform_light(Light& light, const Matrix& m, ObjectTransformObserver* observer = nullptr);
 
 }  // namespace povtrace

@@ -7,7 +7,7 @@
 //   translations, rotations and uniform scales keeps a tight box around its moved centre; a plane's and a poly's
 //   box is the huge ±1e10 box (a poly's, once it has been transformed with clip objects, its first clip's box).
 // - CSG (and text, a union of glyphs), quadrics, blobs and meshes make their box once, then carry that box itself
-//   through every later transform (Object::carried_extent): rotations widen it step by step.
+//   through every later transform (ObjectNotes::carried_extent): rotations widen it step by step.
 // - A union's box encloses its children's (a light source inside has the huge box); an intersection's is the common
 //   part of its children's boxes, leaving out inverted children and height fields, taking a plane perpendicular to
 //   an axis as a half space, and recomputing its quadrics within the others' common box last. A box wider than 1e6
@@ -15,6 +15,7 @@
 // - At the end of every object's modifiers, the common box of its bounding objects, then of its clip objects
 //   (inverted ones left out), replaces the object's box when its volume is smaller.
 #include "parser/extents/object_extents.hpp"
+#include "parser/extents/object_notes.hpp"
 #include "parser/extents/placed_boxes.hpp"
 
 #include "runtime/quadric_extent.hpp"
@@ -370,20 +371,21 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
     current.linear = -1.0 * current.linear;
     current.constant = -current.constant;
   }
-  o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()),
-                                 &q.automatic_bounds);
+  const ExtentBox old = notes_of(o).carried_extent.value_or(initial_quadric_box());
+  edit_notes(o).carried_extent = quadric_box(current, range.lo, range.hi, old, &q.automatic_bounds);
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
-  if (o.carried_extent) return *o.carried_extent;
-  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  const ObjectNotes& notes = notes_of(o);
+  if (notes.carried_extent) return *notes.carried_extent;
+  if (notes.extent_gap != ExtentGap::none) throw ExtentUnavailable(notes.extent_gap);
   if (std::holds_alternative<Csg>(o.shape)) {   // a CSG built in code, never made by the parser
     Object copy = o;
     return csg_box(copy);
   }
   if (const auto* q = std::get_if<Quadric>(&o.shape)) return parsed_quadric_box(*q).transformed(o.world_from_object);
   const ExtentBox b = shape_box(o);
-  return o.box_skips_clips ? b : narrowed(o, b);
+  return notes.box_skips_clips ? b : narrowed(o, b);
 }
 
 // The end of Parse_Object_Mods: the common box of the bounding objects, then of the clip objects, each left out
@@ -405,15 +407,16 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
 }
 
 // The box a later transform leaves to be carried, as POV-Ray's Transform handles each shape: a carried box itself;
-// a box remade from the shape, without the narrowing by clip objects a transform drops (Object::box_skips_clips),
+// a box remade from the shape, without the narrowing by clip objects a transform drops (ObjectNotes::box_skips_clips),
 // where a sphere that is still a sphere becomes an ellipsoid holding its moved centre and radius (Sphere::Transform);
 // a clipped poly's first clip's (Poly::Compute_BBox). Unset: the huge box whatever the transform. A uniform scaling
 // by a power of two carries this box exactly as the remade one (every product scales exactly), except a triangle's
 // EPSILON margin, which POV-Ray adds after the transform (1e-10 in a float box: below a float's precision but at
 // coordinates within 1e-3 of zero).
 std::optional<ExtentBox> ObjectExtents::moved_box(const Object& o) const {
-  if (o.carried_extent) return *o.carried_extent;
-  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  const ObjectNotes& notes = notes_of(o);
+  if (notes.carried_extent) return *notes.carried_extent;
+  if (notes.extent_gap != ExtentGap::none) throw ExtentUnavailable(notes.extent_gap);
   if (std::holds_alternative<Plane>(o.shape)) return std::nullopt;
   if (std::holds_alternative<Poly>(o.shape)) {
     if (o.clipped_by.empty()) return std::nullopt;
@@ -452,14 +455,24 @@ void set_placed_boxes(Object& o, const ObjectExtents& extents) {
     for (Object& child : csg->children) set_placed_boxes(child, extents);
 }
 
+namespace {
+// The box is unset for good: later boxes hang on it (ObjectNotes::extent_gap).
+void record_gap(Object& o, ExtentGap gap) {
+  ObjectNotes& notes = edit_notes(o);
+  notes.carried_extent.reset();
+  notes.extent_gap = gap;
+}
+}  // namespace
+
 void ObjectExtents::made(Object& o) const {
   try {
-    if (std::holds_alternative<Csg>(o.shape)) o.carried_extent = csg_box(o);
-    else if (auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q, &q->automatic_bounds);
-    else o.carried_extent = shape_box(o);
+    ExtentBox b;
+    if (std::holds_alternative<Csg>(o.shape)) b = csg_box(o);
+    else if (auto* q = std::get_if<Quadric>(&o.shape)) b = parsed_quadric_box(*q, &q->automatic_bounds);
+    else b = shape_box(o);
+    edit_notes(o).carried_extent = b;
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 
@@ -467,19 +480,19 @@ void ObjectExtents::quadric_clipped(Object& o) const {
   try {
     recompute_quadric(o, MinMax::everything().lo, MinMax::everything().hi);
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 
 void ObjectExtents::modifiers_ended(Object& o) const {
-  o.box_skips_clips = false;
-  if (!o.carried_extent || (o.clipped_by.empty() && o.bounded_by.empty())) return;
+  if (notes_of(o).box_skips_clips) edit_notes(o).box_skips_clips = false;   // no notes made for nothing
+  const std::optional<ExtentBox> carried = notes_of(o).carried_extent;
+  if (!carried || (o.clipped_by.empty() && o.bounded_by.empty())) return;
   try {
-    o.carried_extent = narrowed(o, *o.carried_extent);
+    const ExtentBox b = narrowed(o, *carried);
+    edit_notes(o).carried_extent = b;
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_transform.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -20,9 +21,10 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
-// A transform moves the object and what is attached to it (scene/description_transforms.cpp).
+// A transform moves the object and what is attached to it (scene/description_transforms.cpp), and the parser's notes
+// on them (object_transform.cpp).
 void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  transform_object(object, m, kind);
+  transform_noted(object, m, kind);
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {

@@ -1,0 +1,49 @@
+// What the parser keeps on an object while it is being built and may still be moved, queried (min_extent,
+// max_extent) or edited, and which the renderer never reads: the state of POV-Ray's bounding box of the object as
+// its parser holds it. Hung on the object as Object::parser_notes (opaque to scene/ and the renderer), shared by
+// copies of the object until one of them changes (edit_notes), and dropped when the object is placed in the scene
+// (clear_notes): a SceneDescription returned by the parser holds none.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "scene/description.hpp"
+
+namespace povtrace::sdl {
+
+// What keeps the parser from making a box POV-Ray would have: named in the refusal of min_extent()/max_extent().
+enum class ExtentGap : std::uint8_t {
+  none,
+  height_field_samples,    // a height field's samples, which only the renderer reads
+};
+const char* extent_gap_name(ExtentGap gap);
+
+struct ObjectNotes {
+  // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
+  // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
+  // made with the object, then transformed, clipped and bounded as POV-Ray does, for min_extent()/max_extent().
+  // Unset for the other shapes, whose box follows from the shape and world_from_object (object_queries.cpp), and
+  // for a CSG whose box needs data only the renderer reads (a height field's image) when the parser has none.
+  std::optional<ExtentBox> carried_extent;
+  // Why carried_extent could not be made (then unset for good: later boxes hang on it).
+  ExtentGap extent_gap = ExtentGap::none;
+  // A transform reached the object since its modifiers last ended: POV-Ray then holds the box its shape gives,
+  // without the narrowing by clip and bounding objects that the end of Parse_Object_Mods applies (a parent's or a
+  // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
+  // is remade from the shape read it.
+  bool box_skips_clips = false;
+};
+
+// The object's notes; an object without any reads as the defaults (nothing carried, no gap, nothing skipped).
+const ObjectNotes& notes_of(const Object& o);
+
+// The object's own notes to change: made when it has none, copied first when copies of the object share them (so
+// that changing one copy's notes leaves the others' alone).
+ObjectNotes& edit_notes(Object& o);
+
+// Drops the notes of the object and of every object inside it (clip and bounding objects, removed bounds, CSG
+// children, the looks_like objects of lights inside): called when the object is placed, edited no more.
+void clear_notes(Object& o);
+
+}  // namespace povtrace::sdl
