@@ -294,32 +294,15 @@ struct Interior {
 // `ellipsoid` is POV-Ray's Do_Ellipsoid (shape/spheres.cpp Sphere::Scale, Sphere::Transform): set once a
 // non-uniform scale, a matrix or a transform block reaches the sphere. Until then POV-Ray moves the centre and
 // scales the radius itself, so its tolerances apply in world units (what --povray-tolerances reproduces).
-// `ellipsoid_frame`: the centre and radius POV-Ray held when the sphere became an ellipsoid and the transforms
-// since, from which its bounding box is made (Sphere::Compute_BBox); shared by copies.
-struct SphereEllipsoidFrame {
-  Vec3 centre;
-  double radius = 1;
-  Matrix since;
-};
 struct Sphere {
   Vec3 centre;
   double radius = 1;
   bool ellipsoid = false;
-  std::shared_ptr<const SphereEllipsoidFrame> ellipsoid_frame;
 };
-// Normal as written (unit-normalised by the parser). `matrix_frame`: set once a matrix or transform block reaches the
-// plane, which POV-Ray then keeps as a transform instead of moving its normal and distance (Plane::Transform): the
-// world unit normal and distance the plane had then, and the transforms since (for its bounds in an intersection).
-// Shared by copies.
-struct PlaneMatrixFrame {
-  Vec3 normal;
-  double distance = 0;
-  Matrix since;
-};
+// Normal as written (unit-normalised by the parser).
 struct Plane {
   Vec3 normal{0, 1, 0};
   double distance = 0;
-  std::shared_ptr<const PlaneMatrixFrame> matrix_frame;
 };
 // Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
 // and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a
@@ -356,15 +339,10 @@ struct Poly {
   int order = 4;
   std::shared_ptr<const std::vector<double>> coefficients;
   bool sturm = false;
-  // POV-Ray's Poly::Compute_BBox, run when the poly is made and at each transform, takes the first clip object's
-  // box (else the huge box): set once a transform has met a clipped poly.
-  bool box_from_first_clip = false;
 };
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
-// `automatic_bounds`: POV-Ray's Automatic_Bounds, set once its box computation used the box it found (every quadric
-// without a mixed term, when parsed): a placed quadric then loses its bounded_by like most shapes.
-struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; bool automatic_bounds = false; };
+struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
 
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
 struct Superellipsoid { double e = 1, n = 1; };

@@ -25,6 +25,10 @@ void apply_deferred_texture_transforms(Object& object);
 // (POV-Ray's Box::Translate, Box::Scale).
 enum class TransformKind { translate, rotate, scale, other };
 
+// Sphere::Translate, Sphere::Rotate and a uniform Sphere::Scale keep a sphere a sphere; any other transform makes it
+// POV-Ray's ellipsoid (Sphere::ellipsoid), for good.
+bool transform_keeps_sphere(TransformKind kind, const Matrix& m);
+
 // What a transform must also move that the description does not hold: the parser's notes on the objects it is
 // building (parser/objects/object_transform.hpp). Told of the object transformed and of every object the transform
 // reaches through it (clip and bounding objects, removed bounds, CSG children, looks_like objects of lights), each

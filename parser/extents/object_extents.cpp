@@ -154,7 +154,7 @@ ExtentBox mesh_box(const MeshData& data) {
 void narrow_by_plane(MinMax& m, const Plane& plane, const Object& o) {
   const double side = o.inverse ? -1.0 : 1.0;
   Vec3 lo, hi;
-  if (const auto& frame = plane.matrix_frame)
+  if (const auto& frame = notes_of(o).matrix_frame)
     plane_min_max_with_trans(side * frame->normal, side * frame->distance, frame->since, lo, hi);
   else
     plane_min_max(side * plane.normal, side * plane.distance, o.world_from_object, lo, hi);
@@ -238,8 +238,8 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     // by the transforms since.
     ExtentBox operator()(const Sphere& s) const {
       auto cube = [](Vec3 c, double r) { return ExtentBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r}); };
-      if (s.ellipsoid && s.ellipsoid_frame)
-        return cube(s.ellipsoid_frame->centre, s.ellipsoid_frame->radius).transformed(s.ellipsoid_frame->since);
+      if (const auto& frame = notes_of(o).ellipsoid_frame; s.ellipsoid && frame)
+        return cube(frame->centre, frame->radius).transformed(frame->since);
       if (const double k = similarity_scale(m); k > 0 && !s.ellipsoid) return cube(m.point(s.centre), s.radius * k);
       return cube(s.centre, s.radius).transformed(m);   // an ellipsoid built in code, all in one transform
     }
@@ -286,8 +286,8 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
       return ExtentBox::make({-r2, -r1, -r2}, {2.0 * r2, 2.0 * r1, 2.0 * r2}).transformed(m);
     }
     // Poly::Compute_BBox: the huge box, or the first clip object's box once a transform has run it with clips.
-    ExtentBox operator()(const Poly& p) const {
-      if (p.box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
+    ExtentBox operator()(const Poly&) const {
+      if (notes_of(o).box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
       return ExtentBox::huge();
     }
     ExtentBox operator()(const Quadric&) const { throw std::logic_error("a quadric's box is carried"); }
@@ -363,7 +363,7 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
   // The coefficients POV-Ray holds now: the written ones carried by the composed transform (POV-Ray transforms
   // them at each transform; the two agree to rounding).
   // Quadric::Invert negates every coefficient, which the box computation sees when x² has none to make positive.
-  Quadric& q = std::get<Quadric>(o.shape);
+  const Quadric& q = std::get<Quadric>(o.shape);
   Quadric current = transformed_quadric(q, o.world_from_object);
   if (o.inverse) {
     current.square = -1.0 * current.square;
@@ -372,7 +372,11 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
     current.constant = -current.constant;
   }
   const ExtentBox old = notes_of(o).carried_extent.value_or(initial_quadric_box());
-  edit_notes(o).carried_extent = quadric_box(current, range.lo, range.hi, old, &q.automatic_bounds);
+  bool automatic_bounds = notes_of(o).automatic_bounds;
+  const ExtentBox b = quadric_box(current, range.lo, range.hi, old, &automatic_bounds);
+  ObjectNotes& notes = edit_notes(o);
+  notes.carried_extent = b;
+  notes.automatic_bounds = automatic_bounds;
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
@@ -467,10 +471,13 @@ void record_gap(Object& o, ExtentGap gap) {
 void ObjectExtents::made(Object& o) const {
   try {
     ExtentBox b;
+    bool automatic_bounds = notes_of(o).automatic_bounds;
     if (std::holds_alternative<Csg>(o.shape)) b = csg_box(o);
-    else if (auto* q = std::get_if<Quadric>(&o.shape)) b = parsed_quadric_box(*q, &q->automatic_bounds);
+    else if (const auto* q = std::get_if<Quadric>(&o.shape)) b = parsed_quadric_box(*q, &automatic_bounds);
     else b = shape_box(o);
-    edit_notes(o).carried_extent = b;
+    ObjectNotes& notes = edit_notes(o);
+    notes.carried_extent = b;
+    notes.automatic_bounds = automatic_bounds;
   } catch (const ExtentUnavailable& e) {
     record_gap(o, e.gap);
   }

@@ -19,6 +19,22 @@ enum class ExtentGap : std::uint8_t {
 };
 const char* extent_gap_name(ExtentGap gap);
 
+// A sphere POV-Ray has made an ellipsoid (Sphere::Transform, Do_Ellipsoid): the centre and radius it held when the
+// sphere became one, and the transforms since, from which its bounding box is made (Sphere::Compute_BBox).
+struct SphereEllipsoidFrame {
+  Vec3 centre;
+  double radius = 1;
+  Matrix since;
+};
+// A plane a matrix or transform block has reached, which POV-Ray then keeps as a transform instead of moving its
+// normal and distance (Plane::Transform): the world unit normal and distance the plane had then, and the transforms
+// since (for its bounds in an intersection or as a quadric's clip).
+struct PlaneMatrixFrame {
+  Vec3 normal;
+  double distance = 0;
+  Matrix since;
+};
+
 struct ObjectNotes {
   // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
   // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
@@ -33,6 +49,15 @@ struct ObjectNotes {
   // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
   // is remade from the shape read it.
   bool box_skips_clips = false;
+  // Held by value: copies of the object share the notes themselves.
+  std::optional<SphereEllipsoidFrame> ellipsoid_frame;   // a sphere, once POV-Ray made it an ellipsoid
+  std::optional<PlaneMatrixFrame> matrix_frame;          // a plane, once a matrix or transform block reached it
+  // A poly: POV-Ray's Poly::Compute_BBox, run when the poly is made and at each transform, takes the first clip
+  // object's box (else the huge box): set once a transform has met a clipped poly.
+  bool box_from_first_clip = false;
+  // A quadric: POV-Ray's Automatic_Bounds, set once its box computation used the box it found (every quadric without
+  // a mixed term, when parsed): a placed quadric then loses its bounded_by like most shapes.
+  bool automatic_bounds = false;
 };
 
 // The object's notes; an object without any reads as the defaults (nothing carried, no gap, nothing skipped).

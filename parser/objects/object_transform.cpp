@@ -5,11 +5,43 @@
 namespace povtrace::sdl {
 
 namespace {
-// Told of each object before the transform moves it. Notes are only edited when they change, so that the copies of
-// a declared object keep sharing theirs and an object without notes gets none for nothing.
+// Sphere::Transform: the first transform that does not keep the sphere a sphere makes it an ellipsoid, holding the
+// centre and radius as moved so far (`so_far`: similarities only, translations, rotations, uniform scales); every
+// transform from then on composes into the ellipsoid's own transform.
+void carry_sphere_frame(Object& object, const Sphere& sphere, const Matrix& so_far, TransformKind kind,
+                        const Matrix& m) {
+  if (!sphere.ellipsoid) {
+    if (transform_keeps_sphere(kind, m)) return;
+    const double scale = length(Vec3{so_far.m[0][0], so_far.m[0][1], so_far.m[0][2]});
+    edit_notes(object).ellipsoid_frame = SphereEllipsoidFrame{so_far.point(sphere.centre), sphere.radius * scale, m};
+    return;
+  }
+  if (!notes_of(object).ellipsoid_frame) return;   // an ellipsoid built in code: its box comes from world_from_object
+  SphereEllipsoidFrame& frame = *edit_notes(object).ellipsoid_frame;
+  frame.since = frame.since * m;
+}
+
+// Plane::Transform: a matrix or transform block gives the plane a transform, starting from the normal and distance
+// it had (moved by translate, rotate and scale so far); every transform from then on composes into it.
+void carry_plane_frame(Object& object, const Plane& plane, const Matrix& so_far, TransformKind kind,
+                       const Matrix& m) {
+  if (!notes_of(object).matrix_frame) {
+    if (kind != TransformKind::other) return;
+    const Vec3 n = normalize(so_far.inverse().normal_from_inverse(plane.normal));
+    const double d = dot(n, so_far.point(plane.normal * plane.distance));
+    edit_notes(object).matrix_frame = PlaneMatrixFrame{n, d, m};
+    return;
+  }
+  PlaneMatrixFrame& frame = *edit_notes(object).matrix_frame;
+  frame.since = frame.since * m;
+}
+
+// Told of each object before the transform moves it (its matrix and shape as they were). Notes are only edited when
+// they change, so that the copies of a declared object keep sharing theirs and an object without notes gets none for
+// nothing.
 class NotesFollowTransforms final : public ObjectTransformObserver {
  public:
-  void transforming(Object& object, const Matrix& m, TransformKind) override {
+  void transforming(Object& object, const Matrix& m, TransformKind kind) override {
     // CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform: the box itself is carried.
     if (const auto& carried = notes_of(object).carried_extent) {
       const ExtentBox moved = carried->transformed(m);   // before edit_notes, which may replace what `carried` is in
@@ -19,6 +51,13 @@ class NotesFollowTransforms final : public ObjectTransformObserver {
     // has no box of its own to remake: its children are transformed).
     if (!std::holds_alternative<Csg>(object.shape) && !notes_of(object).box_skips_clips)
       edit_notes(object).box_skips_clips = true;
+    if (const auto* sphere = std::get_if<Sphere>(&object.shape))
+      carry_sphere_frame(object, *sphere, object.world_from_object, kind, m);
+    if (const auto* plane = std::get_if<Plane>(&object.shape))
+      carry_plane_frame(object, *plane, object.world_from_object, kind, m);
+    if (std::holds_alternative<Poly>(object.shape) && !object.clipped_by.empty() &&
+        !notes_of(object).box_from_first_clip)
+      edit_notes(object).box_from_first_clip = true;
   }
 };
 }  // namespace
