@@ -414,14 +414,9 @@ struct PlacedBox {
 struct Object {
   Shape shape;
   Matrix world_from_object;                 // composed object transforms in written order
-  std::shared_ptr<const Texture> texture;   // never null once the parser has placed the object
-  // The transforms not applied to `texture` because they cannot change how it renders (texture_ignores_transforms:
-  // plain layers of solid pigments, no normals), composed in written order. So copies of one declared object moved
-  // by `translate` share its texture instead of copying it each. Applied if the texture is edited later (an
-  // object-level pigment starts from the moved one, as POV-Ray's does); dropped when the object is placed, so
-  // always empty in a SceneDescription returned by the parser. One matrix, not a list: 100,000 moved copies made
-  // and kept a list each.
-  std::optional<Matrix> deferred_texture_transform;
+  // Never null once the parser has placed the object. A texture that no transform can change how it renders
+  // (texture_ignores_transforms) is not moved with the object, so copies of one declared object share it.
+  std::shared_ptr<const Texture> texture;
   std::optional<Interior> interior;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;

@@ -48,22 +48,12 @@ bool texture_ignores_transforms(const Texture& texture) {
   return true;
 }
 
-void apply_deferred_texture_transforms(Object& object) {
-  if (object.deferred_texture_transform) transform_texture(object.texture, *object.deferred_texture_transform);
-  object.deferred_texture_transform.reset();
-}
-
 void transform_object(Object& object, const Matrix& m, TransformKind kind, ObjectTransformObserver* observer) {
   if (observer) observer->transforming(object, m, kind);
-  if (!object.uv_mapping && object.texture) {
-    if (texture_ignores_transforms(*object.texture)) {
-      object.deferred_texture_transform =
-          object.deferred_texture_transform ? *object.deferred_texture_transform * m : m;
-    } else {
-      apply_deferred_texture_transforms(object);
-      transform_texture(object.texture, m);
-    }
-  }
+  // A texture that ignores transforms stays as it is: moving it would only copy it (for every moved copy of a
+  // declared object). The parser keeps those transforms in its notes in case the texture is edited later.
+  if (!object.uv_mapping && object.texture && !texture_ignores_transforms(*object.texture))
+    transform_texture(object.texture, m);
   for (auto& clip : object.clipped_by) transform_object(clip, m, kind, observer);
   for (auto& bound : object.bounded_by) transform_object(bound, m, kind, observer);
   for (auto& bound : object.removed_bounds) transform_object(bound, m, kind, observer);

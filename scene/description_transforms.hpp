@@ -17,10 +17,6 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
 // pattern space is ever read for them) and which have no normal.
 bool texture_ignores_transforms(const Texture& texture);
 
-// Applies the transforms deferred for the object's texture (Object::deferred_texture_transform, their composition
-// in written order), as they would have been applied when written; the texture is then the object's own copy.
-void apply_deferred_texture_transforms(Object& object);
-
 // How a transform was written: boxes fold translations and scalings into their corners until they are rotated
 // (POV-Ray's Box::Translate, Box::Scale).
 enum class TransformKind { translate, rotate, scale, other };
@@ -40,7 +36,7 @@ class ObjectTransformObserver {
 };
 
 // A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
-// UV_FLAG; deferred for a texture that ignores transforms —, clip and bounding objects), and for CSG every child and
+// UV_FLAG, or the texture ignores transforms —, clip and bounding objects), and for CSG every child and
 // light inside (POV-Ray transforms a CSG by transforming its children; the node keeps no matrix). `observer`, when
 // given, is told of each object moved.
 void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other,

@@ -36,6 +36,12 @@ struct PlaneMatrixFrame {
 };
 
 struct ObjectNotes {
+  // The transforms not applied to the object's texture because they cannot change how it renders
+  // (texture_ignores_transforms: plain layers of solid pigments, no normals), composed in written order. So copies
+  // of one declared object moved by `translate` share its texture instead of copying it each. Applied if the texture
+  // is edited later (an object-level pigment starts from the moved one, as POV-Ray's does); dropped when the object
+  // is placed. One matrix, not a list: 100,000 moved copies made and kept a list each.
+  std::optional<Matrix> deferred_texture_transform;
   // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
   // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
   // made with the object, then transformed, clipped and bounded as POV-Ray does, for min_extent()/max_extent().

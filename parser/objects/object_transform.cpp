@@ -42,6 +42,17 @@ void carry_plane_frame(Object& object, const Plane& plane, const Matrix& so_far,
 class NotesFollowTransforms final : public ObjectTransformObserver {
  public:
   void transforming(Object& object, const Matrix& m, TransformKind kind) override {
+    // The texture moves with the object (transform_object) unless it ignores transforms: those are kept here, and the
+    // ones kept before reach a texture that no longer ignores them (edited since) before this one does.
+    if (!object.uv_mapping && object.texture) {
+      if (texture_ignores_transforms(*object.texture)) {
+        const std::optional<Matrix>& kept = notes_of(object).deferred_texture_transform;
+        const Matrix composed = kept ? *kept * m : m;
+        edit_notes(object).deferred_texture_transform = composed;
+      } else {
+        apply_deferred_texture_transforms(object);
+      }
+    }
     // CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform: the box itself is carried.
     if (const auto& carried = notes_of(object).carried_extent) {
       const ExtentBox moved = carried->transformed(m);   // before edit_notes, which may replace what `carried` is in
@@ -70,6 +81,17 @@ void transform_noted(Object& object, const Matrix& m, TransformKind kind) {
 void transform_noted(Light& light, const Matrix& m) {
   NotesFollowTransforms notes;
   transform_light(light, m, &notes);
+}
+
+void apply_deferred_texture_transforms(Object& object) {
+  if (const std::optional<Matrix> kept = notes_of(object).deferred_texture_transform) {
+    transform_texture(object.texture, *kept);
+    edit_notes(object).deferred_texture_transform.reset();
+  }
+}
+
+void drop_deferred_texture_transforms(Object& object) {
+  if (notes_of(object).deferred_texture_transform) edit_notes(object).deferred_texture_transform.reset();
 }
 
 }  // namespace povtrace::sdl

@@ -10,4 +10,12 @@ namespace povtrace::sdl {
 void transform_noted(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
 void transform_noted(Light& light, const Matrix& m);
 
+// Applies the transforms deferred for the object's texture (ObjectNotes::deferred_texture_transform, their
+// composition in written order), as they would have been applied when written; the texture is then the object's own
+// copy.
+void apply_deferred_texture_transforms(Object& object);
+
+// Forgets them: the texture they were kept for is replaced, or the object is placed with a texture they cannot change.
+void drop_deferred_texture_transforms(Object& object);
+
 }  // namespace povtrace::sdl

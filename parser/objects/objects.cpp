@@ -146,7 +146,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   if (holder.texture) {
     object.texture = holder.texture;
-    object.deferred_texture_transform.reset();   // they belonged to the texture replaced
+    drop_deferred_texture_transforms(object);   // they belonged to the texture replaced
   }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);

@@ -6,6 +6,7 @@
 #include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
+#include "parser/objects/object_transform.hpp"
 
 namespace povtrace::sdl {
 
@@ -308,7 +309,7 @@ Unsupported first_unsupported(const Object& o) {
 // sources' looks_like objects are settled when the lights are added).
 void settle_deferred_texture_transforms(Object& o) {
   if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
-  o.deferred_texture_transform.reset();
+  drop_deferred_texture_transforms(o);
   if (auto* csg = std::get_if<Csg>(&o.shape))
     for (Object& child : csg->children) settle_deferred_texture_transforms(child);
   for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "parse_helpers.hpp"
+#include "parser/extents/object_notes.hpp"
 
 namespace povtrace::test {
 namespace {
@@ -550,19 +551,29 @@ TEST(Objects, ObjectIdentifierIsADeepCopy) {
 }
 
 // A solid-coloured texture renders the same however it is moved: copies moved by transforms share the declared
-// object's texture, yet a pigment edited after the transforms starts from the moved one, as when it is copied.
+// object's texture, yet a pigment edited after the transforms starts from the moved one, as when it is copied. The
+// transforms the parser kept for the shared texture are dropped by the time each object is placed.
 TEST(Objects, MovedCopiesOfASolidTexturedObjectShareItsTexture) {
-  const SceneDescription s = scene(
+  ParseOptions options;
+  options.message_sink = [](const std::string&) {};
+  int placed = 0;
+  options.placing = [&placed](const Object& o) {
+    ++placed;
+    EXPECT_FALSE(sdl::notes_of(o).deferred_texture_transform.has_value()) << "object " << placed;
+  };
+  const SceneDescription s = parse_scene_text(
+      "#version 3.7;\n"
       "#declare S = sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 0.5 } } }\n"
       "object { S translate x }\n"
       "object { S translate y rotate z*30 }\n"
       "object { S translate x scale 2 pigment { checker } }\n"
       "object { S translate x normal { bumps } pigment { checker } }\n"
       "object { S translate x texture { pigment { checker } } }\n"
-      "object { S translate x material { texture { pigment { checker } } } }\n");
+      "object { S translate x material { texture { pigment { checker } } } }\n",
+      "test.pov", options);
   ASSERT_EQ(s.objects.size(), 6u);
+  EXPECT_EQ(placed, 6);
   EXPECT_EQ(s.objects[0].texture, s.objects[1].texture);
-  for (const Object& o : s.objects) EXPECT_FALSE(o.deferred_texture_transform.has_value());
   expect_matrix_near(top_layer(s.objects[2]).pigment.world_from_pattern,
                      Matrix::translation({1, 0, 0}) * Matrix::scaling({2, 2, 2}));
   expect_matrix_near(top_layer(s.objects[3]).pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
