@@ -589,6 +589,7 @@ class Interpreter {
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);
   void post_process(Object& object);
+  void placed(Object& object);   // the last step before the object joins scene_.objects
 
   const ParseOptions& options_;
   std::vector<std::unique_ptr<SourceFile>> files_;

@@ -52,6 +52,10 @@ struct ParseOptions {
   // Set from elsewhere (povtrace's Ctrl-C handler) to stop the parse with a ParseError at the token it reached:
   // a runaway #while, which POV-Ray and povtrace otherwise run forever, must still stop on Ctrl-C.
   const std::atomic<bool>* cancel = nullptr;
+  // Called with each object as it joins the scene's objects, in their order, while it still holds the parser's notes
+  // (Object::parser_notes, parser/extents/object_notes.hpp), which the returned scene no longer does: tests read
+  // there the state of POV-Ray's box of the object, or what the parser left pending on it.
+  std::function<void(const Object&)> placing;
 };
 
 inline constexpr const char* kStandardIncludeDir = "/usr/share/povray-3.7/include";

@@ -85,6 +85,7 @@ struct ImageMap {
 // Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
 namespace sdl {
 struct FunctionValue;   // a compiled `function { … }` (function_value.hpp; evaluated by sdl::evaluate_function)
+struct ObjectNotes;     // the parser's notes on an object it is building (parser/extents/object_notes.hpp)
 }
 
 enum class PatternKind {
@@ -293,32 +294,15 @@ struct Interior {
 // `ellipsoid` is POV-Ray's Do_Ellipsoid (shape/spheres.cpp Sphere::Scale, Sphere::Transform): set once a
 // non-uniform scale, a matrix or a transform block reaches the sphere. Until then POV-Ray moves the centre and
 // scales the radius itself, so its tolerances apply in world units (what --povray-tolerances reproduces).
-// `ellipsoid_frame`: the centre and radius POV-Ray held when the sphere became an ellipsoid and the transforms
-// since, from which its bounding box is made (Sphere::Compute_BBox); shared by copies.
-struct SphereEllipsoidFrame {
-  Vec3 centre;
-  double radius = 1;
-  Matrix since;
-};
 struct Sphere {
   Vec3 centre;
   double radius = 1;
   bool ellipsoid = false;
-  std::shared_ptr<const SphereEllipsoidFrame> ellipsoid_frame;
 };
-// Normal as written (unit-normalised by the parser). `matrix_frame`: set once a matrix or transform block reaches the
-// plane, which POV-Ray then keeps as a transform instead of moving its normal and distance (Plane::Transform): the
-// world unit normal and distance the plane had then, and the transforms since (for its bounds in an intersection).
-// Shared by copies.
-struct PlaneMatrixFrame {
-  Vec3 normal;
-  double distance = 0;
-  Matrix since;
-};
+// Normal as written (unit-normalised by the parser).
 struct Plane {
   Vec3 normal{0, 1, 0};
   double distance = 0;
-  std::shared_ptr<const PlaneMatrixFrame> matrix_frame;
 };
 // Corners sorted per axis by the parser. As in POV-Ray (shape/boxes.cpp Box::Translate, Box::Scale), translations
 // and scalings move the corners themselves (re-sorted) until a rotation, matrix or transform block gives the box a
@@ -355,15 +339,10 @@ struct Poly {
   int order = 4;
   std::shared_ptr<const std::vector<double>> coefficients;
   bool sturm = false;
-  // POV-Ray's Poly::Compute_BBox, run when the poly is made and at each transform, takes the first clip object's
-  // box (else the huge box): set once a transform has met a clipped poly.
-  bool box_from_first_clip = false;
 };
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
-// `automatic_bounds`: POV-Ray's Automatic_Bounds, set once its box computation used the box it found (every quadric
-// without a mixed term, when parsed): a placed quadric then loses its bounded_by like most shapes.
-struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; bool automatic_bounds = false; };
+struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
 
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
 struct Superellipsoid { double e = 1, n = 1; };
@@ -435,14 +414,9 @@ struct PlacedBox {
 struct Object {
   Shape shape;
   Matrix world_from_object;                 // composed object transforms in written order
-  std::shared_ptr<const Texture> texture;   // never null once the parser has placed the object
-  // The transforms not applied to `texture` because they cannot change how it renders (texture_ignores_transforms:
-  // plain layers of solid pigments, no normals), composed in written order. So copies of one declared object moved
-  // by `translate` share its texture instead of copying it each. Applied if the texture is edited later (an
-  // object-level pigment starts from the moved one, as POV-Ray's does); dropped when the object is placed, so
-  // always empty in a SceneDescription returned by the parser. One matrix, not a list: 100,000 moved copies made
-  // and kept a list each.
-  std::optional<Matrix> deferred_texture_transform;
+  // Never null once the parser has placed the object. A texture that no transform can change how it renders
+  // (texture_ignores_transforms) is not moved with the object, so copies of one declared object share it.
+  std::shared_ptr<const Texture> texture;
   std::optional<Interior> interior;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
@@ -468,19 +442,10 @@ struct Object {
   // but the bounding box they gave the object stays, and rays that miss that box miss the object (see
   // renderer/csg_build.cpp).
   std::vector<Object> removed_bounds;
-  // The bounding box of the shapes whose box POV-Ray carries through each later transform (Recompute_BBox of the
-  // box itself — CSG::Transform, Quadric::Transform, Blob::Transform, Mesh::Transform; a text is a CSG union):
-  // made with the object, then transformed, clipped and bounded as POV-Ray does, for min_extent()/max_extent().
-  // Unset for the other shapes, whose box follows from the shape and world_from_object (object_queries.cpp), and
-  // for a CSG whose box needs data only the renderer reads (a height field's image) when the parser has none.
-  std::optional<ExtentBox> carried_extent;
-  // Why carried_extent could not be made (then unset for good: later boxes hang on it).
-  ExtentGap extent_gap = ExtentGap::none;
-  // A transform reached the object since its modifiers last ended: POV-Ray then holds the box its shape gives,
-  // without the narrowing by clip and bounding objects that the end of Parse_Object_Mods applies (a parent's or a
-  // clipped_by list's transforms; a height field's box, made after its own modifiers). Only the shapes whose box
-  // is remade from the shape read it.
-  bool box_skips_clips = false;
+  // What the parser keeps on the object while building it (parser/extents/object_notes.hpp: the state of POV-Ray's
+  // bounding box of the object), opaque here: the renderer never reads it. Shared by copies, and dropped when the
+  // object is placed, so always null in a SceneDescription returned by the parser.
+  std::shared_ptr<const sdl::ObjectNotes> parser_notes;
   // Made when the object is placed in the scene, for the objects the renderer culls by it: CSG (and the children of
   // a union without clip or bounding objects, which are placed one by one) and objects with clip, bounding or
   // removed bounding objects. Unset for other shapes, which the renderer bounds by their own bounds, for clip and

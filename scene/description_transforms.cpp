@@ -12,44 +12,12 @@ void fold_into_corners(Box& box, const Matrix& m) {
   box.corner2 = max(a, b);
 }
 
-// Sphere::Translate, Sphere::Rotate and a uniform Sphere::Scale keep a sphere a sphere; anything else makes it
-// POV-Ray's ellipsoid.
-bool keeps_sphere(TransformKind kind, const Matrix& m) {
+}  // namespace
+
+bool transform_keeps_sphere(TransformKind kind, const Matrix& m) {
   if (kind == TransformKind::translate || kind == TransformKind::rotate) return true;
   return kind == TransformKind::scale && m.m[0][0] == m.m[1][1] && m.m[0][0] == m.m[2][2];
 }
-// Sphere::Transform: the first transform that does not keep the sphere a sphere makes it an ellipsoid, holding the
-// centre and radius as moved so far (the transforms so far were similarities: translations, rotations, uniform
-// scales); every transform from then on composes into the ellipsoid's own transform.
-void carry_sphere_frame(Sphere& sphere, const Matrix& so_far, TransformKind kind, const Matrix& m) {
-  if (!sphere.ellipsoid) {
-    if (keeps_sphere(kind, m)) return;
-    sphere.ellipsoid = true;
-    const double scale = length(Vec3{so_far.m[0][0], so_far.m[0][1], so_far.m[0][2]});
-    sphere.ellipsoid_frame = std::make_shared<const SphereEllipsoidFrame>(
-        SphereEllipsoidFrame{so_far.point(sphere.centre), sphere.radius * scale, m});
-    return;
-  }
-  if (!sphere.ellipsoid_frame) return;   // an ellipsoid built in code: its box comes from world_from_object
-  SphereEllipsoidFrame frame = *sphere.ellipsoid_frame;
-  frame.since = frame.since * m;
-  sphere.ellipsoid_frame = std::make_shared<const SphereEllipsoidFrame>(frame);
-}
-// Plane::Transform: a matrix or transform block gives the plane a transform, starting from the normal and distance
-// it had (moved by translate, rotate and scale so far); every transform from then on composes into it.
-void carry_plane_frame(Plane& plane, const Matrix& so_far, TransformKind kind, const Matrix& m) {
-  if (!plane.matrix_frame) {
-    if (kind != TransformKind::other) return;
-    const Vec3 n = normalize(so_far.inverse().normal_from_inverse(plane.normal));
-    const double d = dot(n, so_far.point(plane.normal * plane.distance));
-    plane.matrix_frame = std::make_shared<const PlaneMatrixFrame>(PlaneMatrixFrame{n, d, m});
-    return;
-  }
-  PlaneMatrixFrame frame = *plane.matrix_frame;
-  frame.since = frame.since * m;
-  plane.matrix_frame = std::make_shared<const PlaneMatrixFrame>(frame);
-}
-}  // namespace
 
 std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m) {
   auto moved = std::make_shared<Texture>(texture);
@@ -80,36 +48,24 @@ bool texture_ignores_transforms(const Texture& texture) {
   return true;
 }
 
-void apply_deferred_texture_transforms(Object& object) {
-  if (object.deferred_texture_transform) transform_texture(object.texture, *object.deferred_texture_transform);
-  object.deferred_texture_transform.reset();
-}
-
-void transform_object(Object& object, const Matrix& m, TransformKind kind) {
-  if (!object.uv_mapping && object.texture) {
-    if (texture_ignores_transforms(*object.texture)) {
-      object.deferred_texture_transform =
-          object.deferred_texture_transform ? *object.deferred_texture_transform * m : m;
-    } else {
-      apply_deferred_texture_transforms(object);
-      transform_texture(object.texture, m);
-    }
-  }
-  if (object.carried_extent) object.carried_extent = object.carried_extent->transformed(m);
-  if (auto* poly = std::get_if<Poly>(&object.shape); poly && !object.clipped_by.empty()) poly->box_from_first_clip = true;
-  if (auto* plane = std::get_if<Plane>(&object.shape)) carry_plane_frame(*plane, object.world_from_object, kind, m);
-  for (auto& clip : object.clipped_by) transform_object(clip, m, kind);
-  for (auto& bound : object.bounded_by) transform_object(bound, m, kind);
-  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind);
+void transform_object(Object& object, const Matrix& m, TransformKind kind, ObjectTransformObserver* observer) {
+  if (observer) observer->transforming(object, m, kind);
+  // A texture that ignores transforms stays as it is: moving it would only copy it (for every moved copy of a
+  // declared object). The parser keeps those transforms in its notes in case the texture is edited later.
+  if (!object.uv_mapping && object.texture && !texture_ignores_transforms(*object.texture))
+    transform_texture(object.texture, m);
+  for (auto& clip : object.clipped_by) transform_object(clip, m, kind, observer);
+  for (auto& bound : object.bounded_by) transform_object(bound, m, kind, observer);
+  for (auto& bound : object.removed_bounds) transform_object(bound, m, kind, observer);
   if (auto* csg = std::get_if<Csg>(&object.shape)) {
-    for (auto& child : csg->children) transform_object(child, m, kind);
-    for (auto& light : csg->lights) transform_light(light, m);
+    for (auto& child : csg->children) transform_object(child, m, kind, observer);
+    for (auto& light : csg->lights) transform_light(light, m, observer);
     return;
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
-  object.box_skips_clips = true;
-  if (auto* sphere = std::get_if<Sphere>(&object.shape)) carry_sphere_frame(*sphere, object.world_from_object, kind, m);
+  if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !transform_keeps_sphere(kind, m))
+    sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {
     if (!box->rotated && (kind == TransformKind::translate || kind == TransformKind::scale)) {
       fold_into_corners(*box, m);
@@ -120,12 +76,12 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind) {
   object.world_from_object = object.world_from_object * m;
 }
 
-void transform_light(Light& light, const Matrix& m) {
+void transform_light(Light& light, const Matrix& m, ObjectTransformObserver* observer) {
   light.location = m.point(light.location);
   light.point_at = m.point(light.point_at);
   light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
   light.axis2 = m.vector(light.axis2);
-  for (Object& o : light.looks_like) transform_object(o, m);
+  for (Object& o : light.looks_like) transform_object(o, m, TransformKind::other, observer);
 }
 
 }  // namespace povtrace

@@ -17,20 +17,32 @@ void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m)
 // pattern space is ever read for them) and which have no normal.
 bool texture_ignores_transforms(const Texture& texture);
 
-// Applies the transforms deferred for the object's texture (Object::deferred_texture_transform, their composition
-// in written order), as they would have been applied when written; the texture is then the object's own copy.
-void apply_deferred_texture_transforms(Object& object);
-
 // How a transform was written: boxes fold translations and scalings into their corners until they are rotated
 // (POV-Ray's Box::Translate, Box::Scale).
 enum class TransformKind { translate, rotate, scale, other };
 
-// A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
-// UV_FLAG; deferred for a texture that ignores transforms —, clip and bounding objects), and for CSG every child and light inside (POV-Ray transforms a CSG by
-// transforming its children; the node keeps no matrix).
-void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
+// Sphere::Translate, Sphere::Rotate and a uniform Sphere::Scale keep a sphere a sphere; any other transform makes it
+// POV-Ray's ellipsoid (Sphere::ellipsoid), for good.
+bool transform_keeps_sphere(TransformKind kind, const Matrix& m);
 
-// A light's location, point_at and area axes (as directions), and its looks_like object.
-void transform_light(Light& light, const Matrix& m);
+// What a transform must also move that the description does not hold: the parser's notes on the objects it is
+// building (parser/objects/object_transform.hpp). Told of the object transformed and of every object the transform
+// reaches through it (clip and bounding objects, removed bounds, CSG children, looks_like objects of lights), each
+// before the transform changes it, so that it sees the object as it was (its matrix, a sphere not yet an ellipsoid).
+class ObjectTransformObserver {
+ public:
+  virtual ~ObjectTransformObserver() = default;
+  virtual void transforming(Object& object, const Matrix& m, TransformKind kind) = 0;
+};
+
+// A transform moves the object, what is attached to it (textures — unless the object is uv-mapped, POV-Ray's
+// UV_FLAG, or the texture ignores transforms —, clip and bounding objects), and for CSG every child and
+// light inside (POV-Ray transforms a CSG by transforming its children; the node keeps no matrix). `observer`, when
+// given, is told of each object moved.
+void transform_object(Object& object, const Matrix& m, TransformKind kind = TransformKind::other,
+                      ObjectTransformObserver* observer = nullptr);
+
+// A light's location, point_at and area axes (as directions), and its looks_like object (`observer` as above).
+void transform_light(Light& light, const Matrix& m, ObjectTransformObserver* observer = nullptr);
 
 }  // namespace povtrace

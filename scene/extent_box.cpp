@@ -2,14 +2,6 @@
 
 namespace povtrace {
 
-const char* extent_gap_name(ExtentGap gap) {
-  switch (gap) {
-    case ExtentGap::none: break;
-    case ExtentGap::height_field_samples: return "a height_field (its samples are read by the renderer)";
-  }
-  return "an object whose box is unknown";
-}
-
 ExtentBox ExtentBox::make(Vec3 lower, Vec3 lengths) {
   ExtentBox b;
   for (int i = 0; i < 3; ++i) {

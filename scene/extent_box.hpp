@@ -5,7 +5,6 @@
 #pragma once
 
 #include <array>
-#include <cstdint>
 
 #include "vecmath.hpp"
 
@@ -13,13 +12,6 @@ namespace povtrace {
 
 inline constexpr double kBoundHuge = 2.0e10;       // POV-Ray's BOUND_HUGE
 inline constexpr double kCriticalLength = 1.0e6;   // CRITICAL_LENGTH: wider CSG and quadric boxes become the huge box
-
-// What keeps the parser from making a box POV-Ray would have: named in the refusal of min_extent()/max_extent().
-enum class ExtentGap : std::uint8_t {
-  none,
-  height_field_samples,    // a height field's samples, which only the renderer reads
-};
-const char* extent_gap_name(ExtentGap gap);
 
 struct ExtentBox {
   std::array<float, 3> lower{}, lengths{};

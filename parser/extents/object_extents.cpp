@@ -7,7 +7,7 @@
 //   translations, rotations and uniform scales keeps a tight box around its moved centre; a plane's and a poly's
 //   box is the huge ±1e10 box (a poly's, once it has been transformed with clip objects, its first clip's box).
 // - CSG (and text, a union of glyphs), quadrics, blobs and meshes make their box once, then carry that box itself
-//   through every later transform (Object::carried_extent): rotations widen it step by step.
+//   through every later transform (ObjectNotes::carried_extent): rotations widen it step by step.
 // - A union's box encloses its children's (a light source inside has the huge box); an intersection's is the common
 //   part of its children's boxes, leaving out inverted children and height fields, taking a plane perpendicular to
 //   an axis as a half space, and recomputing its quadrics within the others' common box last. A box wider than 1e6
@@ -15,6 +15,7 @@
 // - At the end of every object's modifiers, the common box of its bounding objects, then of its clip objects
 //   (inverted ones left out), replaces the object's box when its volume is smaller.
 #include "parser/extents/object_extents.hpp"
+#include "parser/extents/object_notes.hpp"
 #include "parser/extents/placed_boxes.hpp"
 
 #include "runtime/quadric_extent.hpp"
@@ -153,7 +154,7 @@ ExtentBox mesh_box(const MeshData& data) {
 void narrow_by_plane(MinMax& m, const Plane& plane, const Object& o) {
   const double side = o.inverse ? -1.0 : 1.0;
   Vec3 lo, hi;
-  if (const auto& frame = plane.matrix_frame)
+  if (const auto& frame = notes_of(o).matrix_frame)
     plane_min_max_with_trans(side * frame->normal, side * frame->distance, frame->since, lo, hi);
   else
     plane_min_max(side * plane.normal, side * plane.distance, o.world_from_object, lo, hi);
@@ -237,8 +238,8 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     // by the transforms since.
     ExtentBox operator()(const Sphere& s) const {
       auto cube = [](Vec3 c, double r) { return ExtentBox::make(c - Vec3{r, r, r}, {2 * r, 2 * r, 2 * r}); };
-      if (s.ellipsoid && s.ellipsoid_frame)
-        return cube(s.ellipsoid_frame->centre, s.ellipsoid_frame->radius).transformed(s.ellipsoid_frame->since);
+      if (const auto& frame = notes_of(o).ellipsoid_frame; s.ellipsoid && frame)
+        return cube(frame->centre, frame->radius).transformed(frame->since);
       if (const double k = similarity_scale(m); k > 0 && !s.ellipsoid) return cube(m.point(s.centre), s.radius * k);
       return cube(s.centre, s.radius).transformed(m);   // an ellipsoid built in code, all in one transform
     }
@@ -285,8 +286,8 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
       return ExtentBox::make({-r2, -r1, -r2}, {2.0 * r2, 2.0 * r1, 2.0 * r2}).transformed(m);
     }
     // Poly::Compute_BBox: the huge box, or the first clip object's box once a transform has run it with clips.
-    ExtentBox operator()(const Poly& p) const {
-      if (p.box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
+    ExtentBox operator()(const Poly&) const {
+      if (notes_of(o).box_from_first_clip && !o.clipped_by.empty()) return self.box(o.clipped_by.front());
       return ExtentBox::huge();
     }
     ExtentBox operator()(const Quadric&) const { throw std::logic_error("a quadric's box is carried"); }
@@ -362,7 +363,7 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
   // The coefficients POV-Ray holds now: the written ones carried by the composed transform (POV-Ray transforms
   // them at each transform; the two agree to rounding).
   // Quadric::Invert negates every coefficient, which the box computation sees when x² has none to make positive.
-  Quadric& q = std::get<Quadric>(o.shape);
+  const Quadric& q = std::get<Quadric>(o.shape);
   Quadric current = transformed_quadric(q, o.world_from_object);
   if (o.inverse) {
     current.square = -1.0 * current.square;
@@ -370,20 +371,25 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
     current.linear = -1.0 * current.linear;
     current.constant = -current.constant;
   }
-  o.carried_extent = quadric_box(current, range.lo, range.hi, o.carried_extent.value_or(initial_quadric_box()),
-                                 &q.automatic_bounds);
+  const ExtentBox old = notes_of(o).carried_extent.value_or(initial_quadric_box());
+  bool automatic_bounds = notes_of(o).automatic_bounds;
+  const ExtentBox b = quadric_box(current, range.lo, range.hi, old, &automatic_bounds);
+  ObjectNotes& notes = edit_notes(o);
+  notes.carried_extent = b;
+  notes.automatic_bounds = automatic_bounds;
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
-  if (o.carried_extent) return *o.carried_extent;
-  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  const ObjectNotes& notes = notes_of(o);
+  if (notes.carried_extent) return *notes.carried_extent;
+  if (notes.extent_gap != ExtentGap::none) throw ExtentUnavailable(notes.extent_gap);
   if (std::holds_alternative<Csg>(o.shape)) {   // a CSG built in code, never made by the parser
     Object copy = o;
     return csg_box(copy);
   }
   if (const auto* q = std::get_if<Quadric>(&o.shape)) return parsed_quadric_box(*q).transformed(o.world_from_object);
   const ExtentBox b = shape_box(o);
-  return o.box_skips_clips ? b : narrowed(o, b);
+  return notes.box_skips_clips ? b : narrowed(o, b);
 }
 
 // The end of Parse_Object_Mods: the common box of the bounding objects, then of the clip objects, each left out
@@ -405,15 +411,16 @@ ExtentBox ObjectExtents::narrowed(const Object& o, ExtentBox b) const {
 }
 
 // The box a later transform leaves to be carried, as POV-Ray's Transform handles each shape: a carried box itself;
-// a box remade from the shape, without the narrowing by clip objects a transform drops (Object::box_skips_clips),
+// a box remade from the shape, without the narrowing by clip objects a transform drops (ObjectNotes::box_skips_clips),
 // where a sphere that is still a sphere becomes an ellipsoid holding its moved centre and radius (Sphere::Transform);
 // a clipped poly's first clip's (Poly::Compute_BBox). Unset: the huge box whatever the transform. A uniform scaling
 // by a power of two carries this box exactly as the remade one (every product scales exactly), except a triangle's
 // EPSILON margin, which POV-Ray adds after the transform (1e-10 in a float box: below a float's precision but at
 // coordinates within 1e-3 of zero).
 std::optional<ExtentBox> ObjectExtents::moved_box(const Object& o) const {
-  if (o.carried_extent) return *o.carried_extent;
-  if (o.extent_gap != ExtentGap::none) throw ExtentUnavailable(o.extent_gap);
+  const ObjectNotes& notes = notes_of(o);
+  if (notes.carried_extent) return *notes.carried_extent;
+  if (notes.extent_gap != ExtentGap::none) throw ExtentUnavailable(notes.extent_gap);
   if (std::holds_alternative<Plane>(o.shape)) return std::nullopt;
   if (std::holds_alternative<Poly>(o.shape)) {
     if (o.clipped_by.empty()) return std::nullopt;
@@ -452,14 +459,27 @@ void set_placed_boxes(Object& o, const ObjectExtents& extents) {
     for (Object& child : csg->children) set_placed_boxes(child, extents);
 }
 
+namespace {
+// The box is unset for good: later boxes hang on it (ObjectNotes::extent_gap).
+void record_gap(Object& o, ExtentGap gap) {
+  ObjectNotes& notes = edit_notes(o);
+  notes.carried_extent.reset();
+  notes.extent_gap = gap;
+}
+}  // namespace
+
 void ObjectExtents::made(Object& o) const {
   try {
-    if (std::holds_alternative<Csg>(o.shape)) o.carried_extent = csg_box(o);
-    else if (auto* q = std::get_if<Quadric>(&o.shape)) o.carried_extent = parsed_quadric_box(*q, &q->automatic_bounds);
-    else o.carried_extent = shape_box(o);
+    ExtentBox b;
+    bool automatic_bounds = notes_of(o).automatic_bounds;
+    if (std::holds_alternative<Csg>(o.shape)) b = csg_box(o);
+    else if (const auto* q = std::get_if<Quadric>(&o.shape)) b = parsed_quadric_box(*q, &automatic_bounds);
+    else b = shape_box(o);
+    ObjectNotes& notes = edit_notes(o);
+    notes.carried_extent = b;
+    notes.automatic_bounds = automatic_bounds;
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 
@@ -467,19 +487,19 @@ void ObjectExtents::quadric_clipped(Object& o) const {
   try {
     recompute_quadric(o, MinMax::everything().lo, MinMax::everything().hi);
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 
 void ObjectExtents::modifiers_ended(Object& o) const {
-  o.box_skips_clips = false;
-  if (!o.carried_extent || (o.clipped_by.empty() && o.bounded_by.empty())) return;
+  if (notes_of(o).box_skips_clips) edit_notes(o).box_skips_clips = false;   // no notes made for nothing
+  const std::optional<ExtentBox> carried = notes_of(o).carried_extent;
+  if (!carried || (o.clipped_by.empty() && o.bounded_by.empty())) return;
   try {
-    o.carried_extent = narrowed(o, *o.carried_extent);
+    const ExtentBox b = narrowed(o, *carried);
+    edit_notes(o).carried_extent = b;
   } catch (const ExtentUnavailable& e) {
-    o.carried_extent.reset();
-    o.extent_gap = e.gap;
+    record_gap(o, e.gap);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "parser/extents/object_notes.hpp"
 #include "scene/description.hpp"
 #include "scene/object_geometry.hpp"
 
@@ -26,7 +27,7 @@ class ObjectExtents {
   ExtentBox box(const Object& o) const;
 
   // Compute_BBox when the object is made (before its modifiers; a blob's after them), for the shapes whose box each
-  // later transform carries (Object::carried_extent). When the box cannot be made, records why (extent_gap).
+  // later transform carries (ObjectNotes::carried_extent). When the box cannot be made, records why (extent_gap).
   void made(Object& o) const;
 
   // The end of an object's modifiers (Parse_Object_Mods): its bounding, then its clip objects narrow a carried

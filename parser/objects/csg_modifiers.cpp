@@ -101,7 +101,7 @@ void Interpreter::remove_unnecessary_bounds(Object& object) {
     // A text is a CSG union in POV-Ray; a quadric keeps its bounds unless its box computation found one itself.
     const auto* quadric = std::get_if<Quadric>(&object.shape);
     const bool kept = std::holds_alternative<Poly>(object.shape) || std::holds_alternative<Text>(object.shape) ||
-                      (quadric && !quadric->automatic_bounds);
+                      (quadric && !notes_of(object).automatic_bounds);
     // Its glyphs are finite; a clipped text is placed before that test, an inverted one is an intersection.
     if (!object.bounded_by.empty() && std::holds_alternative<Text>(object.shape) && object.clipped_by.empty() &&
         !object.inverse)

@@ -5,6 +5,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_transform.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -20,9 +21,10 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 }
 }  // namespace
 
-// A transform moves the object and what is attached to it (scene/description_transforms.cpp).
+// A transform moves the object and what is attached to it (scene/description_transforms.cpp), and the parser's notes
+// on them (object_transform.cpp).
 void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  transform_object(object, m, kind);
+  transform_noted(object, m, kind);
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
@@ -144,7 +146,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   if (holder.texture) {
     object.texture = holder.texture;
-    object.deferred_texture_transform.reset();   // they belonged to the texture replaced
+    drop_deferred_texture_transforms(object);   // they belonged to the texture replaced
   }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);

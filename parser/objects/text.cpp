@@ -18,6 +18,7 @@
 #include <iterator>
 
 #include "parser/expressions/int_cast.hpp"
+#include "parser/objects/object_transform.hpp"
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
@@ -127,7 +128,7 @@ Object Interpreter::parse_text(const Token& keyword) {
   const Matrix anti_crack = Matrix::rotation({kAntiCrackRotation, kAntiCrackRotation, kAntiCrackRotation});
   o.shape = std::move(text);
   extents().made(o);
-  transform_object(o, anti_crack);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
+  transform_noted(o, anti_crack);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
   parse_object_modifiers(o);
   return o;
 }

@@ -3,6 +3,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_transform.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -175,7 +176,7 @@ Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
   return camera;
 }
 
-void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_light(light, m); }
+void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_noted(light, m); }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   Matrix m;

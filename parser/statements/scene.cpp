@@ -2,9 +2,11 @@
 #include <iostream>
 
 #include "parser/expressions/int_cast.hpp"
+#include "parser/extents/object_notes.hpp"
 #include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
+#include "parser/objects/object_transform.hpp"
 
 namespace povtrace::sdl {
 
@@ -307,7 +309,7 @@ Unsupported first_unsupported(const Object& o) {
 // sources' looks_like objects are settled when the lights are added).
 void settle_deferred_texture_transforms(Object& o) {
   if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
-  o.deferred_texture_transform.reset();
+  drop_deferred_texture_transforms(o);
   if (auto* csg = std::get_if<Csg>(&o.shape))
     for (Object& child : csg->children) settle_deferred_texture_transforms(child);
   for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})
@@ -327,10 +329,18 @@ void Interpreter::add_light(Light light) {
     settle_deferred_texture_transforms(shown);
     post_process(shown);
     set_placed_boxes(shown, extents());
+    placed(shown);
     scene_.objects.push_back(std::move(shown));
   }
   light.looks_like.clear();
   scene_.lights.push_back(std::move(light));
+}
+
+// An object joining the scene's objects is edited, moved and queried no more and its box is made: the parser's notes
+// on it go (ParseOptions::placing sees them last).
+void Interpreter::placed(Object& object) {
+  if (options_.placing) options_.placing(object);
+  clear_notes(object);
 }
 
 // Post_Process when a finished top-level object is placed (§10 "Texture inheritance"): CSG children without a
@@ -418,6 +428,7 @@ void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)
+  placed(object);
   scene_.objects.push_back(std::move(object));
 }
 

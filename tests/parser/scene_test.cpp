@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "parse_helpers.hpp"
+#include "parser/extents/object_notes.hpp"
 
 namespace povtrace::test {
 namespace {
@@ -550,19 +551,29 @@ TEST(Objects, ObjectIdentifierIsADeepCopy) {
 }
 
 // A solid-coloured texture renders the same however it is moved: copies moved by transforms share the declared
-// object's texture, yet a pigment edited after the transforms starts from the moved one, as when it is copied.
+// object's texture, yet a pigment edited after the transforms starts from the moved one, as when it is copied. The
+// transforms the parser kept for the shared texture are dropped by the time each object is placed.
 TEST(Objects, MovedCopiesOfASolidTexturedObjectShareItsTexture) {
-  const SceneDescription s = scene(
+  ParseOptions options;
+  options.message_sink = [](const std::string&) {};
+  int placed = 0;
+  options.placing = [&placed](const Object& o) {
+    ++placed;
+    EXPECT_FALSE(sdl::notes_of(o).deferred_texture_transform.has_value()) << "object " << placed;
+  };
+  const SceneDescription s = parse_scene_text(
+      "#version 3.7;\n"
       "#declare S = sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 0.5 } } }\n"
       "object { S translate x }\n"
       "object { S translate y rotate z*30 }\n"
       "object { S translate x scale 2 pigment { checker } }\n"
       "object { S translate x normal { bumps } pigment { checker } }\n"
       "object { S translate x texture { pigment { checker } } }\n"
-      "object { S translate x material { texture { pigment { checker } } } }\n");
+      "object { S translate x material { texture { pigment { checker } } } }\n",
+      "test.pov", options);
   ASSERT_EQ(s.objects.size(), 6u);
+  EXPECT_EQ(placed, 6);
   EXPECT_EQ(s.objects[0].texture, s.objects[1].texture);
-  for (const Object& o : s.objects) EXPECT_FALSE(o.deferred_texture_transform.has_value());
   expect_matrix_near(top_layer(s.objects[2]).pigment.world_from_pattern,
                      Matrix::translation({1, 0, 0}) * Matrix::scaling({2, 2, 2}));
   expect_matrix_near(top_layer(s.objects[3]).pigment.world_from_pattern, Matrix::translation({1, 0, 0}));
@@ -579,6 +590,56 @@ TEST(Objects, NestedObjectCopiesCompose) {
       "object { B scale 2 }\n");
   ASSERT_EQ(s.objects.size(), 1u);
   expect_vec_near(s.objects[0].world_from_object.point({0, 0, 0}), {0, 0, -2}, 1e-12);
+}
+
+// The parser's notes on an object (its box state, transforms kept for a texture) are parser business: every object
+// of a returned scene, down to CSG children, clip and bounding objects and lights' looks_like objects, holds none,
+// though objects had them when they were placed.
+void expect_no_parser_notes(const Object& o, const std::string& what) {
+  EXPECT_EQ(o.parser_notes, nullptr) << what;
+  const std::pair<const std::vector<Object>*, const char*> lists[] = {
+      {&o.clipped_by, " clip "}, {&o.bounded_by, " bound "}, {&o.removed_bounds, " removed bound "}};
+  for (const auto& [list, name] : lists)
+    for (std::size_t i = 0; i < list->size(); ++i) expect_no_parser_notes((*list)[i], what + name + std::to_string(i));
+  if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+    for (std::size_t i = 0; i < csg->children.size(); ++i)
+      expect_no_parser_notes(csg->children[i], what + " child " + std::to_string(i));
+    for (const Light& light : csg->lights)
+      for (const Object& shown : light.looks_like) expect_no_parser_notes(shown, what + " looks_like");
+  }
+}
+
+TEST(Objects, ReturnedSceneHoldsNoParserNotes) {
+  ParseOptions options;
+  options.message_sink = [](const std::string&) {};
+  int placed_with_notes = 0;
+  options.placing = [&placed_with_notes](const Object& o) { placed_with_notes += o.parser_notes != nullptr; };
+  const SceneDescription s = parse_scene_text(
+      "#version 3.7;\n"
+      "#declare S = sphere { 0, 1 pigment { rgb 1 } translate x }\n"
+      "object { S }\n"
+      "object { S scale <1,2,3> rotate 10*y }\n"
+      "plane { y, 1 matrix <1,0,0, 0,1,0, 0,0,1, 1,2,3> clipped_by { box { -1, 1 translate y } } }\n"
+      "quartic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,-1>\n"
+      "  clipped_by { sphere { 0, 2 } } scale 2 }\n"
+      "quadric { <1,1,1>, <0,0,0>, <0,0,0>, -1 bounded_by { box { -2, 2 } } rotate 10*x }\n"
+      "union {\n"
+      "  sphere { 0, 1 clipped_by { box { 0, 2 rotate 5*z } } }\n"
+      "  intersection { sphere { 0, 2 scale <1,2,1> } plane { y, 0.5 } quadric { <1,1,1>, <0,0,0>, <0,0,0>, -1 } }\n"
+      "  difference { box { -1, 1 } object { S } }\n"
+      "  light_source { <1,2,3> rgb 1 looks_like { sphere { 0, 0.1 translate y } } }\n"
+      "  translate z }\n"
+      "merge { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -1, <2,1,1> } } scale 3 }\n"
+      "blob { threshold 0.5 sphere { 0, 1, 1 } cylinder { 0, x, 0.5, 1 } scale <1,2,1> }\n"
+      "mesh { triangle { <0.5,0.25,1>, <1,1.5,0.75>, <2,0.5,1.25> } rotate 20*z }\n"
+      "sphere { 0, 1 bounded_by { box { -1, 1 } } translate x }\n"
+      "light_source { <0,5,0> rgb 1 looks_like { box { -1, 1 rotate 30*x } } translate x }\n",
+      "test.pov", options);
+  ASSERT_EQ(s.objects.size(), 12u);
+  EXPECT_EQ(placed_with_notes, 12);   // every object had notes to drop
+  for (std::size_t i = 0; i < s.objects.size(); ++i) expect_no_parser_notes(s.objects[i], "object " + std::to_string(i));
+  ASSERT_FALSE(s.objects[10].removed_bounds.empty());   // the bounds POV-Ray removed were checked too
+  for (const Light& light : s.lights) EXPECT_TRUE(light.looks_like.empty());
 }
 
 // ---- Global settings and background -------------------------------------------------------------------------

@@ -1,13 +1,17 @@
 // POV-Ray's box of a placed object (Object::placed_box), made by the parser when it places the object, and carried
 // by the renderer's rescaling of a whole scene (renderer/scene_scale.cpp): the scaled value must be the box the
-// parser's extent code gives for the scaled object itself, which is what POV-Ray's Transform would remake.
+// parser's extent code gives for the scaled object itself, which is what POV-Ray's Transform would remake. The extent
+// code reads the parser's notes on the object, which the returned scene no longer holds: the objects are taken as
+// they were placed (ParseOptions::placing) and scaled as the parser transforms them, notes and all.
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "parser/extents/object_extents.hpp"
 #include "parser/extents/placed_boxes.hpp"
+#include "parser/objects/object_transform.hpp"
 #include "renderer/object_geometry.hpp"
 #include "renderer/scene_scale.hpp"
 #include "tests/parser/parse_helpers.hpp"
@@ -18,10 +22,19 @@ namespace {
 // The renderer's geometry, which the parser asks for height fields' boxes.
 const std::shared_ptr<const ObjectGeometry> kGeometry = std::make_shared<render::RendererGeometry>();
 
-SceneDescription parsed(const std::string& body) {
+// The scene, and each of its objects as it was placed, with the parser's notes on it.
+struct Parsed {
+  SceneDescription scene;
+  std::vector<Object> placed;
+};
+
+Parsed parsed(const std::string& body) {
+  Parsed p;
   ParseOptions o;
   o.object_geometry = kGeometry;
-  return parse_scene_text("#version 3.7;\n" + body, "placed.pov", o);
+  o.placing = [&p](const Object& placed) { p.placed.push_back(placed); };
+  p.scene = parse_scene_text("#version 3.7;\n" + body, "placed.pov", o);
+  return p;
 }
 
 bool same_bits(const ExtentBox& a, const ExtentBox& b) {
@@ -39,14 +52,16 @@ PlacedBox recomputed(const Object& o) {
   }
 }
 
-// The object's placed box, and those of the children of a union the parser placed one by one.
-void expect_placed_box_recomputed(const Object& o, double k, const std::string& what) {
+// The object's placed box, and those of the children of a union the parser placed one by one, against the boxes
+// of `noted`: the same object with the parser's notes.
+void expect_placed_box_recomputed(const Object& o, const Object& noted, double k, const std::string& what) {
   if (const auto* csg = std::get_if<Csg>(&o.shape))
     for (std::size_t i = 0; i < csg->children.size(); ++i)
       if (csg->children[i].placed_box)
-        expect_placed_box_recomputed(csg->children[i], k, what + " child " + std::to_string(i));
+        expect_placed_box_recomputed(csg->children[i], std::get<Csg>(noted.shape).children[i], k,
+                                     what + " child " + std::to_string(i));
   if (!o.placed_box) return;
-  const PlacedBox expected = recomputed(o);
+  const PlacedBox expected = recomputed(noted);
   EXPECT_EQ(o.placed_box->known, expected.known) << what << " scale " << k;
   if (expected.known) {
     EXPECT_TRUE(same_bits(o.placed_box->box, expected.box)) << what << " scale " << k;
@@ -54,13 +69,16 @@ void expect_placed_box_recomputed(const Object& o, double k, const std::string& 
 }
 
 void expect_placed_boxes_follow_scaling(const std::string& body) {
-  const SceneDescription scene = parsed(body);
-  ASSERT_FALSE(scene.objects.empty());
+  const Parsed p = parsed(body);
+  ASSERT_FALSE(p.scene.objects.empty());
+  ASSERT_EQ(p.placed.size(), p.scene.objects.size());
   for (const double k : {1.0, 0.0625, 1.0 / 1024, 16.0, 4096.0}) {
-    const SceneDescription scaled = k == 1.0 ? scene : render::scaled_scene(scene, k);
+    const SceneDescription scaled = k == 1.0 ? p.scene : render::scaled_scene(p.scene, k);
     for (std::size_t i = 0; i < scaled.objects.size(); ++i) {
       EXPECT_EQ(scaled.objects[i].placed_box.has_value(), sdl::culled_by_placed_box(scaled.objects[i])) << body;
-      expect_placed_box_recomputed(scaled.objects[i], k, "object " + std::to_string(i));
+      Object noted = p.placed[i];
+      if (k != 1.0) sdl::transform_noted(noted, Matrix::scaling({k, k, k}));   // as scaled_scene moves the object
+      expect_placed_box_recomputed(scaled.objects[i], noted, k, "object " + std::to_string(i));
     }
   }
 }
