@@ -180,8 +180,7 @@ double wider_end(double lo, double hi, RadiusAt radius_at) {
 
 }  // namespace
 
-ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old,
-                      bool* automatic_bounds) {
+QuadricBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old) {
   // Compute_BBox names the coefficients of the symmetric form A x² + E y² + H z² + 2B xy + 2C xz + 2F yz +
   // 2D x + 2G y + 2I z + J; here square[k] plays A, E, H and half_linear[k] D, G, I.
   double square[3] = {zeroed(current.square.x), zeroed(current.square.y), zeroed(current.square.z)};
@@ -196,7 +195,7 @@ ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, cons
   if (half_mixed[0] != 0.0 || half_mixed[1] != 0.0 || half_mixed[2] != 0.0) {
     const double clip_volume =
         (clip_max.x - clip_min.x) * (clip_max.y - clip_min.y) * (clip_max.z - clip_min.z);
-    return clip_volume < old.volume() ? ExtentBox::from_min_max(clip_min, clip_max) : old;
+    return {clip_volume < old.volume() ? ExtentBox::from_min_max(clip_min, clip_max) : old, false};
   }
 
   // Linear terms: move the quadric so that they vanish along each axis with a square term (its centre there);
@@ -316,15 +315,14 @@ ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, cons
     hi[k] = std::min(hi[k], clip_max[k]);
   }
   const double volume = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z);
-  if (!(volume < old.volume())) return old;
-  if (automatic_bounds) *automatic_bounds = true;
+  if (!(volume < old.volume())) return {old, false};
   ExtentBox box = ExtentBox::from_min_max(lo + shift, hi + shift);
-  return box.wider_than_critical() ? ExtentBox::huge() : box;
+  return {box.wider_than_critical() ? ExtentBox::huge() : box, true};
 }
 
-ExtentBox parsed_quadric_box(const Quadric& written, bool* automatic_bounds) {
+QuadricBox parsed_quadric_box(const Quadric& written) {
   return quadric_box(written, {-kBoundHuge, -kBoundHuge, -kBoundHuge}, {kBoundHuge, kBoundHuge, kBoundHuge},
-                     initial_quadric_box(), automatic_bounds);
+                     initial_quadric_box());
 }
 
 }  // namespace povtrace

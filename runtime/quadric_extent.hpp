@@ -75,12 +75,15 @@ void plane_min_max_with_trans(Vec3 normal, double distance, const Matrix& trans,
 //     and the paraboloids along each axis give a box (their remaining axes ±BOUND_HUGE/2), intersected with the clip
 //     range. It replaces the old box only when its volume is smaller; a box then wider than CRITICAL_LENGTH on an
 //     axis becomes the huge box.
-// `automatic_bounds`, when given, is set to true when the computed box is used (POV-Ray's Automatic_Bounds, which
-// lets Link_To_Frame drop a quadric's bounded_by; POV-Ray never clears it) and left alone otherwise.
-ExtentBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old,
-                      bool* automatic_bounds = nullptr);
+// `computed` says whether the box computed from the shape replaced the old one: POV-Ray then sets Automatic_Bounds,
+// which lets Link_To_Frame drop a quadric's bounded_by, and never clears it (a caller keeping that flag ORs this in).
+struct QuadricBox {
+  ExtentBox box;
+  bool computed = false;
+};
+QuadricBox quadric_box(const Quadric& current, Vec3 clip_min, Vec3 clip_max, const ExtentBox& old);
 
 // Parse_Quadric's box: quadric_box(written, ±BOUND_HUGE, initial_quadric_box()).
-ExtentBox parsed_quadric_box(const Quadric& written, bool* automatic_bounds = nullptr);
+QuadricBox parsed_quadric_box(const Quadric& written);
 
 }  // namespace povtrace

@@ -372,11 +372,10 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
     current.constant = -current.constant;
   }
   const ExtentBox old = notes_of(o).carried_extent.value_or(initial_quadric_box());
-  bool automatic_bounds = notes_of(o).automatic_bounds;
-  const ExtentBox b = quadric_box(current, range.lo, range.hi, old, &automatic_bounds);
+  const QuadricBox b = quadric_box(current, range.lo, range.hi, old);
   ObjectNotes& notes = edit_notes(o);
-  notes.carried_extent = b;
-  notes.automatic_bounds = automatic_bounds;
+  notes.carried_extent = b.box;
+  notes.automatic_bounds = notes.automatic_bounds || b.computed;
 }
 
 ExtentBox ObjectExtents::box(const Object& o) const {
@@ -387,7 +386,7 @@ ExtentBox ObjectExtents::box(const Object& o) const {
     Object copy = o;
     return csg_box(copy);
   }
-  if (const auto* q = std::get_if<Quadric>(&o.shape)) return parsed_quadric_box(*q).transformed(o.world_from_object);
+  if (const auto* q = std::get_if<Quadric>(&o.shape)) return parsed_quadric_box(*q).box.transformed(o.world_from_object);
   const ExtentBox b = shape_box(o);
   return notes.box_skips_clips ? b : narrowed(o, b);
 }
@@ -471,13 +470,16 @@ void record_gap(Object& o, ExtentGap gap) {
 void ObjectExtents::made(Object& o) const {
   try {
     ExtentBox b;
-    bool automatic_bounds = notes_of(o).automatic_bounds;
+    bool computed_quadric_box = false;
     if (std::holds_alternative<Csg>(o.shape)) b = csg_box(o);
-    else if (const auto* q = std::get_if<Quadric>(&o.shape)) b = parsed_quadric_box(*q, &automatic_bounds);
-    else b = shape_box(o);
+    else if (const auto* q = std::get_if<Quadric>(&o.shape)) {
+      const QuadricBox parsed = parsed_quadric_box(*q);
+      b = parsed.box;
+      computed_quadric_box = parsed.computed;
+    } else b = shape_box(o);
     ObjectNotes& notes = edit_notes(o);
     notes.carried_extent = b;
-    notes.automatic_bounds = automatic_bounds;
+    notes.automatic_bounds = notes.automatic_bounds || computed_quadric_box;
   } catch (const ExtentUnavailable& e) {
     record_gap(o, e.gap);
   }
