@@ -39,7 +39,7 @@ struct TextGlyph {
 };
 
 // text { … }: the laid-out glyphs, each extruded over 0 <= z <= thickness. POV-Ray makes a text a CSG union of its
-// glyphs, so its bounding box is carried through each later transform (by the parser: ObjectNotes::carried_extent in
+// glyphs, so its bounding box is carried through each later transform (by the parser, in its notes on the object:
 // parser/extents/object_notes.hpp), starting with the tiny anti-crack rotation.
 struct Text {
   std::vector<TextGlyph> glyphs;
