@@ -1,7 +1,6 @@
 #include "renderer/object_primitives.hpp"
 
 #include <cstdint>
-#include <optional>
 
 #include "renderer/csg_build.hpp"
 #include "renderer/shapes/shape_registry.hpp"
@@ -10,15 +9,14 @@ namespace povtrace::render {
 
 void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t object_index,
                           const BuildContext& context, std::vector<Primitive>& out) {
-  const std::optional<Primitive> shape = shapes::build_shape(o.shape, o.world_from_object, context);
+  Primitive* shape = shapes::append_shape(o.shape, o.world_from_object, context, out);
   if (!shape) return;   // a disc with a zero normal: POV-Ray renders nothing either
-  Primitive p = *shape;
+  Primitive& p = *shape;
   p.material = material;
   p.object = object_index;
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
   p.inverse = o.inverse;
-  out.push_back(p);
 }
 
 }  // namespace povtrace::render

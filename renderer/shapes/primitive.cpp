@@ -3,8 +3,12 @@
 // different spaces per shape (see the header comment of each shape file). Also the two non-inline Bounds members
 // and the build of a shape from its description.
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/shape_registry.hpp"
@@ -72,22 +76,34 @@ namespace shapes {
 
 namespace {
 template <class S>
-std::optional<Primitive> build_from(const typename S::Description& description, const Matrix& world_from_object,
-                                    const BuildContext& context) {
-  if constexpr (HasContextBuild<S>) return S::build(description, world_from_object, context);
-  else if constexpr (HasBuild<S>) return S::build(description, world_from_object);
-  else throw std::logic_error("CSG objects become CSG nodes in add_object and never reach add_shape_primitives");
+Primitive* append_from(const typename S::Description& description, const Matrix& world_from_object,
+                       const BuildContext& context, std::vector<Primitive>& out) {
+  if constexpr (!HasContextBuild<S> && !HasBuild<S>) {
+    throw std::logic_error("CSG objects become CSG nodes in add_object and never reach add_shape_primitives");
+  } else {
+    const auto build = [&] {
+      if constexpr (HasContextBuild<S>) return S::build(description, world_from_object, context);
+      else return S::build(description, world_from_object);
+    };
+    if constexpr (std::is_same_v<decltype(build()), std::optional<Primitive>>) {
+      std::optional<Primitive> p = build();
+      if (!p) return nullptr;
+      return &out.emplace_back(std::move(*p));
+    } else {
+      return &out.emplace_back(build());
+    }
+  }
 }
 }  // namespace
 
-std::optional<Primitive> build_shape(const Shape& description, const Matrix& world_from_object,
-                                     const BuildContext& context) {
+Primitive* append_shape(const Shape& description, const Matrix& world_from_object, const BuildContext& context,
+                        std::vector<Primitive>& out) {
   return std::visit(
-      [&](const auto& d) -> std::optional<Primitive> {
+      [&](const auto& d) -> Primitive* {
         using D = std::decay_t<decltype(d)>;
 #define POVTRACE_SHAPE_BUILD(name, Shape)                        \
   if constexpr (std::is_same_v<D, typename Shape::Description>) \
-    return build_from<Shape>(d, world_from_object, context);     \
+    return append_from<Shape>(d, world_from_object, context, out); \
   else
         POVTRACE_SHAPES(POVTRACE_SHAPE_BUILD)
 #undef POVTRACE_SHAPE_BUILD
