@@ -350,7 +350,9 @@ class Interpreter {
   const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
   const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
-  ObjectExtents extents() const { return ObjectExtents(options_.object_geometry.get(), noise_generator()); }
+  ObjectExtents extents() const {
+    return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
+  }
 
   // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
   friend class FunctionParser;
@@ -592,6 +594,7 @@ class Interpreter {
   void placed(Object& object);   // the last step before the object joins scene_.objects
 
   const ParseOptions& options_;
+  NotesPool notes_pool_;   // where the objects' notes are made (ObjectNotes); before the members holding objects
   std::vector<std::unique_ptr<SourceFile>> files_;
   std::vector<Frame> frames_;
   std::vector<Control> controls_;

@@ -373,7 +373,7 @@ void ObjectExtents::recompute_quadric(Object& o, Vec3 clip_lo, Vec3 clip_hi) con
   }
   const ExtentBox old = notes_of(o).carried_extent.value_or(initial_quadric_box());
   const QuadricBox b = quadric_box(current, range.lo, range.hi, old);
-  ObjectNotes& notes = edit_notes(o);
+  ObjectNotes& notes = edit_notes(o, notes_);
   notes.carried_extent = b.box;
   notes.automatic_bounds = notes.automatic_bounds || b.computed;
 }
@@ -460,8 +460,8 @@ void set_placed_boxes(Object& o, const ObjectExtents& extents) {
 
 namespace {
 // The box is unset for good: later boxes hang on it (ObjectNotes::extent_gap).
-void record_gap(Object& o, ExtentGap gap) {
-  ObjectNotes& notes = edit_notes(o);
+void record_gap(Object& o, ExtentGap gap, const NotesPool& pool) {
+  ObjectNotes& notes = edit_notes(o, pool);
   notes.carried_extent.reset();
   notes.extent_gap = gap;
 }
@@ -477,11 +477,11 @@ void ObjectExtents::made(Object& o) const {
       b = parsed.box;
       computed_quadric_box = parsed.computed;
     } else b = shape_box(o);
-    ObjectNotes& notes = edit_notes(o);
+    ObjectNotes& notes = edit_notes(o, notes_);
     notes.carried_extent = b;
     notes.automatic_bounds = notes.automatic_bounds || computed_quadric_box;
   } catch (const ExtentUnavailable& e) {
-    record_gap(o, e.gap);
+    record_gap(o, e.gap, notes_);
   }
 }
 
@@ -489,19 +489,19 @@ void ObjectExtents::quadric_clipped(Object& o) const {
   try {
     recompute_quadric(o, MinMax::everything().lo, MinMax::everything().hi);
   } catch (const ExtentUnavailable& e) {
-    record_gap(o, e.gap);
+    record_gap(o, e.gap, notes_);
   }
 }
 
 void ObjectExtents::modifiers_ended(Object& o) const {
-  if (notes_of(o).box_skips_clips) edit_notes(o).box_skips_clips = false;   // no notes made for nothing
+  if (notes_of(o).box_skips_clips) edit_notes(o, notes_).box_skips_clips = false;   // no notes made for nothing
   const std::optional<ExtentBox> carried = notes_of(o).carried_extent;
   if (!carried || (o.clipped_by.empty() && o.bounded_by.empty())) return;
   try {
     const ExtentBox b = narrowed(o, *carried);
-    edit_notes(o).carried_extent = b;
+    edit_notes(o, notes_).carried_extent = b;
   } catch (const ExtentUnavailable& e) {
-    record_gap(o, e.gap);
+    record_gap(o, e.gap, notes_);
   }
 }
 

@@ -19,9 +19,10 @@ struct ExtentUnavailable : std::runtime_error {
 
 class ObjectExtents {
  public:
-  // `noise_generator`: the scene's in force, for height fields made from pigment functions (ObjectGeometry).
-  ObjectExtents(const ObjectGeometry* geometry, int noise_generator)
-      : geometry_(geometry), noise_generator_(noise_generator) {}
+  // `noise_generator`: the scene's in force, for height fields made from pigment functions (ObjectGeometry);
+  // `notes`: where the boxes it carries on objects are kept (ObjectNotes), which must outlive this.
+  ObjectExtents(const ObjectGeometry* geometry, int noise_generator, const NotesPool& notes)
+      : geometry_(geometry), noise_generator_(noise_generator), notes_(notes) {}
 
   // The object's box as POV-Ray holds it now. Throws ExtentUnavailable.
   ExtentBox box(const Object& o) const;
@@ -50,6 +51,7 @@ class ObjectExtents {
 
   const ObjectGeometry* geometry_;
   int noise_generator_;
+  const NotesPool& notes_;
 };
 
 }  // namespace povtrace::sdl

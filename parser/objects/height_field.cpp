@@ -146,7 +146,7 @@ Object Interpreter::parse_height_field(const Token& keyword) {
   }
   o.shape = h;
   parse_object_modifiers(o);
-  edit_notes(o).box_skips_clips = true;   // Parse_HField computes the box after its own modifiers
+  edit_notes(o, notes_pool_).box_skips_clips = true;   // Parse_HField computes the box after its own modifiers
   return o;
 }
 

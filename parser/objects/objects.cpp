@@ -13,8 +13,8 @@ namespace povtrace::sdl {
 namespace {
 // The object's own top texture layer, created from the #default texture when the object has none yet
 // (object-level pigment/finish on an untextured object, §4 #default).
-TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
-  apply_deferred_texture_transforms(object);   // the layer edited is the one the transforms moved
+TextureLayer& own_top_layer(Object& object, const Texture& defaults, const NotesPool& pool) {
+  apply_deferred_texture_transforms(object, pool);   // the layer edited is the one the transforms moved
   auto tex = std::make_shared<Texture>(object.texture ? *object.texture : defaults);
   object.texture = tex;
   return tex->layers.back();
@@ -24,7 +24,7 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults) {
 // A transform moves the object and what is attached to it (scene/description_transforms.cpp), and the parser's notes
 // on them (object_transform.cpp).
 void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  transform_noted(object, m, kind);
+  transform_noted(object, m, notes_pool_, kind);
 }
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
@@ -45,7 +45,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     // layering (POV-Ray's Link_Textures).
     refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
-      apply_deferred_texture_transforms(object);   // the layers below were moved by them, the new ones are not
+      apply_deferred_texture_transforms(object, notes_pool_);   // the layers below were moved by them, the new ones are not
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
       object.texture = std::move(layered);
@@ -61,18 +61,18 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   }
   if (k == "pigment" || k == "normal" || k == "finish") refuse_layering(t, object.texture.get(), false);
   if (k == "pigment") {
-    TextureLayer& layer = own_top_layer(object, default_texture());
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
     layer.pigment = parse_pigment_block(t, layer.pigment);
     return true;
   }
   if (k == "normal") {
-    TextureLayer& layer = own_top_layer(object, default_texture());
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
     layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
     taint(object.unsupported, layer.normal->unsupported);
     return true;
   }
   if (k == "finish") {
-    TextureLayer& layer = own_top_layer(object, default_texture());
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
     layer.finish = parse_finish_block(t, layer.finish);
     return true;
   }
@@ -146,7 +146,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   if (holder.texture) {
     object.texture = holder.texture;
-    drop_deferred_texture_transforms(object);   // they belonged to the texture replaced
+    drop_deferred_texture_transforms(object, notes_pool_);   // they belonged to the texture replaced
   }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);

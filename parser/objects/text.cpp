@@ -128,7 +128,7 @@ Object Interpreter::parse_text(const Token& keyword) {
   const Matrix anti_crack = Matrix::rotation({kAntiCrackRotation, kAntiCrackRotation, kAntiCrackRotation});
   o.shape = std::move(text);
   extents().made(o);
-  transform_noted(o, anti_crack);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
+  transform_noted(o, anti_crack, notes_pool_);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
   parse_object_modifiers(o);
   return o;
 }

@@ -176,7 +176,7 @@ Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
   return camera;
 }
 
-void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_noted(light, m); }
+void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_noted(light, m, notes_pool_); }
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   Matrix m;

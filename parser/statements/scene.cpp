@@ -305,15 +305,15 @@ Unsupported first_unsupported(const Object& o) {
   return std::nullopt;
 }
 
-// A placed object is edited no more: transforms deferred for textures that ignore them are dropped (their light
-// sources' looks_like objects are settled when the lights are added).
-void settle_deferred_texture_transforms(Object& o) {
-  if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o);
-  drop_deferred_texture_transforms(o);
+// A placed object is edited no more: transforms deferred for textures that no longer ignore them (edited since)
+// are applied; those deferred for textures that ignore them go with the notes when the object is placed
+// (Interpreter::placed). Light sources' looks_like objects are settled when the lights are added.
+void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
+  if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o, pool);
   if (auto* csg = std::get_if<Csg>(&o.shape))
-    for (Object& child : csg->children) settle_deferred_texture_transforms(child);
+    for (Object& child : csg->children) settle_deferred_texture_transforms(child, pool);
   for (auto* list : {&o.clipped_by, &o.bounded_by, &o.removed_bounds})
-    for (Object& c : *list) settle_deferred_texture_transforms(c);
+    for (Object& c : *list) settle_deferred_texture_transforms(c, pool);
 }
 }  // namespace
 
@@ -326,7 +326,7 @@ void Interpreter::place_light(Light light, const SourceLoc& at) {
 // A light joins the scene's lights; its looks_like object joins the objects.
 void Interpreter::add_light(Light light) {
   for (Object& shown : light.looks_like) {
-    settle_deferred_texture_transforms(shown);
+    settle_deferred_texture_transforms(shown, notes_pool_);
     post_process(shown);
     set_placed_boxes(shown, extents());
     placed(shown);
@@ -424,7 +424,7 @@ const Normal* first_untyped_normal(const Object& o) {
 void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
   remove_unnecessary_bounds(object);
-  settle_deferred_texture_transforms(object);
+  settle_deferred_texture_transforms(object, notes_pool_);
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)

@@ -46,7 +46,8 @@ bool same_bits(const ExtentBox& a, const ExtentBox& b) {
 // the default noise generator 2 the parse had (the scenes below set none).
 PlacedBox recomputed(const Object& o) {
   try {
-    return PlacedBox{true, sdl::ObjectExtents(kGeometry.get(), 2).box(o), std::nullopt};
+    const sdl::NotesPool notes;
+    return PlacedBox{true, sdl::ObjectExtents(kGeometry.get(), 2, notes).box(o), std::nullopt};
   } catch (const sdl::ExtentUnavailable&) {
     return PlacedBox{};
   }
@@ -72,12 +73,13 @@ void expect_placed_boxes_follow_scaling(const std::string& body) {
   const Parsed p = parsed(body);
   ASSERT_FALSE(p.scene.objects.empty());
   ASSERT_EQ(p.placed.size(), p.scene.objects.size());
+  const sdl::NotesPool notes;
   for (const double k : {1.0, 0.0625, 1.0 / 1024, 16.0, 4096.0}) {
     const SceneDescription scaled = k == 1.0 ? p.scene : render::scaled_scene(p.scene, k);
     for (std::size_t i = 0; i < scaled.objects.size(); ++i) {
       EXPECT_EQ(scaled.objects[i].placed_box.has_value(), sdl::culled_by_placed_box(scaled.objects[i])) << body;
       Object noted = p.placed[i];
-      if (k != 1.0) sdl::transform_noted(noted, Matrix::scaling({k, k, k}));   // as scaled_scene moves the object
+      if (k != 1.0) sdl::transform_noted(noted, Matrix::scaling({k, k, k}), notes);   // as scaled_scene moves it
       expect_placed_box_recomputed(scaled.objects[i], noted, k, "object " + std::to_string(i));
     }
   }
