@@ -1,6 +1,8 @@
 #include "parser/extents/object_notes.hpp"
 
+#include <cstddef>
 #include <memory>
+#include <vector>
 
 namespace povtrace::sdl {
 
@@ -12,7 +14,8 @@ const char* extent_gap_name(ExtentGap gap) {
   return "an object whose box is unknown";
 }
 
-struct NotesPool::Blocks {
+class NotesPool::Blocks {
+ public:
   union Block {
     Block* next;
     alignas(std::max_align_t) std::byte bytes[block_bytes];
@@ -21,13 +24,19 @@ struct NotesPool::Blocks {
   std::vector<std::unique_ptr<Block[]>> chunks;
   std::size_t used_in_last = blocks_per_chunk;
   Block* free = nullptr;
+  std::size_t out = 0;       // blocks taken and not given back
+  bool pool_gone = false;    // then the last block given back deletes these
 };
 
-NotesPool::NotesPool() : blocks_(std::make_shared<Blocks>()) {}
+NotesPool::NotesPool() : blocks_(new Blocks) {}
 
-void* NotesPool::take(std::size_t bytes, std::size_t alignment) {
-  if (bytes > block_bytes || alignment > alignof(std::max_align_t)) return nullptr;
-  Blocks& b = *blocks_;
+NotesPool::~NotesPool() {
+  if (blocks_->out == 0) delete blocks_;
+  else blocks_->pool_gone = true;
+}
+
+void* NotesPool::take(Blocks& b) {
+  ++b.out;
   if (Blocks::Block* block = b.free) {
     b.free = block->next;
     return block;
@@ -39,10 +48,11 @@ void* NotesPool::take(std::size_t bytes, std::size_t alignment) {
   return &b.chunks.back()[b.used_in_last++];
 }
 
-void NotesPool::give_back(void* block) {
+void NotesPool::give_back(Blocks& b, void* block) {
   auto* freed = static_cast<Blocks::Block*>(block);
-  freed->next = blocks_->free;
-  blocks_->free = freed;
+  freed->next = b.free;
+  b.free = freed;
+  if (--b.out == 0 && b.pool_gone) delete &b;
 }
 
 // Copies of an object (every `object { S … }` of a declared S) share its notes until one of them changes: most
@@ -53,7 +63,7 @@ ObjectNotes& edit_notes(Object& o, const NotesPool& pool) {
     // const pointer is defined and no one else sees the change. The parser runs on one thread, so the count holds.
     return const_cast<ObjectNotes&>(*o.parser_notes);
   }
-  const NotesAllocator<ObjectNotes> allocator(pool);
+  const NotesAllocator<ObjectNotes> allocator(pool.blocks());
   auto own = o.parser_notes ? std::allocate_shared<ObjectNotes>(allocator, *o.parser_notes)
                             : std::allocate_shared<ObjectNotes>(allocator);
   ObjectNotes& notes = *own;

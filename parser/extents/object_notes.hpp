@@ -71,21 +71,29 @@ struct ObjectNotes {
 
 // Where the notes of one parse are made: fixed-size blocks kept on a free list. In bench's parse_objects each of
 // 100,000 moved copies of a declared object gets notes (its deferred texture transform) and drops them when placed;
-// malloc and free of each cost more than everything else the notes do. A handle: copies share the blocks, and every
-// notes object holds one (in its allocator), so the blocks live as long as any notes made from them.
+// malloc and free of each cost more than everything else the notes do. The pool belongs to the parse; its blocks
+// stay until the pool is gone and every block is back, since notes may outlive the parse (a copy of an object taken
+// in ParseOptions::placing). One thread only, as the parser.
 class NotesPool {
  public:
+  class Blocks;   // what the notes' allocators refer to
+
   NotesPool();
-  // A block of `bytes` (at most block_bytes) aligned for any notes, or nullptr when the request does not fit one.
-  void* take(std::size_t bytes, std::size_t alignment);
-  void give_back(void* block);
+  ~NotesPool();
+  NotesPool(const NotesPool&) = delete;
+  NotesPool& operator=(const NotesPool&) = delete;
+
+  Blocks& blocks() const { return *blocks_; }
 
   static constexpr std::size_t block_bytes = 640;
-  friend bool operator==(const NotesPool& a, const NotesPool& b) { return a.blocks_ == b.blocks_; }
+  // Whether a T fits a block: else it comes from operator new.
+  template <class T>
+  static constexpr bool fits = sizeof(T) <= block_bytes && alignof(T) <= alignof(std::max_align_t);
+  static void* take(Blocks& blocks);
+  static void give_back(Blocks& blocks, void* block);
 
  private:
-  struct Blocks;
-  std::shared_ptr<Blocks> blocks_;
+  Blocks* blocks_;
 };
 
 // The allocator of the notes' shared_ptr control blocks (std::allocate_shared): blocks from the pool, and
@@ -93,17 +101,16 @@ class NotesPool {
 template <class T>
 struct NotesAllocator {
   using value_type = T;
-  explicit NotesAllocator(NotesPool p) : pool(std::move(p)) {}
+  explicit NotesAllocator(NotesPool::Blocks& b) : blocks(&b) {}
   template <class U>
-  NotesAllocator(const NotesAllocator<U>& other) : pool(other.pool) {}   // NOLINT: rebinding, as allocators do
+  NotesAllocator(const NotesAllocator<U>& other) : blocks(other.blocks) {}   // NOLINT: rebinding, as allocators do
 
   T* allocate(std::size_t n) {
-    if (n == 1)
-      if (void* block = pool.take(sizeof(T), alignof(T))) return static_cast<T*>(block);
+    if (n == 1 && NotesPool::fits<T>) return static_cast<T*>(NotesPool::take(*blocks));
     return std::allocator<T>{}.allocate(n);
   }
   void deallocate(T* p, std::size_t n) {
-    if (n == 1 && sizeof(T) <= NotesPool::block_bytes && alignof(T) <= alignof(std::max_align_t)) pool.give_back(p);
+    if (n == 1 && NotesPool::fits<T>) NotesPool::give_back(*blocks, p);
     else std::allocator<T>{}.deallocate(p, n);
   }
   template <class U, class... Args>
@@ -112,9 +119,9 @@ struct NotesAllocator {
     else ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   template <class U>
-  friend bool operator==(const NotesAllocator& a, const NotesAllocator<U>& b) { return a.pool == b.pool; }
+  friend bool operator==(const NotesAllocator& a, const NotesAllocator<U>& b) { return a.blocks == b.blocks; }
 
-  NotesPool pool;
+  NotesPool::Blocks* blocks;
 };
 
 // The object's notes; an object without any reads as the defaults (nothing carried, no gap, nothing skipped).
