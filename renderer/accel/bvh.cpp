@@ -168,7 +168,7 @@ std::uint32_t Accelerator::build_node(std::uint32_t begin, std::uint32_t end, in
     // Binned SAH on every axis with a non-degenerate centroid extent.
     // The axis as a member pointer: Vec3's operator[] chooses among x, y and z with a branch at every call.
     const auto binner_for = [&centroids, &centroid_bounds, &extent](int a) {
-      double Vec3::*const coordinate = a == 0 ? &Vec3::x : (a == 1 ? &Vec3::y : &Vec3::z);
+      double Vec3::* const coordinate = a == 0 ? &Vec3::x : (a == 1 ? &Vec3::y : &Vec3::z);
       const double lo = centroid_bounds.lo[a], scale = sah_bin_count / extent[a];
       return [c = centroids.data(), coordinate, lo, scale](std::uint32_t i) {
         return std::clamp(static_cast<int>((c[i].*coordinate - lo) * scale), 0, sah_bin_count - 1);

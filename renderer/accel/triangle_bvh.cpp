@@ -103,19 +103,22 @@ class Builder {
   float centroid(std::uint32_t t, int axis) const { return 0.5f * (boxes_[t].lo[axis] + boxes_[t].hi[axis]); }
   std::array<float, 3> centroid(std::uint32_t t) const { return {centroid(t, 0), centroid(t, 1), centroid(t, 2)}; }
 
-  // The bin of a triangle's centroid on `axis`, as a callable made once per axis (binned_sah.hpp).
-  auto binner_for(int axis, const Box3f& centroid_box) const {
+  // The bin of a triangle's centroid on `axis`, as a callable made once per axis (binned_sah.hpp). `Axis`: int, or a
+  // std::integral_constant in the SAH sweep, which makes the coordinate's offset a constant.
+  template <class Axis>
+  auto binner_for(Axis axis, const Box3f& centroid_box) const {
     const double lo = centroid_box.lo[axis];
     const double scale = sah_bin_count / (double(centroid_box.hi[axis]) - centroid_box.lo[axis]);
-    return [this, axis, lo, scale](std::uint32_t t) {
-      return std::clamp(static_cast<int>((double(centroid(t, axis)) - lo) * scale), 0, sah_bin_count - 1);
+    return [boxes = boxes_.data(), axis, lo, scale](std::uint32_t t) {
+      const float c = 0.5f * (boxes[t].lo[axis] + boxes[t].hi[axis]);   // centroid(t, axis)
+      return std::clamp(static_cast<int>((double(c) - lo) * scale), 0, sah_bin_count - 1);
     };
   }
 
   // The cheapest binned SAH split over the three axes; partitions order_ and sets mid/axis. False when no split
   // separates the triangles.
   bool sah_split(std::uint32_t begin, std::uint32_t end, const Box3f& centroid_box, int& axis, std::uint32_t& mid) {
-    const auto bin = [&](int a) { return binner_for(a, centroid_box); };
+    const auto bin = [&](auto a) { return binner_for(a, centroid_box); };
     const SahSplit split = cheapest_sah_split<Box3f>(
         order_.data() + begin, order_.data() + end,
         [&](int a) { return centroid_box.hi[a] > centroid_box.lo[a]; }, bin,
