@@ -95,7 +95,7 @@ class Interpreter {
   struct Control {
     enum class Kind { if_branch, while_loop, for_loop, macro_call, switch_block } kind = Kind::if_branch;
     std::size_t frame = 0;       // frame the construct started in (loops must end there)
-    std::size_t resume = 0;      // token index: while: start of the condition; for: first token of the body
+    TokenStream::Position resume;   // while: start of the condition; for: first token of the body
     std::string for_variable;
     double for_end = 0, for_step = 1;
     double switch_value = 0;     // #switch: the value #case/#range compare with
@@ -231,7 +231,6 @@ class Interpreter {
   // Skips raw tokens to the #else/#elseif/#end closing the current level; returns the directive name found
   // ("else", "elseif", "end"), leaving the stream just after that word.
   std::string skip_branch(const Token& opener, bool stop_at_else);
-  void seek(std::size_t frame, std::size_t index) { stream_.seek(frame, index); }
   // An include file's frame and its #local scope, which IncludeExit::leaving_include closes.
   void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
     stream_.push_file(path, at, kind);

@@ -35,7 +35,7 @@ void Interpreter::directive(const Token& hash) {
   if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
     if (k->payload == word_declare_ || k->payload == word_local_) {
       const bool local = k->payload == word_local_;
-      ++stream_.frame().index;
+      stream_.step();
       return directive_declare(local);
     }
   }
@@ -94,11 +94,12 @@ void Interpreter::directive_declare(bool local) {
   std::size_t kept_index = 0;
   SymbolTable::NameId id = 0;
   std::string_view name_text;
-  if (Frame& f = stream_.frame(); !stream_.has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
+  if (const Frame& f = stream_.frame(); !stream_.has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
     const LexedToken& k = lexed(*f.tokens, f.index);
     if (k.kind() == TokenKind::identifier && !symbols_.is_reserved(k.payload)) {
       kept_tokens = f.tokens;
-      kept_index = f.index++;
+      kept_index = f.index;
+      stream_.step();
       id = k.payload;
       name_text = text_of(k);
     }
@@ -119,12 +120,7 @@ void Interpreter::directive_declare(bool local) {
       }
       if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
       // The name is read raw (it is being declared): take it back from the look-ahead.
-      if (stream_.has_pushed_back()) {
-        name_token = stream_.pushed_back();
-        stream_.drop_pushed_back();
-      } else {
-        name_token = raw();
-      }
+      name_token = stream_.raw_or_pushed_back();
     }
     if (name_token->kind != TokenKind::identifier) fail_expected(*name_token, "an identifier after #declare");
     if (reserved(*name_token))   // by its NameId where the token has one
@@ -336,7 +332,7 @@ void Interpreter::directive_end(const Token& at) {
     case Control::Kind::while_loop: {
       if (stream_.depth() - 1 != c.frame) fail_at(at, "a #while loop must end in the file it started in");
       const Control loop = c;
-      seek(loop.frame, loop.resume);
+      stream_.seek(loop.resume);
       if (condition_in_parens()) return;
       controls_.pop_back();
       Token opener = at;
@@ -352,7 +348,7 @@ void Interpreter::directive_end(const Token& at) {
       const double value = std::get<Numeric>(*v).v[0] + c.for_step;
       symbols_.local(c.for_variable, Numeric::scalar(value));
       const bool go_on = c.for_step > 0 ? value <= c.for_end + 1e-10 : value >= c.for_end - 1e-10;
-      if (go_on) { seek(c.frame, c.resume); return; }
+      if (go_on) { stream_.seek(c.resume); return; }
       controls_.pop_back();
       return;
     }
@@ -454,7 +450,7 @@ void Interpreter::directive_while(const Token& at) {
   Control c;
   c.kind = Control::Kind::while_loop;
   c.frame = stream_.depth() - 1;
-  c.resume = stream_.frame().index;   // the condition is re-parsed at every #end
+  c.resume = stream_.position();   // the condition is re-parsed at every #end
   c.loc = at.loc;
   if (stream_.has_pushed_back()) fail_at(at, "internal: #while after a look-ahead");
   if (!condition_in_parens()) { skip_branch(at, false); return; }
@@ -478,7 +474,7 @@ void Interpreter::directive_for(const Token& at) {
   Control c;
   c.kind = Control::Kind::for_loop;
   c.frame = stream_.depth() - 1;
-  c.resume = stream_.frame().index;
+  c.resume = stream_.position();
   c.for_variable = var;
   c.for_end = end;
   c.for_step = step;
@@ -500,10 +496,10 @@ void Interpreter::directive_macro(const Token& at) {
     t = raw();
     if (t.is(",")) t = raw();
   }
-  m.file = stream_.frame().file;
-  m.tokens = stream_.frame().tokens;
-  m.body = stream_.frame().index;
-  m.tokens->keep_from(m.body);   // every call replays the body
+  const TokenStream::ReplayPoint body = stream_.replay_point();   // every call replays the body
+  m.file = body.file;
+  m.tokens = body.tokens;
+  m.body = body.index;
   m.loc = at.loc;
   Token opener = at;
   skip_branch(opener, false);

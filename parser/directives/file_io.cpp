@@ -185,12 +185,7 @@ void Interpreter::directive_read(const Token& at) {
   const std::string file_id(id.text);
   if (!file->reading) fail_at(id, "cannot read from \"" + file->name + "\": it is open for writing");
   // The targets are lvalues, read raw: an undeclared name is fine, and `A[i]` is not read but assigned.
-  auto raw_token = [this]() {
-    if (!stream_.has_pushed_back()) return raw();
-    Token t = stream_.pushed_back();
-    stream_.drop_pushed_back();
-    return t;
-  };
+  auto raw_token = [this]() { return stream_.raw_or_pushed_back(); };
   if (peek_raw().is(",")) raw_token();
   bool at_end = false;
   while (true) {

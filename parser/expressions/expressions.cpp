@@ -792,7 +792,7 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
   // With a token limit every token is counted by next(); a deprecated name warns where it is read.
   if (!options_.expression_programs || options_.max_tokens || stream_.has_pushed_back() || symbols_.any_deprecated())
     return false;
-  Frame& f = stream_.frame();
+  const Frame& f = stream_.frame();
   const unsigned level = full ? 1 : 0;
   std::uint32_t note = f.tokens->note(f.index, level);
   if (note == 0) {
@@ -968,7 +968,7 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
   Run r = floats();
   if (r == Run::wider) r = numerics();
   if (r != Run::value) return false;
-  f.index = p.end;
+  stream_.jump_to(p.end);
   return true;
 }
 

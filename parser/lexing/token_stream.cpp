@@ -274,7 +274,7 @@ Token Interpreter::next() {
 
 bool Interpreter::quick_directive() {
   if (options_.max_tokens || !nesting_room()) return false;
-  Frame& f = stream_.frame();
+  const Frame& f = stream_.frame();
   const LexedToken& hash = lexed(*f.tokens, f.index);
   if (!plain_symbol(&hash, '#')) return false;
   FileTokens& tokens = *f.tokens;
@@ -289,7 +289,7 @@ bool Interpreter::quick_directive() {
   if (options_.cancel && !stream_.count_for_cancel_check(counted)) return false;
   // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
   if (between_statements_ && nesting_ == 0 && stream_.depth() == 1 && controls_.empty()) tokens.release_before(f.index);
-  f.index = word_index + 1;
+  stream_.step(2);   // the '#' and the word
   // next()'s NestingGuard, which nesting_room() has just let in.
   ++nesting_;
   struct Leave {
@@ -309,7 +309,7 @@ bool Interpreter::quick_directive() {
     }
     if (c.kind == Control::Kind::while_loop && stream_.depth() - 1 == c.frame) {
       const Control loop = c;
-      seek(loop.frame, loop.resume);
+      stream_.seek(loop.resume);
       if (condition_in_parens()) return true;
       controls_.pop_back();
       Token opener = make_token(tokens, tokens[word_index]);
@@ -354,13 +354,13 @@ const Token& Interpreter::peek_raw() {
     // the caller. A `#` comes back raw, so the frame still stands just after it.
     if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
         controls_.back().frame == stream_.depth() - 1) {
-      Frame& f = stream_.frame();
+      const Frame& f = stream_.frame();
       const LexedToken& k = lexed(*f.tokens, f.index);
       const std::string_view text(f.file->text.data() + k.offset, k.length());
       if (k.kind() == TokenKind::identifier && text == "end") {
         const Token word = make_token(*f.tokens, k);
         stream_.drop_pushed_back();
-        ++f.index;
+        stream_.step();
         directive_end(word);
         continue;
       }
@@ -380,14 +380,14 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
   // follows in the caller when that is plain.
   while (!stream_.has_pushed_back() && !options_.max_tokens && !controls_.empty() &&
          controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == stream_.depth() - 1) {
-    Frame& f = stream_.frame();
+    const Frame& f = stream_.frame();
     if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
     const LexedToken& word = lexed(*f.tokens, f.index + 1);
     if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
     // raw() reads the '#' and the word; where the cancel check is due, it makes it
     if (options_.cancel && !stream_.count_for_cancel_check(2)) break;
     return_from_macro();   // directive_end of a macro call in its own frame
-    Frame& caller = stream_.frame();
+    const Frame& caller = stream_.frame();
     const LexedToken& k = lexed(*caller.tokens, caller.index);
     if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
   }
@@ -428,7 +428,7 @@ void Interpreter::consume_plain() {
     next();
     return;
   }
-  ++stream_.frame().index;
+  stream_.step();
 }
 
 void Interpreter::skip_ahead() {
@@ -452,7 +452,7 @@ bool Interpreter::fast_operand(Numeric& out) {
   if (options_.max_tokens || !nesting_room()) return false;
   const LexedToken* k = plain_ahead();
   if (!k) return false;
-  Frame& f = stream_.frame();
+  const Frame& f = stream_.frame();
   if (k->kind() == TokenKind::number) {
     out = Numeric::scalar(f.tokens->number(*k));
   } else if (k->kind() == TokenKind::identifier && !symbols_.is_reserved(k->payload)) {
@@ -463,7 +463,7 @@ bool Interpreter::fast_operand(Numeric& out) {
   } else {
     return false;
   }
-  ++f.index;
+  stream_.step();
   if (raw_ahead().is(".")) out = parse_postfix(out);
   return true;
 }
@@ -563,10 +563,16 @@ void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
   if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
 }
 
-void TokenStream::seek(std::size_t frame, std::size_t index) {
-  frames_.resize(frame + 1);
-  frames_.back().index = index;
+void TokenStream::seek(Position p) {
+  frames_.resize(p.frame + 1);
+  frames_.back().index = p.index;
   pushed_back_.clear();
+}
+
+TokenStream::ReplayPoint TokenStream::replay_point() {
+  const Frame& f = frames_.back();
+  f.tokens->keep_from(f.index);
+  return {f.file, f.tokens, f.index};
 }
 
 void TokenStream::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
@@ -616,11 +622,11 @@ void Interpreter::invoke_macro(const Token& name) {
     // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
     if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
                                              !symbols_.is_reserved(k->payload)) {
-      Frame& f = stream_.frame();
+      const Frame& f = stream_.frame();
       const LexedToken& after = lexed(*f.tokens, f.index + 1);
       if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
         if (const auto level = symbols_.level_of(k->payload)) {
-          ++f.index;
+          stream_.step();
           macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, k->payload});
           continue;
         }

@@ -53,13 +53,34 @@ class TokenStream {
   void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind);
   void push_macro(const MacroDefinition& macro, const Token& name);   // the body of a macro called at `name`
   void pop_frame() { frames_.pop_back(); }
-  Frame& frame() { return frames_.back(); }   // the frame read now
+  // The frame read now. Its position changes only through the functions below: step(), jump_to(), seek().
   const Frame& frame() const { return frames_.back(); }
   std::size_t depth() const { return frames_.size(); }   // frames open; the current one is depth() - 1
   std::size_t count(Frame::Kind kind) const;             // frames of that kind open
   const SourceFile& main_file() const { return *frames_.front().file; }
-  // Back to token `index` of frame `frame` (a #while/#for round), the frames above it closed, nothing pushed back.
-  void seek(std::size_t frame, std::size_t index);
+
+  // ---- positions ----
+  // Where the stream reads next: the frame (0 the main file) and its token index. A #while/#for goes back to it
+  // for each round.
+  struct Position {
+    std::size_t frame = 0, index = 0;
+  };
+  Position position() const { return {frames_.size() - 1, frames_.back().index}; }
+  // Back to `p` (a #while/#for round): the frames above its frame closed, nothing pushed back.
+  void seek(Position p);
+  // The frame's next token, whose tokens from there on are kept for replaying (a macro body: every call reads it
+  // again from here).
+  struct ReplayPoint {
+    const SourceFile* file = nullptr;
+    FileTokens* tokens = nullptr;
+    std::size_t index = 0;
+  };
+  ReplayPoint replay_point();
+  // Past `n` tokens of the frame read from its kept tokens (plain_ahead(), the words of a quick directive), as
+  // raw() would have read them (the token limit and cancel check are the caller's).
+  void step(std::size_t n = 1) { frames_.back().index += n; }
+  // To the frame's token `index`, just after the kept tokens an expression program read.
+  void jump_to(std::size_t index) { frames_.back().index = index; }
 
   // ---- kept tokens ----
   // Token `index` of a file, lexed on first use (a lexical error is raised when the stream reaches it, as if the
@@ -96,6 +117,8 @@ class TokenStream {
     pushed_back_.pop_back();
     return t;
   }
+  // The token pushed back, else raw(): what reads an lvalue after a look-ahead (#declare's name, #read's targets).
+  Token raw_or_pushed_back() { return pushed_back_.empty() ? raw() : pop_pushed_back(); }
   // Counts `n` tokens read from the kept tokens, not through raw(), against ParseOptions::cancel's check; false,
   // counting nothing, where the check is due (raw() then makes it).
   bool count_for_cancel_check(std::uint32_t n) {
