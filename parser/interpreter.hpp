@@ -33,6 +33,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/lexing/lexer.hpp"
+#include "parser/lexing/diagnostics.hpp"
 #include "parser/lexing/token_stream.hpp"
 #include "parser/extents/object_extents.hpp"
 #include "parser/parse_scene.hpp"
@@ -106,9 +107,7 @@ class Interpreter {
   Token make_token(const FileTokens& tokens, const LexedToken& t) const { return stream_.make_token(tokens, t); }
   bool ahead_is(std::string_view symbol) { return stream_.ahead_is(symbol); }
   bool frame_ahead_is(std::string_view symbol) { return stream_.frame_ahead_is(symbol); }
-  bool reserved(const Token& t) const {
-    return t.name ? symbols_.is_reserved(t.name) : is_reserved_word(t.text);
-  }
+  bool reserved(const Token& t) const { return sdl::reserved(symbols_, t); }
   Token next();                  // next token after directives and macro calls
   // `#declare`, `#local` and `#end` — the directives loops run — read from the kept tokens, neither the '#' nor
   // the word made a Token unless an error needs it. False, having read nothing, where next() takes the full path:
@@ -582,6 +581,8 @@ class Interpreter {
   const SymbolTable::NameId word_declare_ = symbols_.intern("declare");
   const SymbolTable::NameId word_local_ = symbols_.intern("local");
   const SymbolTable::NameId word_end_ = symbols_.intern("end");
+  // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
+  Diagnostics diagnostics_{options_, stream_, symbols_};
   // The end of an include file for the stream: no directive may stay open in it, and its #local scope closes.
   struct IncludeExit final : TokenStream::IncludeExit {
     explicit IncludeExit(Interpreter& in) : in_(in) {}

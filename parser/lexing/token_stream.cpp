@@ -3,7 +3,6 @@
 // so they may stand between any two tokens (povray-sdl-and-geometry.md §1, items 2 and 5). Both share this file
 // so that the fetcher's calls of raw() stay in one translation unit.
 #include <algorithm>
-#include <iostream>
 
 #include <pthread.h>
 
@@ -235,11 +234,7 @@ bool Interpreter::is_macro_call(const Token& t) const {
   return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
 }
 
-const Value* Interpreter::lookup(const Token& t) const {
-  if (t.element) return &t.element->value;
-  if (t.kind != TokenKind::identifier || reserved(t)) return nullptr;
-  return t.name ? symbols_.find(t.name) : symbols_.find(t.text);
-}
+const Value* Interpreter::lookup(const Token& t) const { return sdl::lookup(symbols_, t); }
 
 Token Interpreter::next() {
   while (true) {
@@ -503,13 +498,12 @@ const SourceFile& TokenStream::file_of(const SourceLoc& loc) const {
   return *files_.front();
 }
 
-void TokenStream::fail(const SourceLoc& loc, const std::string& message) const {
-  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
+ParseError TokenStream::error(const SourceLoc& loc, const std::string& message) const {
+  return ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
 }
 
-void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
-  throw ParseError(loc, message, std::string(stream_.file_of(loc).line_text(loc.line)), stream_.reached_from());
-}
+void TokenStream::fail(const SourceLoc& loc, const std::string& message) const { throw error(loc, message); }
+
 
 std::string TokenStream::reached_from() const {
   // Runaway recursion can stack hundreds of frames: the innermost and outermost levels say enough.
@@ -532,36 +526,18 @@ std::string TokenStream::reached_from() const {
   return out;
 }
 
-void Interpreter::fail_at(const Token& t, const std::string& message) const { fail(t.loc, message); }
-
-std::string Interpreter::describe(const Token& t) const {
-  switch (t.kind) {
-    case TokenKind::end_of_input: return "the end of the file";
-    case TokenKind::number: return "the number " + std::string(t.text);
-    case TokenKind::string: return "the string " + std::string(t.text);
-    case TokenKind::identifier:
-      if (reserved(t)) return "the keyword '" + std::string(t.text) + "'";
-      if (const Value* v = lookup(t))
-        return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
-      return "the undeclared identifier '" + std::string(t.text) + "'";
-    case TokenKind::symbol: return "'" + std::string(t.text) + "'";
-  }
-  return "?";
-}
-
+// The diagnostics (diagnostics.cpp), forwarded out of line as their bodies were here: the call sites compile as
+// before.
+void Interpreter::fail(const SourceLoc& loc, const std::string& message) const { diagnostics_.fail(loc, message); }
+void Interpreter::fail_at(const Token& t, const std::string& message) const { diagnostics_.fail_at(t, message); }
 void Interpreter::fail_expected(const Token& t, std::string_view expected) const {
-  fail_at(t, "expected " + std::string(expected) + ", found " + describe(t));
+  diagnostics_.fail_expected(t, expected);
 }
-
 void Interpreter::fail_unsupported(const Token& t, std::string_view what) const {
-  fail_at(t, "unsupported: " + std::string(what) + " is a POV-Ray feature that povtrace does not render yet");
+  diagnostics_.fail_unsupported(t, what);
 }
-
-void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
-  std::string text = format_diagnostic(loc, "warning", message, file_of(loc).line_text(loc.line));
-  if (const std::string chain = reached_from(); !chain.empty()) text += "\n" + chain;
-  if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
-}
+void Interpreter::warn(const SourceLoc& loc, const std::string& message) const { diagnostics_.warn(loc, message); }
+std::string Interpreter::describe(const Token& t) const { return diagnostics_.describe(t); }
 
 void TokenStream::seek(Position p) {
   frames_.resize(p.frame + 1);

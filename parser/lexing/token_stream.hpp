@@ -151,6 +151,8 @@ class TokenStream {
   // f:l:c"), one line each, for diagnostics; empty in the main file.
   std::string reached_from() const;
   const SourceFile& file_of(const SourceLoc& loc) const;
+  // The error `message` at `loc`, with the line it points to and reached_from() (Diagnostics words the messages).
+  ParseError error(const SourceLoc& loc, const std::string& message) const;
 
  private:
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
