@@ -1,7 +1,8 @@
 // The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
-// owns the token stream (a stack of source frames), the symbol tables, the control-flow stack of directives,
-// and the statement parsers that fill the SceneDescription. Its member functions are implemented by area:
-//   lexing/token_stream.cpp      frames, raw tokens, directive dispatch, macro calls
+// owns the token stream (TokenStream: a stack of source frames), the diagnostics (Diagnostics), the symbol tables,
+// the control-flow stack of directives, and the statement parsers that fill the SceneDescription
+// (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
+//   lexing/token_stream.cpp      the reader over TokenStream: directive dispatch, macro calls
 //   directives/directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
 //   textures/textures.cpp        pigment, finish, texture, interior
