@@ -35,7 +35,7 @@ void Interpreter::directive(const Token& hash) {
   if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
     if (k->payload == word_declare_ || k->payload == word_local_) {
       const bool local = k->payload == word_local_;
-      ++frames_.back().index;
+      stream_.step();
       return directive_declare(local);
     }
   }
@@ -82,7 +82,7 @@ void Interpreter::directive_version(const Token& at) {
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
   if (peek_raw().is(";")) next();
-  if (!statement_seen_ && frames_.size() == 1) scene_.version_given = true;
+  if (!statement_seen_ && stream_.depth() == 1) scene_.version_given = true;
   (void)at;
 }
 
@@ -94,11 +94,12 @@ void Interpreter::directive_declare(bool local) {
   std::size_t kept_index = 0;
   SymbolTable::NameId id = 0;
   std::string_view name_text;
-  if (Frame& f = frames_.back(); pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
+  if (const Frame& f = stream_.frame(); !stream_.has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
     const LexedToken& k = lexed(*f.tokens, f.index);
     if (k.kind() == TokenKind::identifier && !symbols_.is_reserved(k.payload)) {
       kept_tokens = f.tokens;
-      kept_index = f.index++;
+      kept_index = f.index;
+      stream_.step();
       id = k.payload;
       name_text = text_of(k);
     }
@@ -119,12 +120,7 @@ void Interpreter::directive_declare(bool local) {
       }
       if (starts_string(peek_raw())) deprecation->message = parse_string();   // optional
       // The name is read raw (it is being declared): take it back from the look-ahead.
-      if (!pushed_back_.empty()) {
-        name_token = pushed_back_.back();
-        pushed_back_.pop_back();
-      } else {
-        name_token = raw();
-      }
+      name_token = stream_.raw_or_pushed_back();
     }
     if (name_token->kind != TokenKind::identifier) fail_expected(*name_token, "an identifier after #declare");
     if (reserved(*name_token))   // by its NameId where the token has one
@@ -236,7 +232,7 @@ std::optional<std::filesystem::path> Interpreter::find_include(const std::string
 void Interpreter::directive_include(const Token& at) {
   Token name_token = next();
   if (name_token.kind != TokenKind::string) fail_expected(name_token, "a file name string after #include");
-  const std::string name = string_value(name_token, *frames_.back().file, false);
+  const std::string name = string_value(name_token, *stream_.frame().file, false);
   auto path = find_include(name);
   if (!path) {
     std::string searched = "the working directory";
@@ -291,7 +287,7 @@ void Interpreter::directive_if(const Token& at, int kind) {
   }
   Control c;
   c.kind = Control::Kind::if_branch;
-  c.frame = frames_.size() - 1;
+  c.frame = stream_.depth() - 1;
   c.loc = at.loc;
   controls_.push_back(c);
 }
@@ -330,13 +326,13 @@ void Interpreter::directive_end(const Token& at) {
       controls_.pop_back();
       return;
     case Control::Kind::macro_call:
-      if (frames_.size() - 1 != c.frame) fail_at(at, "#end of a macro in another file than its #macro");
+      if (stream_.depth() - 1 != c.frame) fail_at(at, "#end of a macro in another file than its #macro");
       return_from_macro();
       return;
     case Control::Kind::while_loop: {
-      if (frames_.size() - 1 != c.frame) fail_at(at, "a #while loop must end in the file it started in");
+      if (stream_.depth() - 1 != c.frame) fail_at(at, "a #while loop must end in the file it started in");
       const Control loop = c;
-      seek(loop.frame, loop.resume);
+      stream_.seek(loop.resume);
       if (condition_in_parens()) return;
       controls_.pop_back();
       Token opener = at;
@@ -345,14 +341,14 @@ void Interpreter::directive_end(const Token& at) {
       return;
     }
     case Control::Kind::for_loop: {
-      if (frames_.size() - 1 != c.frame) fail_at(at, "a #for loop must end in the file it started in");
+      if (stream_.depth() - 1 != c.frame) fail_at(at, "a #for loop must end in the file it started in");
       const Value* v = symbols_.find(c.for_variable);
       if (!v || !std::holds_alternative<Numeric>(*v))
         fail_at(at, "the #for variable '" + c.for_variable + "' is no longer a float");
       const double value = std::get<Numeric>(*v).v[0] + c.for_step;
       symbols_.local(c.for_variable, Numeric::scalar(value));
       const bool go_on = c.for_step > 0 ? value <= c.for_end + 1e-10 : value >= c.for_end - 1e-10;
-      if (go_on) { seek(c.frame, c.resume); return; }
+      if (go_on) { stream_.seek(c.resume); return; }
       controls_.pop_back();
       return;
     }
@@ -360,7 +356,7 @@ void Interpreter::directive_end(const Token& at) {
 }
 
 void Interpreter::return_from_macro() {
-  frames_.pop_back();
+  stream_.pop_frame();
   symbols_.pop_scope();
   controls_.pop_back();
 }
@@ -370,7 +366,7 @@ void Interpreter::return_from_macro() {
 void Interpreter::directive_switch(const Token& at) {
   Control c;
   c.kind = Control::Kind::switch_block;
-  c.frame = frames_.size() - 1;
+  c.frame = stream_.depth() - 1;
   c.loc = at.loc;
   c.switch_value = [&] {
     const RawOperatorLook raw_look(*this);
@@ -436,7 +432,7 @@ void Interpreter::directive_break(const Token& at) {
     if (controls_.empty()) fail_at(at, "#break outside a #switch, #while, #for or macro");
     const Control c = controls_.back();
     if (c.kind == Control::Kind::macro_call) {
-      if (frames_.size() - 1 != c.frame) fail_at(at, "#break in another file than the macro it returns from");
+      if (stream_.depth() - 1 != c.frame) fail_at(at, "#break in another file than the macro it returns from");
       return_from_macro();
       return;
     }
@@ -453,10 +449,10 @@ void Interpreter::directive_break(const Token& at) {
 void Interpreter::directive_while(const Token& at) {
   Control c;
   c.kind = Control::Kind::while_loop;
-  c.frame = frames_.size() - 1;
-  c.resume = frames_.back().index;   // the condition is re-parsed at every #end
+  c.frame = stream_.depth() - 1;
+  c.resume = stream_.position();   // the condition is re-parsed at every #end
   c.loc = at.loc;
-  if (!pushed_back_.empty()) fail_at(at, "internal: #while after a look-ahead");
+  if (stream_.has_pushed_back()) fail_at(at, "internal: #while after a look-ahead");
   if (!condition_in_parens()) { skip_branch(at, false); return; }
   controls_.push_back(c);
 }
@@ -477,8 +473,8 @@ void Interpreter::directive_for(const Token& at) {
   if (!run) { skip_branch(at, false); return; }
   Control c;
   c.kind = Control::Kind::for_loop;
-  c.frame = frames_.size() - 1;
-  c.resume = frames_.back().index;
+  c.frame = stream_.depth() - 1;
+  c.resume = stream_.position();
   c.for_variable = var;
   c.for_end = end;
   c.for_step = step;
@@ -500,10 +496,10 @@ void Interpreter::directive_macro(const Token& at) {
     t = raw();
     if (t.is(",")) t = raw();
   }
-  m.file = frames_.back().file;
-  m.tokens = frames_.back().tokens;
-  m.body = frames_.back().index;
-  m.tokens->keep_from(m.body);   // every call replays the body
+  const TokenStream::ReplayPoint body = stream_.replay_point();   // every call replays the body
+  m.file = body.file;
+  m.tokens = body.tokens;
+  m.body = body.index;
   m.loc = at.loc;
   Token opener = at;
   skip_branch(opener, false);

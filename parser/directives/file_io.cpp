@@ -116,7 +116,7 @@ fs::path Interpreter::confined_path(const std::string& name, const Token& at) co
   // A dangling symbolic link is left unresolved by weakly_canonical: it could point anywhere.
   if (fs::is_symlink(fs::symlink_status(resolved, ec)))
     fail_at(at, "the file \"" + name + "\" is a symbolic link to a missing file (" + resolved.string() + ")");
-  fs::path scene_dir = frames_.front().file->path.parent_path();
+  fs::path scene_dir = stream_.main_file().path.parent_path();
   if (scene_dir.empty()) scene_dir = cwd;
   else if (scene_dir.is_relative()) scene_dir = cwd / scene_dir;
   const fs::path roots[] = {canonical_directory(scene_dir), canonical_directory(cwd)};
@@ -185,12 +185,7 @@ void Interpreter::directive_read(const Token& at) {
   const std::string file_id(id.text);
   if (!file->reading) fail_at(id, "cannot read from \"" + file->name + "\": it is open for writing");
   // The targets are lvalues, read raw: an undeclared name is fine, and `A[i]` is not read but assigned.
-  auto raw_token = [this]() {
-    if (pushed_back_.empty()) return raw();
-    Token t = pushed_back_.back();
-    pushed_back_.pop_back();
-    return t;
-  };
+  auto raw_token = [this]() { return stream_.raw_or_pushed_back(); };
   if (peek_raw().is(",")) raw_token();
   bool at_end = false;
   while (true) {

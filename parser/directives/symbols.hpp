@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "parser/expressions/values.hpp"
+#include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
 
@@ -127,5 +128,17 @@ class SymbolTable {
   std::vector<std::unordered_map<std::string, Deprecation>> deprecations_;   // by level
   bool any_deprecated_ = false;
 };
+
+// Whether the token is a reserved word: by its NameId where it has one.
+inline bool reserved(const SymbolTable& symbols, const Token& t) {
+  return t.name ? symbols.is_reserved(t.name) : is_reserved_word(t.text);
+}
+// The value an identifier token stands for: an array element's value (Token::element), else the symbol visible
+// under its name; nullptr for anything else.
+inline const Value* lookup(const SymbolTable& symbols, const Token& t) {
+  if (t.element) return &t.element->value;
+  if (t.kind != TokenKind::identifier || reserved(symbols, t)) return nullptr;
+  return t.name ? symbols.find(t.name) : symbols.find(t.text);
+}
 
 }  // namespace povtrace::sdl

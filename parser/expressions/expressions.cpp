@@ -82,7 +82,7 @@ double Interpreter::to_float(const Numeric& n, const Token& at) const {
 class Interpreter::ExpressionStart {
  public:
   explicit ExpressionStart(Interpreter& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
-    if (kept_) tokens_ = in.frames_.back().tokens;
+    if (kept_) tokens_ = in.stream_.frame().tokens;
     else token_ = in.peek();
   }
   Token token() const { return kept_ ? in_.make_token(*tokens_, *kept_) : token_; }
@@ -558,7 +558,7 @@ constexpr int kProgramDepth = 16;
 }  // namespace
 
 bool Interpreter::replaying() const {
-  if (frames_.back().kind == Frame::Kind::macro) return true;
+  if (stream_.frame().kind == Frame::Kind::macro) return true;
   for (const Control& c : controls_)
     if (c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) return true;
   return false;
@@ -790,9 +790,9 @@ enum class Run { value, decline, wider };
 
 bool Interpreter::run_expression_program(bool full, Numeric& out) {
   // With a token limit every token is counted by next(); a deprecated name warns where it is read.
-  if (!options_.expression_programs || options_.max_tokens || !pushed_back_.empty() || symbols_.any_deprecated())
+  if (!options_.expression_programs || options_.max_tokens || stream_.has_pushed_back() || symbols_.any_deprecated())
     return false;
-  Frame& f = frames_.back();
+  const Frame& f = stream_.frame();
   const unsigned level = full ? 1 : 0;
   std::uint32_t note = f.tokens->note(f.index, level);
   if (note == 0) {
@@ -968,7 +968,7 @@ bool Interpreter::run_expression_program(bool full, Numeric& out) {
   Run r = floats();
   if (r == Run::wider) r = numerics();
   if (r != Run::value) return false;
-  f.index = p.end;
+  stream_.jump_to(p.end);
   return true;
 }
 

@@ -1,10 +1,12 @@
-// The token stream: a stack of source frames (main file, include files, macro bodies). Directives and macro
-// calls are executed here, inside the token fetcher, so they may stand between any two tokens
-// (povray-sdl-and-geometry.md §1, items 2 and 5).
+// The token stream: a stack of source frames (main file, include files, macro bodies), read raw by TokenStream
+// (token_stream.hpp). Directives and macro calls are executed here too, by the Interpreter's token fetcher next(),
+// so they may stand between any two tokens (povray-sdl-and-geometry.md §1, items 2 and 5). Both share this file
+// so that the fetcher's calls of raw() stay in one translation unit.
 #include <algorithm>
-#include <iostream>
 
 #include <pthread.h>
+
+#include "parser/lexing/token_stream.hpp"
 
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
@@ -30,7 +32,7 @@ struct SymbolNames final : FileTokens::NameInterner {
 constexpr std::size_t kLexAhead = 256;
 }  // namespace
 
-const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
+const LexedToken& TokenStream::lex_more(FileTokens& tokens, std::size_t index) {
   const SourceFile& file = tokens.file();
   while (tokens.size() <= index) {
     if (tokens.size() > 0 && tokens[tokens.size() - 1].kind() == TokenKind::end_of_input)
@@ -55,7 +57,7 @@ const LexedToken& Interpreter::lex_more(FileTokens& tokens, std::size_t index) {
   return tokens[index];
 }
 
-Token Interpreter::make_token(const FileTokens& tokens, const LexedToken& k) const {
+Token TokenStream::make_token(const FileTokens& tokens, const LexedToken& k) const {
   const SourceFile& file = tokens.file();
   const TokenKind kind = k.kind();
   const std::uint32_t length = k.length();
@@ -81,29 +83,25 @@ Token Interpreter::make_token(const FileTokens& tokens, const LexedToken& k) con
                {}};
 }
 
-FileTokens& Interpreter::tokens_of(const SourceFile& file) {
+FileTokens& TokenStream::tokens_of(const SourceFile& file) {
   for (const auto& t : token_stores_)
     if (&t->file() == &file) return *t;
   return *token_stores_.emplace_back(std::make_unique<FileTokens>(file));
 }
 
-Interpreter::Frame Interpreter::frame_for(const SourceFile& file, std::size_t index, Frame::Kind kind,
+TokenStream::Frame TokenStream::frame_for(const SourceFile& file, std::size_t index, Frame::Kind kind,
                                           const SourceLoc& origin, std::string_view macro_name) {
   return Frame{&file, &tokens_of(file), index, kind, origin, macro_name};
 }
 
-bool Interpreter::ahead_is(std::string_view symbol) {
-  return pushed_back_.empty() ? frame_ahead_is(symbol) : pushed_back_.back().is(symbol);
-}
-
-bool Interpreter::frame_ahead_is(std::string_view symbol) {
+bool TokenStream::frame_ahead_is(std::string_view symbol) {
   Frame& f = frames_.back();
   const LexedToken& k = lexed(*f.tokens, f.index);
   return (k.kind() == TokenKind::symbol || k.kind() == TokenKind::identifier) && k.length() == symbol.size() &&
          std::string_view(f.file->text.data() + k.offset, symbol.size()) == symbol;
 }
 
-Token Interpreter::raw() {
+Token TokenStream::raw() {
   while (true) {
     Frame& f = frames_.back();
     const LexedToken& k = lexed(*f.tokens, f.index);
@@ -126,12 +124,60 @@ Token Interpreter::raw() {
     if (f.kind == Frame::Kind::macro)
       fail(t.loc, "end of file inside a macro body: expected '#end'");
     // End of an include file: its #local variables die with it (§3).
-    if (!controls_.empty() && controls_.back().frame == frames_.size() - 1)
-      fail(controls_.back().loc,
-           "this directive is not closed in its file: expected '#end' before the end of '" + *f.file->name + "'");
+    exit_.leaving_include(frames_.size() - 1, *f.file);
     frames_.pop_back();
-    symbols_.pop_scope();
   }
+}
+
+void TokenStream::open_main(std::unique_ptr<SourceFile> main_file) {
+  frames_.push_back(frame_for(*main_file, 0, Frame::Kind::main, {}, {}));
+  files_.push_back(std::move(main_file));
+}
+
+void TokenStream::push_macro(const MacroDefinition& macro, const Token& name) {
+  frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
+}
+
+std::size_t TokenStream::count(Frame::Kind kind) const {
+  return static_cast<std::size_t>(
+      std::count_if(frames_.begin(), frames_.end(), [kind](const Frame& f) { return f.kind == kind; }));
+}
+
+std::optional<TokenStream::LiteralScanStart> TokenStream::literal_scan_start(bool loop_in_frame) {
+  if (!pushed_back_.empty() || frames_.empty()) return std::nullopt;
+  const Frame& f = frames_.back();
+  // A macro body is always replayed from kept tokens; a #while/#for of this frame goes back to earlier tokens of
+  // the file, and what the scanner reads is not kept for it to replay. (An include file is read anew, with new
+  // tokens, each time it is included.)
+  if (f.kind == Frame::Kind::macro) return std::nullopt;
+  if (loop_in_frame) return std::nullopt;
+  FileTokens& tokens = *f.tokens;
+  // Tokens the lexer read ahead (lex_more reads in runs; accept() may have looked at the first) are dropped: the
+  // scan reads their text itself, from the first of them.
+  if (f.index < tokens.size()) {
+    if (tokens[f.index].kind() == TokenKind::end_of_input) return std::nullopt;
+    tokens.forget_from(f.index);
+  }
+  return LiteralScanStart{tokens.lexed_to, 0};
+}
+
+void TokenStream::literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {
+  Frame& f = frames_.back();
+  f.index += start.ahead;   // the token lexed ahead was the scan's first
+  f.tokens->lexed_to = to;
+  tokens_read_ += tokens;
+}
+
+bool TokenStream::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at,
+                                      std::size_t scan_begin) {
+  constexpr std::size_t kCheckItems = 4096;
+  if (items % kCheckItems != 0) return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+  if (options_.cancel && options_.cancel->load(std::memory_order_relaxed))
+    fail(SourceLoc{frames_.back().file->name, at.line, at.column}, "interrupted while parsing");
+  // The frame owns no const file: files_ holds it. The scan never goes back before `at`, and no loop replays it.
+  if (items > 0) const_cast<SourceFile&>(*frames_.back().file).release(scan_begin, at.offset);
+  // Past the token limit the ordinary reading takes over and reports it where it is reached.
+  return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
 }
 
 namespace {
@@ -176,16 +222,19 @@ Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(
   }
 }
 
+void Interpreter::IncludeExit::leaving_include(std::size_t frame, const SourceFile& file) {
+  if (!in_.controls_.empty() && in_.controls_.back().frame == frame)
+    in_.fail(in_.controls_.back().loc,
+             "this directive is not closed in its file: expected '#end' before the end of '" + *file.name + "'");
+  in_.symbols_.pop_scope();
+}
+
 bool Interpreter::is_macro_call(const Token& t) const {
   const Value* v = lookup(t);
   return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
 }
 
-const Value* Interpreter::lookup(const Token& t) const {
-  if (t.element) return &t.element->value;
-  if (t.kind != TokenKind::identifier || reserved(t)) return nullptr;
-  return t.name ? symbols_.find(t.name) : symbols_.find(t.text);
-}
+const Value* Interpreter::lookup(const Token& t) const { return sdl::lookup(symbols_, t); }
 
 Token Interpreter::next() {
   while (true) {
@@ -194,8 +243,8 @@ Token Interpreter::next() {
     // back after next() are, and are not processed twice (no second deprecation warning).
     // Constructed from its source, not default-constructed and assigned: zero-filling a Token first was a
     // quarter of this function's time.
-    if (pushed_back_.empty() && quick_directive()) continue;
-    Token t = pushed_back_.empty() ? raw() : pop_pushed_back();
+    if (!stream_.has_pushed_back() && quick_directive()) continue;
+    Token t = !stream_.has_pushed_back() ? raw() : pop_pushed_back();
     if (t.processed) return t;
     // A directive or macro call reads its operands with next(), which may run another directive or call before
     // the first one returns (`#declare A = #declare B = …`, `M(M(M(…)))`): they nest like expressions.
@@ -220,7 +269,7 @@ Token Interpreter::next() {
 
 bool Interpreter::quick_directive() {
   if (options_.max_tokens || !nesting_room()) return false;
-  Frame& f = frames_.back();
+  const Frame& f = stream_.frame();
   const LexedToken& hash = lexed(*f.tokens, f.index);
   if (!plain_symbol(&hash, '#')) return false;
   FileTokens& tokens = *f.tokens;
@@ -232,13 +281,10 @@ bool Interpreter::quick_directive() {
   // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
   // cancel check; where it is due, raw() makes it.
   const std::uint32_t counted = declare || local ? 1 : 2;
-  if (options_.cancel) {
-    if (tokens_until_cancel_check_ < counted) return false;
-    tokens_until_cancel_check_ -= counted;
-  }
+  if (options_.cancel && !stream_.count_for_cancel_check(counted)) return false;
   // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
-  if (between_statements_ && nesting_ == 0 && frames_.size() == 1 && controls_.empty()) tokens.release_before(f.index);
-  f.index = word_index + 1;
+  if (between_statements_ && nesting_ == 0 && stream_.depth() == 1 && controls_.empty()) tokens.release_before(f.index);
+  stream_.step(2);   // the '#' and the word
   // next()'s NestingGuard, which nesting_room() has just let in.
   ++nesting_;
   struct Leave {
@@ -256,9 +302,9 @@ bool Interpreter::quick_directive() {
       controls_.pop_back();
       return true;
     }
-    if (c.kind == Control::Kind::while_loop && frames_.size() - 1 == c.frame) {
+    if (c.kind == Control::Kind::while_loop && stream_.depth() - 1 == c.frame) {
       const Control loop = c;
-      seek(loop.frame, loop.resume);
+      stream_.seek(loop.resume);
       if (condition_in_parens()) return true;
       controls_.pop_back();
       Token opener = make_token(tokens, tokens[word_index]);
@@ -296,20 +342,20 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
 
 const Token& Interpreter::peek_raw() {
   while (true) {
-    // The token looked at stays in pushed_back_ (it is called after every operand: no pop and push again).
-    if (pushed_back_.empty()) pushed_back_.push_back(raw());
-    const Token& t = pushed_back_.back();
+    // The token looked at stays pushed back (it is called after every operand: no pop and push again).
+    if (!stream_.has_pushed_back()) stream_.unget(raw());
+    const Token& t = stream_.pushed_back();
     // The #end of the running macro is exempt (POV-Ray checks it first): it returns, and the look goes on in
     // the caller. A `#` comes back raw, so the frame still stands just after it.
     if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
-        controls_.back().frame == frames_.size() - 1) {
-      Frame& f = frames_.back();
+        controls_.back().frame == stream_.depth() - 1) {
+      const Frame& f = stream_.frame();
       const LexedToken& k = lexed(*f.tokens, f.index);
       const std::string_view text(f.file->text.data() + k.offset, k.length());
       if (k.kind() == TokenKind::identifier && text == "end") {
         const Token word = make_token(*f.tokens, k);
-        pushed_back_.pop_back();
-        ++f.index;
+        stream_.drop_pushed_back();
+        stream_.step();
         directive_end(word);
         continue;
       }
@@ -319,26 +365,24 @@ const Token& Interpreter::peek_raw() {
 }
 
 const Token& Interpreter::peek() {
-  pushed_back_.push_back(next());
-  return pushed_back_.back();
+  stream_.unget(next());
+  return stream_.pushed_back();
 }
 
 Interpreter::Ahead Interpreter::raw_ahead_full() {
   // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
   // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
   // follows in the caller when that is plain.
-  while (pushed_back_.empty() && !options_.max_tokens && !controls_.empty() &&
-         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == frames_.size() - 1) {
-    Frame& f = frames_.back();
+  while (!stream_.has_pushed_back() && !options_.max_tokens && !controls_.empty() &&
+         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == stream_.depth() - 1) {
+    const Frame& f = stream_.frame();
     if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
     const LexedToken& word = lexed(*f.tokens, f.index + 1);
     if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
-    if (options_.cancel) {   // raw() reads the '#' and the word; where the cancel check is due, it makes it
-      if (tokens_until_cancel_check_ < 2) break;
-      tokens_until_cancel_check_ -= 2;
-    }
+    // raw() reads the '#' and the word; where the cancel check is due, it makes it
+    if (options_.cancel && !stream_.count_for_cancel_check(2)) break;
     return_from_macro();   // directive_end of a macro call in its own frame
-    Frame& caller = frames_.back();
+    const Frame& caller = stream_.frame();
     const LexedToken& k = lexed(*caller.tokens, caller.index);
     if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
   }
@@ -353,8 +397,8 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
 }
 
 const LexedToken* Interpreter::plain_ahead() {
-  if (!pushed_back_.empty()) return nullptr;
-  const Frame& f = frames_.back();
+  if (stream_.has_pushed_back()) return nullptr;
+  const Frame& f = stream_.frame();
   const LexedToken& k = lexed(*f.tokens, f.index);
   switch (k.kind()) {
     case TokenKind::number:
@@ -379,12 +423,12 @@ void Interpreter::consume_plain() {
     next();
     return;
   }
-  ++frames_.back().index;
+  stream_.step();
 }
 
 void Interpreter::skip_ahead() {
-  if (pushed_back_.empty()) consume_plain();
-  else pushed_back_.pop_back();   // a symbol, which next() would return as it is
+  if (!stream_.has_pushed_back()) consume_plain();
+  else stream_.drop_pushed_back();   // a symbol, which next() would return as it is
 }
 
 void Interpreter::skip_expected(char symbol, std::string_view context) {
@@ -403,7 +447,7 @@ bool Interpreter::fast_operand(Numeric& out) {
   if (options_.max_tokens || !nesting_room()) return false;
   const LexedToken* k = plain_ahead();
   if (!k) return false;
-  Frame& f = frames_.back();
+  const Frame& f = stream_.frame();
   if (k->kind() == TokenKind::number) {
     out = Numeric::scalar(f.tokens->number(*k));
   } else if (k->kind() == TokenKind::identifier && !symbols_.is_reserved(k->payload)) {
@@ -414,7 +458,7 @@ bool Interpreter::fast_operand(Numeric& out) {
   } else {
     return false;
   }
-  ++f.index;
+  stream_.step();
   if (raw_ahead().is(".")) out = parse_postfix(out);
   return true;
 }
@@ -448,17 +492,20 @@ std::string Interpreter::expect_identifier_raw(std::string_view context) {
   return std::string(t.text);
 }
 
-const SourceFile& Interpreter::file_of(const SourceLoc& loc) const {
+const SourceFile& TokenStream::file_of(const SourceLoc& loc) const {
   for (const auto& f : files_)
     if (f->name == loc.file || (loc.file && *f->name == *loc.file)) return *f;
   return *files_.front();
 }
 
-void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
-  throw ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
+ParseError TokenStream::error(const SourceLoc& loc, const std::string& message) const {
+  return ParseError(loc, message, std::string(file_of(loc).line_text(loc.line)), reached_from());
 }
 
-std::string Interpreter::reached_from() const {
+void TokenStream::fail(const SourceLoc& loc, const std::string& message) const { throw error(loc, message); }
+
+
+std::string TokenStream::reached_from() const {
   // Runaway recursion can stack hundreds of frames: the innermost and outermost levels say enough.
   constexpr std::size_t kInner = 10, kOuter = 5;
   const std::size_t levels = frames_.empty() ? 0 : frames_.size() - 1;
@@ -479,48 +526,36 @@ std::string Interpreter::reached_from() const {
   return out;
 }
 
-void Interpreter::fail_at(const Token& t, const std::string& message) const { fail(t.loc, message); }
-
-std::string Interpreter::describe(const Token& t) const {
-  switch (t.kind) {
-    case TokenKind::end_of_input: return "the end of the file";
-    case TokenKind::number: return "the number " + std::string(t.text);
-    case TokenKind::string: return "the string " + std::string(t.text);
-    case TokenKind::identifier:
-      if (reserved(t)) return "the keyword '" + std::string(t.text) + "'";
-      if (const Value* v = lookup(t))
-        return "the " + value_type_name(*v) + " identifier '" + std::string(t.text) + "'";
-      return "the undeclared identifier '" + std::string(t.text) + "'";
-    case TokenKind::symbol: return "'" + std::string(t.text) + "'";
-  }
-  return "?";
-}
-
+// The diagnostics (diagnostics.cpp), forwarded out of line as their bodies were here: the call sites compile as
+// before.
+void Interpreter::fail(const SourceLoc& loc, const std::string& message) const { diagnostics_.fail(loc, message); }
+void Interpreter::fail_at(const Token& t, const std::string& message) const { diagnostics_.fail_at(t, message); }
 void Interpreter::fail_expected(const Token& t, std::string_view expected) const {
-  fail_at(t, "expected " + std::string(expected) + ", found " + describe(t));
+  diagnostics_.fail_expected(t, expected);
 }
-
 void Interpreter::fail_unsupported(const Token& t, std::string_view what) const {
-  fail_at(t, "unsupported: " + std::string(what) + " is a POV-Ray feature that povtrace does not render yet");
+  diagnostics_.fail_unsupported(t, what);
 }
+void Interpreter::warn(const SourceLoc& loc, const std::string& message) const { diagnostics_.warn(loc, message); }
+std::string Interpreter::describe(const Token& t) const { return diagnostics_.describe(t); }
 
-void Interpreter::warn(const SourceLoc& loc, const std::string& message) const {
-  std::string text = format_diagnostic(loc, "warning", message, file_of(loc).line_text(loc.line));
-  if (const std::string chain = reached_from(); !chain.empty()) text += "\n" + chain;
-  if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
-}
-
-void Interpreter::seek(std::size_t frame, std::size_t index) {
-  frames_.resize(frame + 1);
-  frames_.back().index = index;
+void TokenStream::seek(Position p) {
+  frames_.resize(p.frame + 1);
+  frames_.back().index = p.index;
   pushed_back_.clear();
 }
 
-void Interpreter::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
+TokenStream::ReplayPoint TokenStream::replay_point() {
+  const Frame& f = frames_.back();
+  f.tokens->keep_from(f.index);
+  return {f.file, f.tokens, f.index};
+}
+
+void TokenStream::push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
   const auto includes = std::count_if(frames_.begin(), frames_.end(),
                                       [](const Frame& f) { return f.kind == Frame::Kind::include; });
   if (static_cast<std::size_t>(includes) >= kMaxIncludeDepth)
-    fail_at(at, "too many nested #include files (at most " + std::to_string(kMaxIncludeDepth) +
+    fail(at.loc, "too many nested #include files (at most " + std::to_string(kMaxIncludeDepth) +
                     "; does a file include itself?)");
   auto file = std::make_unique<SourceFile>();
   file->path = path;
@@ -528,11 +563,10 @@ void Interpreter::push_file(const std::filesystem::path& path, const Token& at, 
   try {
     file->text = read_text_file(path);
   } catch (const std::exception& e) {
-    fail_at(at, e.what());
+    fail(at.loc, e.what());
   }
   frames_.push_back(frame_for(*file, 0, kind, at.loc, {}));
   files_.push_back(std::move(file));
-  symbols_.push_scope();
 }
 
 // A macro call: arguments are bound in a new symbol table, then the body's tokens continue the stream until
@@ -542,9 +576,7 @@ void Interpreter::invoke_macro(const Token& name) {
   // redefine the macro).
   const Boxed<MacroDefinition> boxed = std::get<Boxed<MacroDefinition>>(*lookup(name));
   const MacroDefinition& macro = *boxed;
-  const auto calls = std::count_if(frames_.begin(), frames_.end(),
-                                   [](const Frame& f) { return f.kind == Frame::Kind::macro; });
-  if (static_cast<std::size_t>(calls) >= kMaxMacroDepth)
+  if (stream_.count(Frame::Kind::macro) >= kMaxMacroDepth)
     fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
                       " levels: runaway recursion in '" + std::string(name.text) + "'?)");
   // Checked here rather than with expect(): its message would be built on every call. A plain '(' is taken
@@ -566,11 +598,11 @@ void Interpreter::invoke_macro(const Token& name) {
     // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
     if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
                                              !symbols_.is_reserved(k->payload)) {
-      Frame& f = frames_.back();
+      const Frame& f = stream_.frame();
       const LexedToken& after = lexed(*f.tokens, f.index + 1);
       if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
         if (const auto level = symbols_.level_of(k->payload)) {
-          ++f.index;
+          stream_.step();
           macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, k->payload});
           continue;
         }
@@ -604,10 +636,10 @@ void Interpreter::invoke_macro(const Token& name) {
   symbols_.push_scope();
   for (std::size_t i = base; i < macro_arguments_.size(); ++i)
     symbols_.bind(macro_arguments_[i].first, std::move(macro_arguments_[i].second));
-  frames_.push_back(Frame{macro.file, macro.tokens, macro.body, Frame::Kind::macro, name.loc, name.text});
+  stream_.push_macro(macro, name);
   Control c;
   c.kind = Control::Kind::macro_call;
-  c.frame = frames_.size() - 1;
+  c.frame = stream_.depth() - 1;
   c.loc = name.loc;
   controls_.push_back(c);
 }

@@ -24,7 +24,7 @@ std::size_t Interpreter::scan_mesh2_items(std::size_t max_items, Take&& take) {
   if (max_items == 0) return 0;
   const auto start = literal_scan_start();
   if (!start) return 0;
-  LiteralScanner s(*frames_.back().file, start->at);
+  LiteralScanner s(*stream_.frame().file, start->at);
   std::size_t items = 0;
   std::array<double, N> v;
   while (items < max_items) {

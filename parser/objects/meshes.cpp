@@ -391,42 +391,13 @@ void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::
 }
 
 std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
-  if (!pushed_back_.empty() || frames_.empty()) return std::nullopt;
-  const Frame& f = frames_.back();
-  // A macro body is always replayed from kept tokens; a #while/#for of this frame goes back to earlier tokens of
-  // the file, and what the scanner reads is not kept for it to replay. (An include file is read anew, with new
-  // tokens, each time it is included.)
-  if (f.kind == Frame::Kind::macro) return std::nullopt;
+  // A #while/#for of this frame goes back to earlier tokens of the file, and what the scanner reads is not kept
+  // for it to replay.
+  bool loop_in_frame = false;
   for (const Control& c : controls_)
-    if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == frames_.size() - 1)
-      return std::nullopt;
-  FileTokens& tokens = *f.tokens;
-  // Tokens the lexer read ahead (lex_more reads in runs; accept() may have looked at the first) are dropped: the
-  // scan reads their text itself, from the first of them.
-  if (f.index < tokens.size()) {
-    if (tokens[f.index].kind() == TokenKind::end_of_input) return std::nullopt;
-    tokens.forget_from(f.index);
-  }
-  return LiteralScanStart{tokens.lexed_to, 0};
-}
-
-void Interpreter::literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {
-  Frame& f = frames_.back();
-  f.index += start.ahead;   // the token lexed ahead was the scan's first
-  f.tokens->lexed_to = to;
-  tokens_read_ += tokens;
-}
-
-bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at,
-                                      std::size_t scan_begin) {
-  constexpr std::size_t kCheckItems = 4096;
-  if (items % kCheckItems != 0) return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
-  if (options_.cancel && options_.cancel->load(std::memory_order_relaxed))
-    fail(SourceLoc{frames_.back().file->name, at.line, at.column}, "interrupted while parsing");
-  // The frame owns no const file: files_ holds it. The scan never goes back before `at`, and no loop replays it.
-  if (items > 0) const_cast<SourceFile&>(*frames_.back().file).release(scan_begin, at.offset);
-  // Past the token limit the ordinary reading takes over and reports it where it is reached.
-  return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
+    if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == stream_.depth() - 1)
+      loop_in_frame = true;
+  return stream_.literal_scan_start(loop_in_frame);
 }
 
 // As many literal `triangle { <…>, <…>, <…> }` / `smooth_triangle { <…>, <…>, … }` items as follow (no
@@ -434,7 +405,7 @@ bool Interpreter::literal_scan_allows(std::uint64_t tokens, std::size_t items, c
 void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
   const auto start = literal_scan_start();
   if (!start) return;
-  const SourceFile& file = *frames_.back().file;
+  const SourceFile& file = *stream_.frame().file;
   LiteralScanner s(file, start->at);
   std::size_t items = 0;
   const std::optional<std::array<double, 6>> no_uv;

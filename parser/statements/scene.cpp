@@ -10,13 +10,12 @@
 
 namespace povtrace::sdl {
 
-Interpreter::Interpreter(const ParseOptions& options) : options_(options) {
+Interpreter::Interpreter(const ParseOptions& options) : stream_(options, symbols_, include_exit_), options_(options) {
   default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
 }
 
 SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
-  frames_.push_back(frame_for(*main_file, 0, Frame::Kind::main, {}, {}));
-  files_.push_back(std::move(main_file));
+  stream_.open_main(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
       {"image_width", options_.image_width}, {"image_height", options_.image_height}, {"clock_delta", 0},
@@ -35,14 +34,14 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
   } catch (const ParseError& e) {
     // Errors from below the interpreter (the lexer: an unterminated string in an include file) get the chain of
     // includes and macro calls that fail() gives the others; the frame stack is still as it was at the throw.
-    if (!e.context().empty() || frames_.size() < 2) throw;
+    if (!e.context().empty() || stream_.depth() < 2) throw;
     throw ParseError(e, reached_from());
   }
   if (!controls_.empty()) {
     const Control& open = controls_.back();
     fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
   }
-  scene_.file_names = file_names_;
+  scene_.file_names = stream_.file_names();
   return std::move(scene_);
 }
 
@@ -183,8 +182,8 @@ bool Interpreter::numeric_ahead() {
 void Interpreter::call_macros_ahead() {
   // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
   // limit (next() counts), no deprecated names (their warnings come from next()).
-  while (pushed_back_.empty() && !options_.max_tokens && !symbols_.any_deprecated()) {
-    const Frame& f = frames_.back();
+  while (!stream_.has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const Frame& f = stream_.frame();
     const LexedToken& k = lexed(*f.tokens, f.index);
     if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
     const Value* v = symbols_.find(k.payload);
