@@ -39,6 +39,7 @@
 #include "parser/directives/symbols.hpp"
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
+#include "parser/parser_part.hpp"
 
 namespace povtrace::sdl {
 
@@ -374,6 +375,10 @@ class Interpreter {
   // `(t [, type])` after the spline identifier `name`: its value at t.
   Numeric call_spline_from_sdl(const Token& name, Boxed<SplineValue> spline);
 
+  // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
+  friend class ParserPart;
+  template <class> friend class PartNestingGuard;
+
   // ---- textures (textures.cpp) ----
   Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
   Finish parse_finish_block(const Token& keyword, const Finish& start);
@@ -655,3 +660,6 @@ class Interpreter {
 };
 
 }  // namespace povtrace::sdl
+
+// The parts' forwarders, now that the Interpreter is complete.
+#include "parser/parser_part_forwarders.hpp"
