@@ -553,7 +553,6 @@ class Interpreter {
   Object parse_height_field(const Token& keyword);
   void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
   void parse_height_field_function(const Token& keyword, HeightField& h, Object& o);
-  std::string locate_image_file(const std::string& name) const;
 
   // ---- text (text.cpp) ----
   Object parse_text(const Token& keyword);

@@ -17,6 +17,7 @@
 
 #include "runtime/image_files.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/textures/image_location.hpp"
 
 namespace povtrace::sdl {
 
@@ -65,7 +66,7 @@ void Interpreter::parse_image_file(const Token& keyword, ImageMap& m, Unsupporte
   if (type != "png") {
     taint(unsupported, UnsupportedFeature{std::string(keyword.text) + " from a " + type + " image", name_token.loc});
   } else {
-    m.file = locate_image_file(name);
+    m.file = locate_image_file(name, options_.library_paths);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(m.file, ec))
       fail_at(name_token, "cannot open the image file '" + name + "' (looked in the working directory and the "
