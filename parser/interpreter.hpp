@@ -5,8 +5,7 @@
 //   lexing/token_stream.cpp      the reader over TokenStream: directive dispatch, macro calls
 //   directives/directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
-//   textures/textures.cpp        pigment, finish, texture, interior
-//   textures/normals.cpp         normal { } perturbations
+//   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/objects.cpp          shapes, CSG, object modifiers and transforms
 //   statements/camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
@@ -17,8 +16,6 @@
 //   objects/implicit_shapes.cpp  superellipsoid, blob
 //   objects/height_field.cpp     height_field
 //   objects/text.cpp             text (fonts read by runtime/truetype*.cpp, laid out by runtime/text_layout.cpp)
-//   textures/image_map.cpp       image_map, bump_map
-//   textures/texture_patterns.cpp patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
 //   objects/csg_modifiers.cpp    inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
 //   objects/sweep_shapes.cpp     lathe, prism, sor
 //   objects/isosurface.cpp       isosurface
@@ -42,6 +39,8 @@
 #include "parser/directives/symbols.hpp"
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
+#include "parser/parser_part.hpp"
+#include "parser/textures/texture_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -356,49 +355,16 @@ class Interpreter {
   // `(t [, type])` after the spline identifier `name`: its value at t.
   Numeric call_spline_from_sdl(const Token& name, Boxed<SplineValue> spline);
 
-  // ---- textures (textures.cpp) ----
-  Pigment parse_pigment_block(const Token& keyword, const Pigment& start);
-  Finish parse_finish_block(const Token& keyword, const Finish& start);
-  void parse_finish_reflection(Finish& f);
-  SkySphere parse_sky_sphere(const Token& keyword);
-  Fog parse_fog(const Token& keyword);
+  // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
+  friend class ParserPart;
+  template <class> friend class PartNestingGuard;
+
+  // ---- textures (textures/texture_parser.hpp) ----
+  TextureParser textures_{*this};
+  // POV-Ray's Allow_Float: a float expression if one follows, else `fallback` (object modifiers, finishes, maps).
   double optional_float(double fallback);
   static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
-  Interior parse_interior_block(const Token& keyword, const Interior& start);
-  std::shared_ptr<const Texture> parse_texture_block(const Token& keyword);
-  bool try_pigment_item(const Token& t, Pigment& p);
-  bool try_transform(const Token& t, Matrix& m);   // translate/rotate/scale/matrix/transform; composes into m
-  Matrix parse_transform_block(const Token& keyword);
   const Texture& default_texture() const { return default_texture_; }
-
-  // ---- pigment patterns, maps and pattern modifiers (pigments.cpp) ----
-  Pigment parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer);
-  Pigment default_pigment() const;
-  Pigment uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer);
-  bool try_pattern(const Token& t, Pigment& p);
-  void set_list_pattern(const Token& t, Pigment& p);   // checker/hexagon/brick without their entries
-  bool try_pattern_modifier(const Token& t, Pigment& p);
-  bool try_pattern_parameter(const Token& t, Pigment& p);
-  bool starts_map_expression(const Token& t) const;
-  std::vector<MapEntry> parse_list_entries(PatternKind kind, std::size_t count);
-  BlendMapValue parse_blend_map(const Token& keyword, bool weights_optional = false);
-  void parse_colour_map_entry(std::vector<MapEntry>& entries);
-  void parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional);
-  void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
-  void parse_warp(const Token& keyword, Pigment& p);
-  RepeatWarp parse_repeat_warp(const Token& keyword);
-
-  // ---- normal { } (normals.cpp) ----
-  Normal parse_normal_block(const Token& keyword, const Normal& start);
-  Normal parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing = "}");
-  void parse_normal_list(Normal& n, int count);
-  void parse_normal_map(const Token& keyword, Normal& n);
-  std::shared_ptr<const Normal> default_normal() const;
-  bool try_normal_pattern(const Token& t, Normal& n);
-  bool try_normal_modifier(const Token& t, Normal& n);
-  std::vector<SlopeEntry> parse_slope_map(const Token& keyword);
-  // The normal a `normal { }` block edits: the layer's own, else the #default texture's, else a new one.
-  Normal starting_normal(const Normal* current) const;
 
   // ---- objects (objects.cpp) ----
   std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source
@@ -499,35 +465,10 @@ class Interpreter {
   void parse_isosurface_container(Isosurface& iso);
   bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
   void correct_isosurface_values(const Token& keyword, Isosurface& iso);
-  // ---- image_map, bump_map (image_map.cpp) ----
-  ImageGamma current_image_gamma() const;
-  void parse_image_file(const Token& keyword, ImageMap& m, Unsupported& unsupported);
-  void parse_image_decoding(ImageMap& m, Unsupported& unsupported);
-  void parse_image_channel(const Token& keyword, ImageMap& m);
-  bool try_image_item(const Token& t, ImageMap& m, bool bump);
-  void parse_image_map(const Token& keyword, Pigment& p);
-  void parse_bump_map(const Token& keyword, Normal& n);
-
-  // ---- patterned textures (texture_patterns.cpp) ----
-  std::shared_ptr<const Texture> parse_texture_contents(const SourceLoc& loc, std::string_view closer);
-  static bool starts_texture_pattern(const Token& t);
-  bool is_list_pattern_word(const Token& t) const;
-  std::shared_ptr<const Texture> transformed_patterned_texture(const Texture& declared, Token t,
-                                                               std::string_view closer);
-  std::vector<TextureMapEntry> parse_texture_list(std::size_t count);
-  BlendMapValue parse_texture_map(const Token& keyword, bool weights_optional);
-  std::vector<TextureMapEntry> parse_tiles(const Token& keyword);
-  std::shared_ptr<const Texture> parse_patterned_texture(const Token& first, const SourceLoc& loc,
-                                                         std::string_view closer);
-  void parse_texture_pattern_modifiers(const Token& first, TexturePattern& pattern, std::string_view closer);
-  // POV-Ray's Link_Textures checks: nothing over a patterned texture, a patterned one over nothing.
-  void refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const;
-
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);
   void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
   void parse_height_field_function(const Token& keyword, HeightField& h, Object& o);
-  std::string locate_image_file(const std::string& name) const;
 
   // ---- text (text.cpp) ----
   Object parse_text(const Token& keyword);
@@ -635,3 +576,6 @@ class Interpreter {
 };
 
 }  // namespace povtrace::sdl
+
+// The parts' forwarders, now that the Interpreter is complete.
+#include "parser/parser_part_forwarders.hpp"

@@ -193,12 +193,12 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
   } else if (k == "transform") {
     no_parameters("transform");
     f->kind = FunctionValue::Kind::transform;
-    f->transform = in_.parse_transform_block(first);
+    f->transform = in_.textures_.parse_transform_block(first);
     f->return_size = 3;
   } else if (k == "pigment") {
     no_parameters("pigment");
     f->kind = FunctionValue::Kind::pigment;
-    const Pigment p = in_.parse_pigment_block(first, Pigment{});
+    const Pigment p = in_.textures_.parse_pigment_block(first, Pigment{});
     // A plain colour can be evaluated without the renderer's patterns; any other pigment is evaluated by the
     // renderer (POV-Ray's f_pigment: Compute_Pigment at the point, without an intersection).
     if (p.pattern == PatternKind::solid && !p.unsupported) f->colour = p.colour;
@@ -225,7 +225,7 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     no_parameters("pattern");
     f->kind = FunctionValue::Kind::pattern;
     if (!in_.peek().is("{")) in_.fail_expected(in_.peek(), "'{' after 'pattern'");
-    const Pigment p = in_.parse_pigment_block(first, Pigment{});
+    const Pigment p = in_.textures_.parse_pigment_block(first, Pigment{});
     f->pigment = std::make_shared<const Pigment>(p);
     if (p.unsupported) f->refusal = p.unsupported;
     else if (const PatternEvaluator* evaluator = in_.pattern_evaluator()) {

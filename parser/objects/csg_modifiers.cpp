@@ -52,7 +52,7 @@ std::vector<Object> Interpreter::parse_bound_clip_objects(const Token& keyword) 
   }
   if (objects.empty()) fail_expected(t, "an object in " + std::string(keyword.text) + " { }");
   Matrix m;
-  while (try_transform(t, m)) t = next();
+  while (textures_.try_transform(t, m)) t = next();
   if (!t.is("}")) fail_expected(t, "a transform or '}' closing " + std::string(keyword.text) + " { }");
   if (!(m == Matrix::identity()))
     for (auto& o : objects) apply_transform(o, m);

@@ -16,21 +16,9 @@
 #include "runtime/function_value.hpp"
 #include "runtime/image_files.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/textures/image_location.hpp"
 
 namespace povtrace::sdl {
-
-std::string Interpreter::locate_image_file(const std::string& name) const {
-  const std::filesystem::path p(name);
-  if (p.is_absolute()) return name;
-  std::error_code ec;   // never throws: a name the file system rejects is not found (see find_include)
-  std::vector<std::filesystem::path> dirs;
-  if (auto cwd = std::filesystem::current_path(ec); !ec) dirs.push_back(std::move(cwd));
-  for (const auto& d : options_.library_paths) dirs.push_back(d);
-  for (const auto& d : dirs)
-    if (std::filesystem::is_regular_file(d / p, ec)) return (d / p).string();
-  return name;
-}
-
 
 // `function W, H { FLOAT_FUNCTION }` (Parse_Image with FUNCTION_TOKEN, Make_Pattern_Image): a W × H image whose
 // pixel (column j, row i from the top) is f(j / (W − 1), i / (H − 1), 0); W and H are rounded to integers. The
@@ -105,7 +93,7 @@ void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h,
   if (type.empty() && lower_extension(name) != ".png") type = "'" + std::filesystem::path(name).extension().string() + "'";
   if (!type.empty() && type != "png")
     taint(o.unsupported, UnsupportedFeature{"a height_field read from a " + type + " image", keyword.loc});
-  h.file = locate_image_file(name);
+  h.file = locate_image_file(name, options_.library_paths);
   while (true) {
     t = next();
     if (t.is("gamma")) {

@@ -45,7 +45,7 @@ void Interpreter::parse_blob_component_modifiers(BlobComponent& c, Object& blob)
     const Token t = next();
     if (t.is("}")) return;
     Matrix m;
-    if (try_transform(t, m)) {
+    if (textures_.try_transform(t, m)) {
       if (c.kind == BlobComponentKind::sphere && (t.is("translate") || t.is("rotate") ||
                                                   (t.is("scale") && is_uniform_scaling(m)))) {
         c.centre = m.point(c.centre);

@@ -292,7 +292,7 @@ Object Interpreter::parse_mesh2(const Token& keyword) {
         check_mesh2_item(t, i, n, "texture");
         const Token tex = next();
         if (!tex.is("texture")) fail_expected(tex, "'texture { … }' in mesh2's texture_list");
-        mesh.textures.push_back(parse_texture_block(tex));
+        mesh.textures.push_back(textures_.parse_texture_block(tex));
         accept(",");
       }
       expect_mesh2_section_end(t, n, "texture");

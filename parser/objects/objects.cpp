@@ -29,7 +29,7 @@ void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind
 
 bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   Matrix m;
-  if (try_transform(t, m)) {
+  if (textures_.try_transform(t, m)) {
     const TransformKind kind = t.is("translate") ? TransformKind::translate
                                : t.is("rotate")  ? TransformKind::rotate
                                : t.is("scale")   ? TransformKind::scale
@@ -39,11 +39,11 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   }
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "texture") {
-    auto tex = parse_texture_block(t);
+    auto tex = textures_.parse_texture_block(t);
     // Each texture statement links its layers on top of what the object already has, so consecutive blocks
     // stack as layers; the last written is the top (§11, pipeline §2 "Layers"). Patterned textures take no part in
     // layering (POV-Ray's Link_Textures).
-    refuse_layering(t, object.texture.get(), tex->patterned());
+    textures_.refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
       apply_deferred_texture_transforms(object, notes_pool_);   // the layers below were moved by them, the new ones are not
       auto layered = std::make_shared<Texture>(*object.texture);
@@ -59,25 +59,26 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     object.uv_mapping = true;
     return true;
   }
-  if (k == "pigment" || k == "normal" || k == "finish") refuse_layering(t, object.texture.get(), false);
+  if (k == "pigment" || k == "normal" || k == "finish") textures_.refuse_layering(t, object.texture.get(), false);
   if (k == "pigment") {
     TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
-    layer.pigment = parse_pigment_block(t, layer.pigment);
+    layer.pigment = textures_.parse_pigment_block(t, layer.pigment);
     return true;
   }
   if (k == "normal") {
     TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
-    layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
+    layer.normal =
+        std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
     taint(object.unsupported, layer.normal->unsupported);
     return true;
   }
   if (k == "finish") {
     TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
-    layer.finish = parse_finish_block(t, layer.finish);
+    layer.finish = textures_.parse_finish_block(t, layer.finish);
     return true;
   }
   if (k == "interior") {
-    object.interior = parse_interior_block(t, object.interior.value_or(Interior{}));
+    object.interior = textures_.parse_interior_block(t, object.interior.value_or(Interior{}));
     return true;
   }
   if (k == "material") {
@@ -114,12 +115,6 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   return false;
 }
 
-// POV-Ray's Link_Textures: nothing is layered over a patterned texture, and a patterned texture over nothing else.
-void Interpreter::refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const {
-  if (existing && existing->patterned()) fail_at(t, "cannot layer over a patterned texture (as in POV-Ray)");
-  if (existing && adding_patterned) fail_at(t, "cannot layer a patterned texture over another (as in POV-Ray)");
-}
-
 // material { [M_id] texture{} interior{} transforms } (§9): a texture and an interior together.
 void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   const NestingGuard guard(*this, keyword);
@@ -138,7 +133,7 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
     Matrix m;
     if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("normal") || t.is("finish"))
       try_object_modifier(t, holder);
-    else if (try_transform(t, m)) transform_texture(holder.texture, m);
+    else if (textures_.try_transform(t, m)) transform_texture(holder.texture, m);
     else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(holder.unsupported, skip_unsupported(t, "the material item '" + std::string(t.text) + "'"));
     else fail_expected(t, "texture, interior, a transform or '}' in material { }");

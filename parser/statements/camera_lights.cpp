@@ -132,7 +132,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
           if (in.camera.v_angle < 0) fail_at(v, "the vertical camera angle must not be negative");
         }
       }
-    } else if (!try_transform(t, in.transform)) {
+    } else if (!textures_.try_transform(t, in.transform)) {
       if (k == "mesh_camera") {
         in.planar = false;
         spherical = false;
@@ -164,7 +164,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
 Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
   Matrix transform;
   while (!t.is("}")) {
-    if (!try_transform(t, transform))
+    if (!textures_.try_transform(t, transform))
       fail_expected(t, "a transform (translate, rotate, scale, matrix, transform) or '}': after a declared camera "
                        "POV-Ray 3.5 and later take only transforms");
     t = next();
@@ -180,7 +180,7 @@ void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_not
 
 bool Interpreter::try_light_modifier(const Token& t, Light& light) {
   Matrix m;
-  if (try_transform(t, m)) { apply_transform(light, m); return true; }
+  if (textures_.try_transform(t, m)) { apply_transform(light, m); return true; }
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "color" || k == "colour" || k == "rgb" || k == "rgbf" || k == "rgbt" || k == "rgbft") {
     unget(t);

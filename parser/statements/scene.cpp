@@ -62,7 +62,7 @@ void Interpreter::parse_statement(const Token& t) {
   if (k == "background") return parse_background(t);
   if (k == "sky_sphere") {
     if (scene_.sky_sphere) warn(t.loc, "only one sky_sphere is used: this one replaces the earlier one");
-    SkySphere sky = parse_sky_sphere(t);
+    SkySphere sky = textures_.parse_sky_sphere(t);
     refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
     scene_.sky_sphere = std::move(sky);
     return;
@@ -75,7 +75,7 @@ void Interpreter::parse_statement(const Token& t) {
   }
   if (k == "fog") {
     // POV-Ray keeps fogs in a list, the newest first.
-    scene_.fogs.insert(scene_.fogs.begin(), parse_fog(t));
+    scene_.fogs.insert(scene_.fogs.begin(), textures_.parse_fog(t));
     return;
   }
   static const std::string_view unsupported[] = {"media", "rainbow", "photons", "radiosity"};
@@ -145,6 +145,25 @@ void Interpreter::parse_background(const Token& keyword) {
   expect("}", " after the background colour");
 }
 
+// POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the
+// default. A keyword that is an item of the enclosing block (`metallic falloff 2`) is no float.
+double Interpreter::optional_float(double fallback) {
+  const Token n = peek();
+  static const std::string_view float_words[] = {"true", "false", "on", "off", "yes", "no", "pi", "version",
+                                                 "clock", "clock_delta", "clock_on"};
+  bool starts = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") || n.is("!");
+  if (n.kind == TokenKind::identifier) {
+    if (!is_reserved_word(n.text)) {
+      const Value* v = lookup(n);
+      starts = v && std::holds_alternative<Numeric>(*v);
+    } else {
+      for (auto w : float_words) starts = starts || n.text == w;
+      starts = starts || is_float_function(n.text);
+    }
+  }
+  return starts ? parse_float() : fallback;
+}
+
 // #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
 void Interpreter::parse_default(const Token& keyword) {
   (void)keyword;
@@ -154,15 +173,16 @@ void Interpreter::parse_default(const Token& keyword) {
     if (t.is("}")) return;
     placed_default_texture_.reset();   // the #default changes: later objects get a new shared copy
     TextureLayer& layer = default_texture_.layers.back();
-    if (t.is("pigment")) layer.pigment = parse_pigment_block(t, layer.pigment);
-    else if (t.is("finish")) layer.finish = parse_finish_block(t, layer.finish);
+    if (t.is("pigment")) layer.pigment = textures_.parse_pigment_block(t, layer.pigment);
+    else if (t.is("finish")) layer.finish = textures_.parse_finish_block(t, layer.finish);
     else if (t.is("texture")) {
-      auto tex = parse_texture_block(t);
+      auto tex = textures_.parse_texture_block(t);
       if (tex->patterned()) fail_unsupported(t, "a patterned #default texture");
       default_texture_ = *tex;
     }
     else if (t.is("normal")) {
-      layer.normal = std::make_shared<const Normal>(parse_normal_block(t, starting_normal(layer.normal.get())));
+      layer.normal =
+          std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
       refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
     } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
@@ -213,27 +233,27 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   }
   const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
   if (k == "texture") {
-    auto tex = parse_texture_block(first);
+    auto tex = textures_.parse_texture_block(first);
     // Several texture blocks in a row declare a layered texture.
     while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
       Token more = next();
-      auto top = parse_texture_block(more);
-      refuse_layering(more, tex.get(), top->patterned());
+      auto top = textures_.parse_texture_block(more);
+      textures_.refuse_layering(more, tex.get(), top->patterned());
       auto layered = std::make_shared<Texture>(*tex);
       for (const auto& l : top->layers) layered->layers.push_back(l);
       tex = std::move(layered);
     }
     return Value(tex);
   }
-  if (k == "pigment") return Value(parse_pigment_block(first, default_texture().layers.back().pigment));
-  if (k == "finish") return Value(parse_finish_block(first, default_texture().layers.back().finish));
-  if (k == "normal") return Value(parse_normal_block(first, starting_normal(nullptr)));
-  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(parse_blend_map(first));
-  if (k == "texture_map") return Value(parse_texture_map(first, false));
-  if (k == "interior") return Value(parse_interior_block(first, Interior{}));
+  if (k == "pigment") return Value(textures_.parse_pigment_block(first, default_texture().layers.back().pigment));
+  if (k == "finish") return Value(textures_.parse_finish_block(first, default_texture().layers.back().finish));
+  if (k == "normal") return Value(textures_.parse_normal_block(first, textures_.starting_normal(nullptr)));
+  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(textures_.parse_blend_map(first));
+  if (k == "texture_map") return Value(textures_.parse_texture_map(first, false));
+  if (k == "interior") return Value(textures_.parse_interior_block(first, Interior{}));
   if (k == "camera") return Value(parse_camera(first));
-  if (k == "sky_sphere") return Value(parse_sky_sphere(first));
-  if (k == "transform") return Value(parse_transform_block(first));
+  if (k == "sky_sphere") return Value(textures_.parse_sky_sphere(first));
+  if (k == "transform") return Value(textures_.parse_transform_block(first));
   if (k == "material") {
     Object holder;
     parse_material_block(first, holder);

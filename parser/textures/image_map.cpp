@@ -17,6 +17,8 @@
 
 #include "runtime/image_files.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/textures/texture_parser.hpp"
+#include "parser/textures/image_location.hpp"
 
 namespace povtrace::sdl {
 
@@ -31,19 +33,19 @@ bool image_extension(std::string_view ext) {
 
 // POV-Ray's gamma handling mode at this point of the parse (parse.cpp, tokenize.cpp: #version and assumed_gamma
 // set it; a scene without #version counts as 3.62).
-ImageGamma Interpreter::current_image_gamma() const {
+ImageGamma TextureParser::current_image_gamma() const {
   ImageGamma g;
-  const int version = version_directive_seen_ ? scene_.language_version : 362;
-  if (scene_.settings.assumed_gamma)
+  const int version = version_directive_seen() ? language_version() : 362;
+  if (assumed_gamma())
     g.mode = version < 370 ? ImageGammaMode::file_or_working : ImageGammaMode::file_or_srgb;
   else
-    g.mode = version_directive_seen_ && version >= 370 ? ImageGammaMode::file_or_srgb : ImageGammaMode::none;
-  g.working = scene_.settings.assumed_gamma.value_or(1.0);
+    g.mode = version_directive_seen() && version >= 370 ? ImageGammaMode::file_or_srgb : ImageGammaMode::none;
+  g.working = assumed_gamma().value_or(1.0);
   return g;
 }
 
 // `[type] "file" [gamma G] [premultiplied B]`: the file located and checked, or `unsupported` set.
-void Interpreter::parse_image_file(const Token& keyword, ImageMap& m, Unsupported& unsupported) {
+void TextureParser::parse_image_file(const Token& keyword, ImageMap& m, Unsupported& unsupported) {
   Token t = next();
   if (t.is("function")) {
     taint(unsupported, skip_unsupported(t, "an image made from a function in " + std::string(keyword.text)));
@@ -65,7 +67,7 @@ void Interpreter::parse_image_file(const Token& keyword, ImageMap& m, Unsupporte
   if (type != "png") {
     taint(unsupported, UnsupportedFeature{std::string(keyword.text) + " from a " + type + " image", name_token.loc});
   } else {
-    m.file = locate_image_file(name);
+    m.file = locate_image_file(name, library_paths());
     std::error_code ec;
     if (!std::filesystem::is_regular_file(m.file, ec))
       fail_at(name_token, "cannot open the image file '" + name + "' (looked in the working directory and the "
@@ -75,7 +77,7 @@ void Interpreter::parse_image_file(const Token& keyword, ImageMap& m, Unsupporte
   parse_image_decoding(m, unsupported);
 }
 
-void Interpreter::parse_image_decoding(ImageMap& m, Unsupported& unsupported) {
+void TextureParser::parse_image_decoding(ImageMap& m, Unsupported& unsupported) {
   while (true) {
     Token t = next();
     if (t.is("gamma")) {
@@ -99,7 +101,7 @@ void Interpreter::parse_image_decoding(ImageMap& m, Unsupported& unsupported) {
 }
 
 // `filter|transmit all F` or `filter|transmit N, F` after the keyword.
-void Interpreter::parse_image_channel(const Token& keyword, ImageMap& m) {
+void TextureParser::parse_image_channel(const Token& keyword, ImageMap& m) {
   ImageChannelSetting s;
   s.transmit = keyword.is("transmit");
   s.loc = keyword.loc;
@@ -116,7 +118,7 @@ void Interpreter::parse_image_channel(const Token& keyword, ImageMap& m) {
   m.has_filter = true;
 }
 
-bool Interpreter::try_image_item(const Token& t, ImageMap& m, bool bump) {
+bool TextureParser::try_image_item(const Token& t, ImageMap& m, bool bump) {
   if (t.is("once")) { m.once = true; return true; }
   if (t.is("use_colour") || t.is("use_color")) { m.use_index = false; return true; }
   if (t.is("use_index")) { m.use_index = true; return true; }
@@ -155,7 +157,7 @@ bool Interpreter::try_image_item(const Token& t, ImageMap& m, bool bump) {
 }
 
 // image_map { … } (the pigment's pattern).
-void Interpreter::parse_image_map(const Token& keyword, Pigment& p) {
+void TextureParser::parse_image_map(const Token& keyword, Pigment& p) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'image_map'");
   auto m = std::make_shared<ImageMap>();
@@ -172,7 +174,7 @@ void Interpreter::parse_image_map(const Token& keyword, Pigment& p) {
 
 // bump_map { … } (the normal's pattern): the image is read without gamma handling unless `gamma` is given, and
 // then decoded with that gamma alone (Parse_Image's GammaCorrect off for bump maps).
-void Interpreter::parse_bump_map(const Token& keyword, Normal& n) {
+void TextureParser::parse_bump_map(const Token& keyword, Normal& n) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'bump_map'");
   auto m = std::make_shared<ImageMap>();

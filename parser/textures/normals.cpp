@@ -2,6 +2,7 @@
 // NORMAL_TYPE): the normal-only patterns, any pigment pattern used as a normal, the amount after the pattern,
 // bump_size, accuracy, no_bump_scale, slope_map, and the pattern modifiers shared with pigments.
 #include "parser/interpreter.hpp"
+#include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -24,7 +25,7 @@ constexpr double kDefaultAccuracy = 0.02;
 
 // The pattern keyword of a normal: a normal-only pattern, a list pattern (whose entries, when written, are
 // normals: refused by name until normal maps are rendered) or any pigment pattern povtrace renders.
-bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
+bool TextureParser::try_normal_pattern(const Token& t, Normal& n) {
   for (const auto& k : kNormalOnly)
     if (t.is(k.keyword)) {
       n.kind = k.kind;
@@ -73,7 +74,7 @@ bool Interpreter::try_normal_pattern(const Token& t, Normal& n) {
 }
 
 // `slope_map { [v, <height, slope>] … }` (Parse_Blend_Map with SLOPE_TYPE). The normal-only patterns ignore it.
-std::vector<SlopeEntry> Interpreter::parse_slope_map(const Token& keyword) {
+std::vector<SlopeEntry> TextureParser::parse_slope_map(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'slope_map'");
   std::vector<SlopeEntry> entries;
@@ -95,7 +96,7 @@ std::vector<SlopeEntry> Interpreter::parse_slope_map(const Token& keyword) {
   return entries;
 }
 
-bool Interpreter::try_normal_modifier(const Token& t, Normal& n) {
+bool TextureParser::try_normal_modifier(const Token& t, Normal& n) {
   Matrix m;
   if (try_transform(t, m)) {
     n.pattern.world_from_pattern = n.pattern.world_from_pattern * m;
@@ -124,7 +125,7 @@ bool Interpreter::try_normal_modifier(const Token& t, Normal& n) {
 // The normals of a list pattern (Parse_Blend_List with NORMAL_TYPE): `checker normal { … }, normal { … }`. With none
 // written the pattern is an ordinary pattern normal; otherwise the entries take the values 0, 1, 2 and those not
 // written are the #default normal (none: the surface normal is left as it is).
-void Interpreter::parse_normal_list(Normal& n, int count) {
+void TextureParser::parse_normal_list(Normal& n, int count) {
   std::vector<NormalMapEntry> entries;
   while (static_cast<int>(entries.size()) < count && peek().is("normal")) {
     const Token entry = next();
@@ -140,7 +141,7 @@ void Interpreter::parse_normal_list(Normal& n, int count) {
 
 // `normal_map { [value NORMAL_BODY] … }` (Parse_Blend_Map with NORMAL_TYPE): each entry's normal starts from the
 // #default normal. An average's entries take an optional weight (1 when left out) and keep their written order.
-void Interpreter::parse_normal_map(const Token& keyword, Normal& n) {
+void TextureParser::parse_normal_map(const Token& keyword, Normal& n) {
   const NestingGuard guard(*this, keyword);
   if (n.kind != NormalKind::pattern && n.kind != NormalKind::average)
     fail_unsupported(keyword, "'normal_map' with a normal-only pattern");
@@ -162,9 +163,9 @@ void Interpreter::parse_normal_map(const Token& keyword, Normal& n) {
 }
 
 // The #default normal as a map entry: null when there is none (the entry then leaves the normal as it is).
-std::shared_ptr<const Normal> Interpreter::default_normal() const { return default_texture().layers.back().normal; }
+std::shared_ptr<const Normal> TextureParser::default_normal() const { return default_texture().layers.back().normal; }
 
-Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start) {
+Normal TextureParser::parse_normal_block(const Token& keyword, const Normal& start) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'normal'");
   return parse_normal_contents(keyword, start);
@@ -172,7 +173,7 @@ Normal Interpreter::parse_normal_block(const Token& keyword, const Normal& start
 
 // The inside of normal { … } up to its '}'. `uv_mapping NORMAL_BODY`: the rest of the block is a normal (from the
 // #default one) evaluated at the hit's <u, v, 0> (POV-Ray's UV_MAP_PATTERN in Parse_Pattern).
-Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing) {
+Normal TextureParser::parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing) {
   Normal n = start;
   n.loc = keyword.loc;
   Token t = next();
@@ -214,7 +215,7 @@ Normal Interpreter::parse_normal_contents(const Token& keyword, const Normal& st
   return n;
 }
 
-Normal Interpreter::starting_normal(const Normal* current) const {
+Normal TextureParser::starting_normal(const Normal* current) const {
   if (current) return *current;
   const auto& defaults = default_texture().layers.back().normal;
   return defaults ? *defaults : Normal{};

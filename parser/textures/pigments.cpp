@@ -6,6 +6,7 @@
 
 #include "runtime/function_value.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -70,14 +71,14 @@ Turbulence& classic_turbulence(Pigment& p) {
 int clamped_octaves(double v) { return std::clamp(static_cast<int>(v), 1, 10); }
 }  // namespace
 
-bool Interpreter::starts_map_expression(const Token& t) const {
+bool TextureParser::starts_map_expression(const Token& t) const {
   return starts_colour(t) || t.kind == TokenKind::number || t.is("<") || t.is("(") || t.is("-") || t.is("+");
 }
 
 // `checker C1, C2` / `hexagon C1, C2, C3` / `brick C1, C2`, or the same with `pigment { }` entries: all colours or
 // all pigments, decided by the first token; entries not written take the default colours, or the #default
 // pigment when the list is of pigments (Parse_Blend_List).
-std::vector<MapEntry> Interpreter::parse_list_entries(PatternKind kind, std::size_t count) {
+std::vector<MapEntry> TextureParser::parse_list_entries(PatternKind kind, std::size_t count) {
   std::vector<MapEntry> entries;
   const bool pigments = peek().is("pigment");
   while (entries.size() < count) {
@@ -105,7 +106,7 @@ std::vector<MapEntry> Interpreter::parse_list_entries(PatternKind kind, std::siz
   return entries;
 }
 
-void Interpreter::set_list_pattern(const Token& t, Pigment& p) {
+void TextureParser::set_list_pattern(const Token& t, Pigment& p) {
   const PatternKind kind = t.is("checker") ? PatternKind::checker
                            : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
   // A brick pigment edited with `brick` again keeps its size and mortar.
@@ -117,7 +118,7 @@ void Interpreter::set_list_pattern(const Token& t, Pigment& p) {
   p.frequency = 0.0;
 }
 
-bool Interpreter::try_pattern(const Token& t, Pigment& p) {
+bool TextureParser::try_pattern(const Token& t, Pigment& p) {
   if (t.is("image_map")) {
     parse_image_map(t, p);
     return true;
@@ -179,7 +180,7 @@ bool Interpreter::try_pattern(const Token& t, Pigment& p) {
   return false;
 }
 
-void Interpreter::refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map) {
+void TextureParser::refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map) {
   if (p.unsupported) return;   // the pattern may be one povtrace skipped: its kind is unknown here
   const bool solid = p.pattern == PatternKind::solid || p.pattern == PatternKind::image_map;
   const bool average = p.pattern == PatternKind::average;
@@ -188,7 +189,7 @@ void Interpreter::refuse_map_for_pattern(const Token& t, const Pigment& p, bool 
 }
 
 // `[v C]`, `[v, C]`, `[v <r,g,b,f,t>]` or the old two-colour form `[v1, v2 color C1 color C2]`.
-void Interpreter::parse_colour_map_entry(std::vector<MapEntry>& entries) {
+void TextureParser::parse_colour_map_entry(std::vector<MapEntry>& entries) {
   MapEntry first;
   first.value = single(parse_float());
   accept(",");
@@ -217,7 +218,7 @@ void Interpreter::parse_colour_map_entry(std::vector<MapEntry>& entries) {
 }
 
 // `[v pigment-body]`; in an average's map the weight may be left out (1).
-void Interpreter::parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional) {
+void TextureParser::parse_pigment_map_entry(std::vector<MapEntry>& entries, bool weights_optional) {
   MapEntry e;
   const Token n = peek();
   const bool has_value = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") ||
@@ -229,7 +230,7 @@ void Interpreter::parse_pigment_map_entry(std::vector<MapEntry>& entries, bool w
   entries.push_back(std::move(e));
 }
 
-BlendMapValue Interpreter::parse_blend_map(const Token& keyword, bool weights_optional) {
+BlendMapValue TextureParser::parse_blend_map(const Token& keyword, bool weights_optional) {
   const NestingGuard guard(*this, keyword);
   BlendMapValue map;
   map.pigments = keyword.is("pigment_map");
@@ -259,7 +260,7 @@ BlendMapValue Interpreter::parse_blend_map(const Token& keyword, bool weights_op
 }
 
 // `warp { turbulence V [octaves N] [omega W] [lambda L] }`; other warps are refused by name.
-void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
+void TextureParser::parse_warp(const Token& keyword, Pigment& p) {
   const NestingGuard guard(*this, keyword);
   const Token open = expect("{", " after 'warp'");
   Token kind = next();
@@ -294,7 +295,7 @@ void Interpreter::parse_warp(const Token& keyword, Pigment& p) {
 }
 
 // `repeat V [offset O] [flip F] }` (Parse_Warp): V must name exactly one axis.
-RepeatWarp Interpreter::parse_repeat_warp(const Token& keyword) {
+RepeatWarp TextureParser::parse_repeat_warp(const Token& keyword) {
   RepeatWarp r;
   const Vec3 v = parse_vector();
   int axes = 0;
@@ -316,7 +317,7 @@ RepeatWarp Interpreter::parse_repeat_warp(const Token& keyword) {
   return r;
 }
 
-bool Interpreter::try_pattern_modifier(const Token& t, Pigment& p) {
+bool TextureParser::try_pattern_modifier(const Token& t, Pigment& p) {
   if (t.is("color_map") || t.is("colour_map") || t.is("pigment_map")) {
     const bool pigment_map = t.is("pigment_map");
     refuse_map_for_pattern(t, p, pigment_map);
@@ -342,7 +343,7 @@ bool Interpreter::try_pattern_modifier(const Token& t, Pigment& p) {
 }
 
 // Parameters that belong to one pattern; POV-Ray refuses them with any other (Not_With).
-bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
+bool TextureParser::try_pattern_parameter(const Token& t, Pigment& p) {
   auto require = [&](PatternKind kind, std::string_view name) {
     if (p.pattern != kind)
       fail_at(t, "'" + std::string(t.text) + "' cannot be used with a non-" + std::string(name) + " pattern");
@@ -394,7 +395,7 @@ bool Interpreter::try_pattern_parameter(const Token& t, Pigment& p) {
 
 // `uv_mapping PIGMENT_BODY`: the rest of the block is a pigment (from the #default one) evaluated at the hit's
 // <u, v, 0> (POV-Ray's UV_MAP_PATTERN, Parse_Item_Into_Blend_List); what came before stays but has no effect.
-Pigment Interpreter::uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer) {
+Pigment TextureParser::uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer) {
   MapEntry e;
   e.pigment = std::make_shared<const Pigment>(parse_pigment_contents(default_pigment(), loc, closer));
   outer.pattern = PatternKind::uv_mapping;
@@ -404,11 +405,11 @@ Pigment Interpreter::uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std:
   return outer;
 }
 
-Pigment Interpreter::default_pigment() const { return default_texture().layers.back().pigment; }
+Pigment TextureParser::default_pigment() const { return default_texture().layers.back().pigment; }
 
 // The inside of `pigment { … }` or of a pigment_map entry `[v …]`, up to `closer`: an optional pigment
 // identifier, then a pattern or colour and modifiers.
-Pigment Interpreter::parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer) {
+Pigment TextureParser::parse_pigment_contents(const Pigment& start, const SourceLoc& loc, std::string_view closer) {
   Pigment p = start;
   p.loc = loc;
   Token t = next();

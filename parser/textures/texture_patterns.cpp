@@ -13,6 +13,7 @@
 // - A declared patterned texture takes transforms only. Nothing is layered over a patterned texture, and it is
 //   layered over nothing (objects.cpp); `material_map` is refused by name.
 #include "parser/interpreter.hpp"
+#include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -27,7 +28,7 @@ bool is_list_pattern(PatternKind k) {
 constexpr std::size_t kMaxMapEntries = 256;   // POV-Ray's MAX_BLEND_MAP_ENTRIES
 }  // namespace
 
-bool Interpreter::starts_texture_pattern(const Token& t) {
+bool TextureParser::starts_texture_pattern(const Token& t) {
   if (t.kind != TokenKind::identifier || !is_reserved_word(t.text)) return false;
   if (t.is("uv_mapping") || t.is("tiles") || t.is("material_map") || t.is("image_map")) return true;
   static const std::string_view patterns[] = {
@@ -40,7 +41,7 @@ bool Interpreter::starts_texture_pattern(const Token& t) {
 }
 
 // The rest of a texture block after a declared patterned texture: transforms only (Parse_Texture_Transform).
-std::shared_ptr<const Texture> Interpreter::transformed_patterned_texture(const Texture& declared, Token t,
+std::shared_ptr<const Texture> TextureParser::transformed_patterned_texture(const Texture& declared, Token t,
                                                                           std::string_view closer) {
   auto tex = std::make_shared<const Texture>(declared);
   for (; !t.is(closer); t = next()) {
@@ -53,7 +54,7 @@ std::shared_ptr<const Texture> Interpreter::transformed_patterned_texture(const 
 }
 
 // `texture { … }` entries of checker, hexagon and brick, with the #default texture for the missing ones.
-std::vector<TextureMapEntry> Interpreter::parse_texture_list(std::size_t count) {
+std::vector<TextureMapEntry> TextureParser::parse_texture_list(std::size_t count) {
   std::vector<TextureMapEntry> entries;
   while (entries.size() < count && peek().is("texture")) {
     const Token keyword = next();
@@ -66,7 +67,7 @@ std::vector<TextureMapEntry> Interpreter::parse_texture_list(std::size_t count) 
 }
 
 // texture_map { [v TEXTURE_BODY] … } or texture_map { TM_id }.
-BlendMapValue Interpreter::parse_texture_map(const Token& keyword, bool weights_optional) {
+BlendMapValue TextureParser::parse_texture_map(const Token& keyword, bool weights_optional) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'texture_map'");
   BlendMapValue map;
@@ -94,7 +95,7 @@ BlendMapValue Interpreter::parse_texture_map(const Token& keyword, bool weights_
 
 // tiles { texture {…}… tile2 texture {…}… }: a checker of two (possibly layered) textures, the first written
 // entry odd, the second even (Parse_Tiles).
-std::vector<TextureMapEntry> Interpreter::parse_tiles(const Token& keyword) {
+std::vector<TextureMapEntry> TextureParser::parse_tiles(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'tiles'");
   auto layered = [&]() {
@@ -122,7 +123,7 @@ std::vector<TextureMapEntry> Interpreter::parse_tiles(const Token& keyword) {
 }
 
 // A patterned texture from its first token `first` up to `closer`.
-std::shared_ptr<const Texture> Interpreter::parse_patterned_texture(const Token& first, const SourceLoc& loc,
+std::shared_ptr<const Texture> TextureParser::parse_patterned_texture(const Token& first, const SourceLoc& loc,
                                                                     std::string_view closer) {
   Texture tex;
   tex.loc = loc;
@@ -159,12 +160,12 @@ std::shared_ptr<const Texture> Interpreter::parse_patterned_texture(const Token&
   return std::make_shared<const Texture>(std::move(tex));
 }
 
-bool Interpreter::is_list_pattern_word(const Token& t) const {
+bool TextureParser::is_list_pattern_word(const Token& t) const {
   return t.is("checker") || t.is("hexagon") || t.is("brick");
 }
 
 // Modifiers and transforms of a patterned texture up to `closer`.
-void Interpreter::parse_texture_pattern_modifiers(const Token& first, TexturePattern& pattern,
+void TextureParser::parse_texture_pattern_modifiers(const Token& first, TexturePattern& pattern,
                                                   std::string_view closer) {
   Pigment& carrier = pattern.pattern;
   for (Token t = next(); !t.is(closer); t = next()) {
@@ -187,6 +188,12 @@ void Interpreter::parse_texture_pattern_modifiers(const Token& first, TexturePat
                            "' in the patterned texture");
     }
   }
+}
+
+// POV-Ray's Link_Textures: nothing is layered over a patterned texture, and a patterned texture over nothing else.
+void TextureParser::refuse_layering(const Token& t, const Texture* existing, bool adding_patterned) const {
+  if (existing && existing->patterned()) fail_at(t, "cannot layer over a patterned texture (as in POV-Ray)");
+  if (existing && adding_patterned) fail_at(t, "cannot layer a patterned texture over another (as in POV-Ray)");
 }
 
 }  // namespace povtrace::sdl

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "parser/interpreter.hpp"
+#include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -34,7 +35,7 @@ void transform_layer(TextureLayer& l, const Matrix& m) {
 }  // namespace
 
 // translate/rotate/scale/matrix/transform: composes into `m` in written order (§9).
-bool Interpreter::try_transform(const Token& t, Matrix& m) {
+bool TextureParser::try_transform(const Token& t, Matrix& m) {
   if (t.is("translate")) { m = m * Matrix::translation(parse_vector()); return true; }
   if (t.is("rotate")) { m = m * Matrix::rotation(parse_vector()); return true; }
   if (t.is("scale")) {
@@ -63,7 +64,7 @@ bool Interpreter::try_transform(const Token& t, Matrix& m) {
   return false;
 }
 
-Matrix Interpreter::parse_transform_block(const Token& keyword) {
+Matrix TextureParser::parse_transform_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   Token open = next();
   // The old form `transform T_id` without braces.
@@ -83,7 +84,7 @@ Matrix Interpreter::parse_transform_block(const Token& keyword) {
 }
 
 // One item of a pigment body: a pattern (pigments.cpp), a colour, a transform or a pattern modifier.
-bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
+bool TextureParser::try_pigment_item(const Token& t, Pigment& p) {
   if (try_pattern(t, p)) return true;
   if (starts_colour(t)) {
     unget(t);
@@ -96,13 +97,13 @@ bool Interpreter::try_pigment_item(const Token& t, Pigment& p) {
   return try_pattern_modifier(t, p);
 }
 
-Pigment Interpreter::parse_pigment_block(const Token& keyword, const Pigment& start) {
+Pigment TextureParser::parse_pigment_block(const Token& keyword, const Pigment& start) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'pigment'");
   return parse_pigment_contents(start, keyword.loc, "}");
 }
 
-Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start) {
+Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& start) {
   expect("{", " after 'finish'");
   Finish f = start;
   f.loc = keyword.loc;
@@ -191,7 +192,7 @@ Finish Interpreter::parse_finish_block(const Token& keyword, const Finish& start
 // sky_sphere { [S_id] pigment { … }… emission C transforms } (POV-Ray's Parse_Skysphere): pigments are added in
 // order, transforms compose into the sky's own matrix (they do not move the pigments), and an empty sky_sphere is
 // an error.
-SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
+SkySphere TextureParser::parse_sky_sphere(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'sky_sphere'");
   SkySphere sky;
@@ -226,7 +227,7 @@ SkySphere Interpreter::parse_sky_sphere(const Token& keyword) {
 // fog { [colour] [distance D | D] [fog_type 1|2] [fog_alt] [fog_offset] [turb_depth] [up V] [turbulence V octaves
 // omega lambda] [rotate scale matrix transform] } (POV-Ray's Parse_Fog): transforms turn only the up vector (a translate
 // warns and does nothing), which is normalised at the end.
-Fog Interpreter::parse_fog(const Token& keyword) {
+Fog TextureParser::parse_fog(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'fog'");
   Fog fog;
@@ -281,29 +282,10 @@ Fog Interpreter::parse_fog(const Token& keyword) {
   return fog;
 }
 
-// POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the
-// default. A keyword that is an item of the enclosing block (`metallic falloff 2`) is no float.
-double Interpreter::optional_float(double fallback) {
-  const Token n = peek();
-  static const std::string_view float_words[] = {"true", "false", "on", "off", "yes", "no", "pi", "version",
-                                                 "clock", "clock_delta", "clock_on"};
-  bool starts = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") || n.is("!");
-  if (n.kind == TokenKind::identifier) {
-    if (!is_reserved_word(n.text)) {
-      const Value* v = lookup(n);
-      starts = v && std::holds_alternative<Numeric>(*v);
-    } else {
-      for (auto w : float_words) starts = starts || n.text == w;
-      starts = starts || is_float_function(n.text);
-    }
-  }
-  return starts ? parse_float() : fallback;
-}
-
 // `reflection C` (old form: min = max = C, falloff 1, no fresnel) or `reflection { Cmin [, Cmax] [fresnel [B]]
 // [falloff F] [exponent E] [metallic [M]] }` (pipeline §4). In the block, a single colour is both min and max,
 // except that `fresnel` without a second colour makes min 0 so that the fresnel term has an effect.
-void Interpreter::parse_finish_reflection(Finish& f) {
+void TextureParser::parse_finish_reflection(Finish& f) {
   auto reflection_colour = [this] {
     Colour c = parse_colour();
     c = Colour{static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), 0, 0};
@@ -343,7 +325,7 @@ void Interpreter::parse_finish_reflection(Finish& f) {
   }
 }
 
-Interior Interpreter::parse_interior_block(const Token& keyword, const Interior& start) {
+Interior TextureParser::parse_interior_block(const Token& keyword, const Interior& start) {
   (void)keyword;
   expect("{", " after 'interior'");
   Interior in = start;
@@ -374,7 +356,7 @@ Interior Interpreter::parse_interior_block(const Token& keyword, const Interior&
 }
 
 // texture { … } (POV-Ray's Parse_Texture).
-std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& keyword) {
+std::shared_ptr<const Texture> TextureParser::parse_texture_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'texture'");
   return parse_texture_contents(keyword.loc, "}");
@@ -384,7 +366,7 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_block(const Token& key
 // finish{} transforms (a plain texture, editing the id's top layer or a copy of the #default texture); or, with
 // no id and nothing of these first, a patterned texture (texture_patterns.cpp). A declared pigment/finish starts
 // from the current #default (§4 #default).
-std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceLoc& loc, std::string_view closer) {
+std::shared_ptr<const Texture> TextureParser::parse_texture_contents(const SourceLoc& loc, std::string_view closer) {
   Texture tex;
   tex.loc = loc;
   Token t = next();
@@ -411,7 +393,7 @@ std::shared_ptr<const Texture> Interpreter::parse_texture_contents(const SourceL
       layer.normal = std::make_shared<const Normal>(*std::get<Boxed<Normal>>(*v)), kind = "normal";
     else if (v && std::holds_alternative<Boxed<Finish>>(*v)) layer.finish = *std::get<Boxed<Finish>>(*v), kind = "finish";
     else break;
-    if (scene_.language_version < 150)
+    if (language_version() < 150)
       warn(t.loc, "Found '" + kind + " identifier' that should be in '" + kind + "' statement.");
   }
   for (; !t.is(closer); t = next(), edited = true) {

@@ -1,0 +1,94 @@
+// The base of the parser's components (docs/parser-split-plan.md §2): a part holds the Interpreter and reaches the
+// services it needs — the token reader, diagnostics, the expression parser, the statements' language settings —
+// through the protected one-line forwarders below, so that a part's bodies read as they did in the Interpreter
+// (`next()`, `expect(…)`, `fail_at(…)`, `parse_float()`, `NestingGuard guard(*this, keyword)`). The token reader,
+// diagnostics and expression parser are not components yet (steps S5, S3, S7): the forwarders go to the
+// Interpreter for now and will be retargeted at them without the parts' call sites changing.
+//
+// Only the services a part uses are forwarded; each is a plain inline call (no virtual call), defined in
+// parser_part_forwarders.hpp once the Interpreter is complete (interpreter.hpp includes it at its end).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "parser/expressions/values.hpp"
+#include "parser/lexing/lexer.hpp"
+#include "scene/description.hpp"
+
+namespace povtrace::sdl {
+
+class Interpreter;
+class ParserPart;
+
+// A NestingGuard taken by a part: the Interpreter's own (same checks, same message), reached through the part.
+// A template only so that the Interpreter's nested guard is named where it is complete (at the guard's use).
+template <class In> class PartNestingGuard {
+ public:
+  PartNestingGuard(ParserPart& part, const Token& at);
+  PartNestingGuard(const PartNestingGuard&) = delete;
+  PartNestingGuard& operator=(const PartNestingGuard&) = delete;
+
+ private:
+  typename In::NestingGuard guard_;
+};
+
+class ParserPart {
+ protected:
+  explicit ParserPart(Interpreter& in) : in_(in) {}
+  ~ParserPart() = default;
+  ParserPart(const ParserPart&) = delete;
+  ParserPart& operator=(const ParserPart&) = delete;
+
+  // ---- token reader (the Interpreter's token stream today; TokenReader from S5) ----
+  inline Token next();
+  inline const Token& peek();   // valid until the next token is read
+  inline void unget(const Token& t);
+  inline Token expect(std::string_view symbol, std::string_view context);
+  inline bool accept(std::string_view symbol);   // consumes the token if it is `symbol`
+  inline const Value* lookup(const Token& t) const;
+  using NestingGuard = PartNestingGuard<Interpreter>;
+
+  // ---- diagnostics (Diagnostics from S3) ----
+  [[noreturn]] inline void fail_at(const Token& t, const std::string& message) const;
+  [[noreturn]] inline void fail_expected(const Token& t, std::string_view expected) const;
+  [[noreturn]] inline void fail_unsupported(const Token& t, std::string_view what) const;
+  inline void warn(const SourceLoc& loc, const std::string& message) const;
+
+  // ---- expressions (ExpressionParser from S7) ----
+  inline Numeric parse_additive();
+  inline double parse_float();
+  inline Vec3 parse_vector();
+  inline Colour parse_colour();
+  inline bool starts_colour(const Token& t) const;
+  inline std::string parse_string();
+  inline double optional_float(double fallback);   // `[float]`: the float if one starts here, else `fallback`
+  // Parse_UV_Vect (express.cpp): a float or a 2-D vector at the parameter level; also read by the shapes.
+  inline std::pair<double, double> parse_uv_vector(std::string_view context);
+  inline std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
+
+  // ---- features parsed but not rendered (unsupported.cpp) ----
+  inline UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
+  inline void skip_balanced(const Token& open);
+  static inline void taint(Unsupported& slot, const Unsupported& feature);   // keeps the first one found
+
+  // ---- the scene's settings so far (SceneStatements from S11) ----
+  inline const Texture& default_texture() const;   // the #default texture
+  // What POV-Ray's image gamma handling reads: the language version (round(100 · #version), 370 when no #version
+  // was seen), whether any #version was seen (languageVersionSet) and global_settings' assumed_gamma.
+  inline int language_version() const;
+  inline bool version_directive_seen() const;
+  inline const std::optional<double>& assumed_gamma() const;
+  inline const std::vector<std::filesystem::path>& library_paths() const;   // +L, for image files
+
+ private:
+  template <class> friend class PartNestingGuard;
+  Interpreter& in_;
+};
+
+}  // namespace povtrace::sdl

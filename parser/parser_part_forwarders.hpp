@@ -1,0 +1,59 @@
+// The bodies of ParserPart's forwarders (parser_part.hpp): one inline call each, to the Interpreter that provides
+// the service today. Included at the end of interpreter.hpp, where the Interpreter is complete.
+#pragma once
+
+#include "parser/interpreter.hpp"
+#include "parser/parser_part.hpp"
+
+namespace povtrace::sdl {
+
+template <class In>
+PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_, at) {}
+
+inline Token ParserPart::next() { return in_.next(); }
+inline const Token& ParserPart::peek() { return in_.peek(); }
+inline void ParserPart::unget(const Token& t) { in_.unget(t); }
+inline Token ParserPart::expect(std::string_view symbol, std::string_view context) {
+  return in_.expect(symbol, context);
+}
+inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symbol); }
+inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
+
+inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
+inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
+  in_.fail_expected(t, expected);
+}
+inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) const {
+  in_.fail_unsupported(t, what);
+}
+inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
+
+inline Numeric ParserPart::parse_additive() { return in_.parse_additive(); }
+inline double ParserPart::parse_float() { return in_.parse_float(); }
+inline Vec3 ParserPart::parse_vector() { return in_.parse_vector(); }
+inline Colour ParserPart::parse_colour() { return in_.parse_colour(); }
+inline bool ParserPart::starts_colour(const Token& t) const { return in_.starts_colour(t); }
+inline std::string ParserPart::parse_string() { return in_.parse_string(); }
+inline double ParserPart::optional_float(double fallback) { return in_.optional_float(fallback); }
+inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view context) {
+  return in_.parse_uv_vector(context);
+}
+inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
+  return in_.parse_function_definition(keyword);
+}
+
+inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
+  return in_.skip_unsupported(keyword, what);
+}
+inline void ParserPart::skip_balanced(const Token& open) { in_.skip_balanced(open); }
+inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) { Interpreter::taint(slot, feature); }
+
+inline const Texture& ParserPart::default_texture() const { return in_.default_texture(); }
+inline int ParserPart::language_version() const { return in_.scene_.language_version; }
+inline bool ParserPart::version_directive_seen() const { return in_.version_directive_seen_; }
+inline const std::optional<double>& ParserPart::assumed_gamma() const { return in_.scene_.settings.assumed_gamma; }
+inline const std::vector<std::filesystem::path>& ParserPart::library_paths() const {
+  return in_.options_.library_paths;
+}
+
+}  // namespace povtrace::sdl
