@@ -7,7 +7,7 @@
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/objects.cpp          shapes, CSG, object modifiers and transforms
-//   statements/camera_lights.cpp camera (POV-Ray's fixed order of application) and light sources
+//   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
 //   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
 //   directives/file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
@@ -40,6 +40,7 @@
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
+#include "parser/statements/camera_light_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
 namespace povtrace::sdl {
@@ -475,15 +476,8 @@ class Interpreter {
   ttf::Font& font_for_text(const Token& at, const std::string& name);
   ttf::Font& internal_font(const Token& at, int id);
 
-  // ---- camera and lights (camera_lights.cpp) ----
-  Camera parse_camera(const Token& keyword);
-  Camera parse_camera_transforms(Camera camera, Token t);
-  std::optional<Projection> try_camera_type(const Token& t);
-  Light parse_light(const Token& keyword);
-  void parse_area_light(const Token& keyword, Light& light);
-  void parse_looks_like(const Token& keyword, Light& light);
-  bool try_light_modifier(const Token& t, Light& light);
-  void apply_transform(Light& light, const Matrix& m);
+  // ---- camera and lights (statements/camera_light_parser.hpp) ----
+  CameraLightParser camera_lights_{*this, textures_};
 
   // ---- features parsed but not rendered yet (unsupported.cpp) ----
   UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);

@@ -18,8 +18,10 @@
 #include <vector>
 
 #include "parser/expressions/values.hpp"
+#include "parser/extents/object_notes.hpp"
 #include "parser/lexing/lexer.hpp"
 #include "scene/description.hpp"
+#include "scene/description_transforms.hpp"
 
 namespace povtrace::sdl {
 
@@ -72,6 +74,12 @@ class ParserPart {
   inline std::pair<double, double> parse_uv_vector(std::string_view context);
   inline std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
 
+  // ---- objects (ObjectParser from S10) ----
+  inline std::optional<SceneItem> try_parse_item(const Token& t);
+  inline void parse_object_modifiers(Object& object);
+  inline void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
+  inline const NotesPool& notes_pool() const;   // where the objects' notes are made (ObjectNotes)
+
   // ---- features parsed but not rendered (unsupported.cpp) ----
   inline UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
   inline void skip_balanced(const Token& open);
@@ -85,6 +93,7 @@ class ParserPart {
   inline bool version_directive_seen() const;
   inline const std::optional<double>& assumed_gamma() const;
   inline const std::vector<std::filesystem::path>& library_paths() const;   // +L, for image files
+  inline bool povray_tolerances() const;                                     // ParseOptions::povray_tolerances
 
  private:
   template <class> friend class PartNestingGuard;

@@ -42,6 +42,13 @@ inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definitio
   return in_.parse_function_definition(keyword);
 }
 
+inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.try_parse_item(t); }
+inline void ParserPart::parse_object_modifiers(Object& object) { in_.parse_object_modifiers(object); }
+inline void ParserPart::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
+  in_.apply_transform(object, m, kind);
+}
+inline const NotesPool& ParserPart::notes_pool() const { return in_.notes_pool_; }
+
 inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
   return in_.skip_unsupported(keyword, what);
 }
@@ -55,5 +62,6 @@ inline const std::optional<double>& ParserPart::assumed_gamma() const { return i
 inline const std::vector<std::filesystem::path>& ParserPart::library_paths() const {
   return in_.options_.library_paths;
 }
+inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
 
 }  // namespace povtrace::sdl

@@ -291,7 +291,7 @@ SceneItem Interpreter::parse_object_block_rest(const Token& keyword, const Token
     while (true) {
       Token m = next();
       if (m.is("}")) break;
-      if (!try_light_modifier(m, *light)) fail_expected(m, "a light_source modifier or '}'");
+      if (!camera_lights_.try_light_modifier(m, *light)) fail_expected(m, "a light_source modifier or '}'");
     }
     return std::move(*item);
   }
@@ -308,7 +308,7 @@ std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
   if (k == "plane") return parse_plane(t);
   if (k == "box") return parse_box(t);
   if (k == "object") return parse_object_block(t);
-  if (k == "light_source") return parse_light(t);
+  if (k == "light_source") return camera_lights_.parse_light(t);
   if (k == "poly") return parse_poly(t, 0);
   if (k == "quadric") return parse_quadric(t);
   if (k == "cubic") return parse_poly(t, 3);

@@ -3,6 +3,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/statements/camera_light_parser.hpp"
 #include "parser/objects/object_transform.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -60,7 +61,7 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
 }  // namespace
 
 // The projection keywords of camera { }; `cylinder N` takes its type number (1 to 4, else POV-Ray's error).
-std::optional<Projection> Interpreter::try_camera_type(const Token& t) {
+std::optional<Projection> CameraLightParser::try_camera_type(const Token& t) {
   static const std::pair<std::string_view, Projection> types[] = {
       {"perspective", Projection::perspective}, {"orthographic", Projection::orthographic},
       {"fisheye", Projection::fisheye},         {"ultra_wide_angle", Projection::ultra_wide_angle},
@@ -79,7 +80,7 @@ std::optional<Projection> Interpreter::try_camera_type(const Token& t) {
   }
 }
 
-Camera Interpreter::parse_camera(const Token& keyword) {
+Camera CameraLightParser::parse_camera(const Token& keyword) {
   expect("{", " after 'camera'");
   CameraInput in;
   in.camera.loc = keyword.loc;
@@ -92,7 +93,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
       t = next();
       // POV-Ray 3.5 and later (Parse_Camera's only_mods): a declared camera is final; only transforms may follow,
       // applied to it as they are (its angle, look_at and orthographic resize are not applied a second time).
-      if (scene_.language_version >= 350) return parse_camera_transforms(in.camera, t);
+      if (language_version() >= 350) return parse_camera_transforms(in.camera, t);
     }
   }
   while (!t.is("}")) {
@@ -152,7 +153,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
     fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
   // POV-Ray's Parse_Camera refuses a look_at whose squared distance from the location is below EPSILON (1e-10),
   // an absolute test: a camera 1e-6 times the usual size fails it.
-  if (options_.povray_tolerances && in.look_at) {
+  if (povray_tolerances() && in.look_at) {
     const Vec3 d = *in.look_at - in.camera.location;
     if (dot(d, d) < 1e-10) fail_at(*look_at_at, "Camera location and look_at point must be different.");
   }
@@ -161,7 +162,7 @@ Camera Interpreter::parse_camera(const Token& keyword) {
 
 // The transforms after a declared camera's identifier, up to the closing '}' (`t` is the first token after the
 // identifier).
-Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
+Camera CameraLightParser::parse_camera_transforms(Camera camera, Token t) {
   Matrix transform;
   while (!t.is("}")) {
     if (!textures_.try_transform(t, transform))
@@ -176,9 +177,9 @@ Camera Interpreter::parse_camera_transforms(Camera camera, Token t) {
   return camera;
 }
 
-void Interpreter::apply_transform(Light& light, const Matrix& m) { transform_noted(light, m, notes_pool_); }
+void CameraLightParser::apply_transform(Light& light, const Matrix& m) { transform_noted(light, m, notes_pool()); }
 
-bool Interpreter::try_light_modifier(const Token& t, Light& light) {
+bool CameraLightParser::try_light_modifier(const Token& t, Light& light) {
   Matrix m;
   if (textures_.try_transform(t, m)) { apply_transform(light, m); return true; }
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
@@ -225,7 +226,7 @@ bool Interpreter::try_light_modifier(const Token& t, Light& light) {
 // looks_like { object modifiers }: the object is moved to the light's location as it is at this point, then takes
 // the modifiers written after it, and every later transform of the light (POV-Ray's Parse_Light_Source). It casts
 // no shadow.
-void Interpreter::parse_looks_like(const Token& keyword, Light& light) {
+void CameraLightParser::parse_looks_like(const Token& keyword, Light& light) {
   const NestingGuard guard(*this, keyword);
   if (!light.looks_like.empty()) fail_at(keyword, "a light_source has at most one looks_like object");
   expect("{", " after 'looks_like'");
@@ -241,7 +242,7 @@ void Interpreter::parse_looks_like(const Token& keyword, Light& light) {
 
 // area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's
 // Parse_Light_Source); a negative size is refused here too, as it would give no samples at all.
-void Interpreter::parse_area_light(const Token& keyword, Light& light) {
+void CameraLightParser::parse_area_light(const Token& keyword, Light& light) {
   (void)keyword;
   light.area = true;
   light.axis1 = parse_vector();
@@ -264,7 +265,7 @@ void Interpreter::parse_area_light(const Token& keyword, Light& light) {
     fail_at(second, "an area_light may have at most 1000000 samples (size1 × size2)");
 }
 
-Light Interpreter::parse_light(const Token& keyword) {
+Light CameraLightParser::parse_light(const Token& keyword) {
   expect("{", " after 'light_source'");
   Light light;
   light.loc = keyword.loc;

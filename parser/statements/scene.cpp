@@ -49,7 +49,7 @@ void Interpreter::parse_statement(const Token& t) {
   statement_seen_ = true;
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "camera") {
-    scene_.camera = parse_camera(t);
+    scene_.camera = camera_lights_.parse_camera(t);
     refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
     camera_seen_ = true;
     return;
@@ -251,7 +251,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(textures_.parse_blend_map(first));
   if (k == "texture_map") return Value(textures_.parse_texture_map(first, false));
   if (k == "interior") return Value(textures_.parse_interior_block(first, Interior{}));
-  if (k == "camera") return Value(parse_camera(first));
+  if (k == "camera") return Value(camera_lights_.parse_camera(first));
   if (k == "sky_sphere") return Value(textures_.parse_sky_sphere(first));
   if (k == "transform") return Value(textures_.parse_transform_block(first));
   if (k == "material") {
