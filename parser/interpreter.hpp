@@ -40,6 +40,7 @@
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
+#include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
@@ -348,14 +349,6 @@ class Interpreter {
   std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
   bool function_budget_set_ = false;
 
-  // ---- spline values (spline_values.cpp; the interpolation is splines.cpp) ----
-  // `spline { … }` (a definition), `S(…)` (a call of a declared spline) or `S` (a copy) as a right-hand value.
-  std::optional<Value> try_parse_spline_rvalue(const Token& first);
-  // `{ [S] [type…] T, V … }` after the keyword `spline`: the spline it makes.
-  SplineValue parse_spline_block();
-  // `(t [, type])` after the spline identifier `name`: its value at t.
-  Numeric call_spline_from_sdl(const Token& name, Boxed<SplineValue> spline);
-
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
   friend class ParserPart;
   template <class> friend class PartNestingGuard;
@@ -475,6 +468,9 @@ class Interpreter {
   Object parse_text(const Token& keyword);
   ttf::Font& font_for_text(const Token& at, const std::string& name);
   ttf::Font& internal_font(const Token& at, int id);
+
+  // ---- spline values (expressions/spline_values.hpp) ----
+  SplineValues splines_{*this};
 
   // ---- camera and lights (statements/camera_light_parser.hpp) ----
   CameraLightParser camera_lights_{*this, textures_};

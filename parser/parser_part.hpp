@@ -54,6 +54,8 @@ class ParserPart {
   inline Token expect(std::string_view symbol, std::string_view context);
   inline bool accept(std::string_view symbol);   // consumes the token if it is `symbol`
   inline const Value* lookup(const Token& t) const;
+  inline const Token& peek_raw();   // the next token without running a directive or macro call first
+  inline bool reserved(const Token& t) const;
   using NestingGuard = PartNestingGuard<Interpreter>;
 
   // ---- diagnostics (Diagnostics from S3) ----
@@ -63,7 +65,10 @@ class ParserPart {
   inline void warn(const SourceLoc& loc, const std::string& message) const;
 
   // ---- expressions (ExpressionParser from S7) ----
+  inline Numeric parse_expression();
   inline Numeric parse_additive();
+  inline Numeric parse_additive_after(Numeric first_operand);
+  inline bool starts_string(const Token& t) const;
   inline double parse_float();
   inline Vec3 parse_vector();
   inline Colour parse_colour();

@@ -18,6 +18,8 @@ inline Token ParserPart::expect(std::string_view symbol, std::string_view contex
 }
 inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symbol); }
 inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
+inline const Token& ParserPart::peek_raw() { return in_.peek_raw(); }
+inline bool ParserPart::reserved(const Token& t) const { return in_.reserved(t); }
 
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
@@ -28,7 +30,12 @@ inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) 
 }
 inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
 
+inline Numeric ParserPart::parse_expression() { return in_.parse_expression(); }
 inline Numeric ParserPart::parse_additive() { return in_.parse_additive(); }
+inline Numeric ParserPart::parse_additive_after(Numeric first_operand) {
+  return in_.parse_additive_after(std::move(first_operand));
+}
+inline bool ParserPart::starts_string(const Token& t) const { return in_.starts_string(t); }
 inline double ParserPart::parse_float() { return in_.parse_float(); }
 inline Vec3 ParserPart::parse_vector() { return in_.parse_vector(); }
 inline Colour ParserPart::parse_colour() { return in_.parse_colour(); }

@@ -215,7 +215,7 @@ std::shared_ptr<const FunctionValue> FunctionParser::parse_definition(const Toke
     // returning the spline's 2 to 5 components.
     no_parameters("spline");
     f->kind = FunctionValue::Kind::spline;
-    f->spline = std::make_shared<const SplineValue>(in_.parse_spline_block());
+    f->spline = std::make_shared<const SplineValue>(in_.splines_.parse_block());
     f->parameter_count = 1;
     f->return_size = f->spline->terms;
   } else if (k == "pattern") {

@@ -12,6 +12,7 @@
 //   as 2); `type` evaluates a copy interpolated that way.
 #include <algorithm>
 
+#include "parser/expressions/spline_values.hpp"
 #include "parser/interpreter.hpp"
 
 namespace povtrace::sdl {
@@ -32,9 +33,9 @@ const SplineValue* spline_of(const Value* v) {
 }
 }  // namespace
 
-std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
+std::optional<Value> SplineValues::try_parse_rvalue(const Token& first) {
   if (first.kind != TokenKind::identifier) return std::nullopt;
-  if (first.is("spline") && peek_raw().is("{")) return Value(Boxed<SplineValue>(parse_spline_block()));
+  if (first.is("spline") && peek_raw().is("{")) return Value(Boxed<SplineValue>(parse_block()));
   const Value* found = lookup(first);
   if (!spline_of(found)) return std::nullopt;
   // Held before looking further: the look may end the macro whose local `first` is (`#local L = spline {…} L`
@@ -42,7 +43,7 @@ std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
   Value held = *found;
   const Token after = peek_raw();   // raw: a directive after `#declare T = S` runs once T is stored
   if (after.is("(")) {   // a call: the value is an expression (S(0.5) + y), its first operand this call
-    return Value(parse_additive_after(call_spline_from_sdl(first, std::get<Boxed<SplineValue>>(held))).stored());
+    return Value(parse_additive_after(call(first, std::get<Boxed<SplineValue>>(held))).stored());
   }
   if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
     fail_expected(after, "'(' and the argument of the spline '" + std::string(first.text) +
@@ -50,7 +51,7 @@ std::optional<Value> Interpreter::try_parse_spline_rvalue(const Token& first) {
   return held;   // `#declare T = S;`: T is a copy (an immutable value, so shared)
 }
 
-SplineValue Interpreter::parse_spline_block() {
+SplineValue SplineValues::parse_block() {
   expect("{", " after 'spline'");
   SplineValue s;
   Token start = next();
@@ -89,7 +90,7 @@ SplineValue Interpreter::parse_spline_block() {
   return s;
 }
 
-Numeric Interpreter::call_spline_from_sdl(const Token& name, Boxed<SplineValue> spline) {
+Numeric SplineValues::call(const Token& name, Boxed<SplineValue> spline) {
   // `spline` is held here: parsing the argument may end the macro or include file whose local it is.
   const std::string what = "the spline '" + std::string(name.text) + "'";
   Token open = next();

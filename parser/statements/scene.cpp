@@ -261,7 +261,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     return Value(MaterialValue{holder.texture, holder.interior});
   }
   if (k == "array") return parse_array_declaration(first);
-  if (auto s = try_parse_spline_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
+  if (auto s = splines_.try_parse_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
   if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
       v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
