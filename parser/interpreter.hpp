@@ -1,16 +1,18 @@
 // The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
 // owns the token stream (TokenStream: a stack of source frames), the diagnostics (Diagnostics), the symbol tables,
-// the control-flow stack of directives, and the statement parsers that fill the SceneDescription
+// the directives with their control-flow stack and the macro calls (DirectiveRunner), and the statement parsers
+// that fill the SceneDescription
 // (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
-//   lexing/token_stream.cpp      the reader over TokenStream: directive dispatch, macro calls
-//   directives/directives.cpp    #declare #local #undef #include #if… #while #for #macro #version #debug…
+//   lexing/token_stream.cpp      the reader over TokenStream: next() hands directives and macro calls to directives_
+//   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
+//   directives/macros.cpp        DirectiveRunner: macro calls
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/objects.cpp          shapes, CSG, object modifiers and transforms
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
 //   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
-//   directives/file_io.cpp       #fopen #read #write #fclose, confined to the scene's and the working directory
+//   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
 //   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
 //   objects/quadric_shapes.cpp   cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   objects/implicit_shapes.cpp  superellipsoid, blob
@@ -36,6 +38,7 @@
 #include "parser/extents/object_extents.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/lexing/reserved_words.hpp"
+#include "parser/directives/directive_runner.hpp"
 #include "parser/directives/symbols.hpp"
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
@@ -95,15 +98,6 @@ class Interpreter {
   // otherwise).
   TokenStream stream_;
   using Frame = TokenStream::Frame;
-  struct Control {
-    enum class Kind { if_branch, while_loop, for_loop, macro_call, switch_block } kind = Kind::if_branch;
-    std::size_t frame = 0;       // frame the construct started in (loops must end there)
-    TokenStream::Position resume;   // while: start of the condition; for: first token of the body
-    std::string for_variable;
-    double for_end = 0, for_step = 1;
-    double switch_value = 0;     // #switch: the value #case/#range compare with
-    SourceLoc loc;
-  };
   Token raw() { return stream_.raw(); }   // next token of the frame stack, no directive processing
   const LexedToken& lexed(FileTokens& tokens, std::size_t index) { return stream_.lexed(tokens, index); }
   Token make_token(const FileTokens& tokens, const LexedToken& t) const { return stream_.make_token(tokens, t); }
@@ -206,39 +200,11 @@ class Interpreter {
   // next() on a fresh identifier: the deprecation warning, and `A[i]…` resolved to its element.
   void process_identifier(Token& t, const Value* v);
 
-  // ---- directives (directives.cpp) ----
-  void directive(const Token& hash);
+  // ---- directives (directive_runner.hpp) ----
+  // The directives and macro calls are the DirectiveRunner's (directives_); it reads through the services below
+  // (directive_services.hpp forwards to them). #version's effect is the scene's: it stays here (scene.cpp).
+  friend class DirectiveRunner;
   void directive_version(const Token& at);
-  void directive_declare(bool local);
-  void directive_undef();
-  void directive_include(const Token& at);
-  void directive_if(const Token& at, int kind);   // 0 #if, 1 #ifdef, 2 #ifndef
-  void directive_else(const Token& at, bool is_elseif);
-  void directive_end(const Token& at);
-  void directive_while(const Token& at);
-  void directive_for(const Token& at);
-  void directive_macro(const Token& at);
-  void directive_switch(const Token& at);
-  void directive_case(const Token& at, bool is_range);
-  void directive_break(const Token& at);
-  bool case_matches(const Token& word);   // parses #case (F) / #range (Lo, Hi) against the current #switch
-  // A #switch section that did not match: skips to the next #case/#range that matches, an #else (then runs it)
-  // or the #end (then leaves the #switch).
-  void skip_switch_section(const Token& at);
-  void directive_message(const Token& at, const std::string& kind);
-  void invoke_macro(const Token& name);
-  bool condition_in_parens();
-  bool identifier_defined_in_parens();
-  // Skips raw tokens to the #else/#elseif/#end closing the current level; returns the directive name found
-  // ("else", "elseif", "end"), leaving the stream just after that word.
-  std::string skip_branch(const Token& opener, bool stop_at_else);
-  // An include file's frame and its #local scope, which IncludeExit::leaving_include closes.
-  void push_file(const std::filesystem::path& path, const Token& at, Frame::Kind kind) {
-    stream_.push_file(path, at, kind);
-    symbols_.push_scope();
-  }
-  void return_from_macro();
-  std::optional<std::filesystem::path> find_include(const std::string& name) const;
 
   // ---- expressions (expressions.cpp) ----
   Numeric parse_expression();            // full level: ?:, & |, comparisons, + -
@@ -317,14 +283,6 @@ class Interpreter {
   // defined(Id) / #ifdef (Id): Id may be an array element, defined iff assigned. Reads from after '('.
   bool parse_defined_identifier();
 
-  // ---- file I/O (file_io.cpp) ----
-  void directive_fopen(const Token& at);
-  void directive_fclose(const Token& at);
-  void directive_read(const Token& at);
-  void directive_write(const Token& at);
-  // The absolute, symlink-resolved path of a user file, refused unless it lies under the scene file's directory or
-  // the working directory.
-  std::filesystem::path confined_path(const std::string& name, const Token& at) const;
 
   // ---- object queries (object_queries.cpp) ----
   Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
@@ -505,25 +463,15 @@ class Interpreter {
 
   const ParseOptions& options_;
   NotesPool notes_pool_;   // where the objects' notes are made (ObjectNotes); before the members holding objects
-  std::vector<Control> controls_;
   // True while run() reads the next statement's first token: a directive then run at nesting level 0 stands
   // between statements, where nothing holds a kept token (FileTokens::release_before).
   bool between_statements_ = false;
-  std::vector<std::pair<SymbolTable::NameId, Value>> macro_arguments_;   // of the macro calls being read (invoke_macro)
   SymbolTable symbols_;
-  // The directive words the token stream asks every identifier after a '#' about, as NameIds: a kept token's
-  // payload is compared instead of its text.
-  const SymbolTable::NameId word_declare_ = symbols_.intern("declare");
-  const SymbolTable::NameId word_local_ = symbols_.intern("local");
-  const SymbolTable::NameId word_end_ = symbols_.intern("end");
+  // The directives and macro calls, with their control stack (directive_runner.hpp). Built here, where the directive
+  // words it interns were interned before.
+  DirectiveRunner directives_{*this, options_, stream_, symbols_, diagnostics_};
   // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
   Diagnostics diagnostics_{options_, stream_, symbols_};
-  // The end of an include file for the stream: no directive may stay open in it, and its #local scope closes.
-  struct IncludeExit final : TokenStream::IncludeExit {
-    explicit IncludeExit(Interpreter& in) : in_(in) {}
-    void leaving_include(std::size_t frame, const SourceFile& file) override;
-    Interpreter& in_;
-  } include_exit_{*this};
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes

@@ -4,7 +4,7 @@
 #include <functional>
 #include <iostream>
 
-#include "parser/interpreter.hpp"
+#include "parser/directives/directive_services.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -29,7 +29,7 @@ bool opens_block(std::string_view word) {
 }
 }  // namespace
 
-void Interpreter::directive(const Token& hash) {
+void DirectiveRunner::run(const Token& hash) {
   // #declare and #local, the directives loops run most, are recognised from the kept token: no Token is made for
   // the word (directive_declare reads on from after it). With a token limit, raw() counts the word.
   if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier) {
@@ -77,16 +77,7 @@ void Interpreter::directive(const Token& hash) {
   unget(word);
 }
 
-void Interpreter::directive_version(const Token& at) {
-  const double v = parse_float();
-  scene_.language_version = static_cast<int>(std::lround(v * 100.0));
-  version_directive_seen_ = true;
-  if (peek_raw().is(";")) next();
-  if (!statement_seen_ && stream_.depth() == 1) scene_.version_given = true;
-  (void)at;
-}
-
-void Interpreter::directive_declare(bool local) {
+void DirectiveRunner::directive_declare(bool local) {
   // The name. A plain identifier is taken from its kept token (loops run #declare every round), its Token made
   // only where a message or an element assignment needs it; anything else is read by raw() as before.
   std::optional<Token> name_token;
@@ -147,7 +138,7 @@ void Interpreter::directive_declare(bool local) {
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
-  const RawOperatorLook raw_look(*this);   // the value of a #declare: POV-Ray's Ok_To_Declare is off
+  const Interpreter::RawOperatorLook raw_look(in_);   // the value of a #declare: POV-Ray's Ok_To_Declare is off
   call_macros_ahead();
   if (numeric_ahead()) {
     // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
@@ -159,7 +150,7 @@ void Interpreter::directive_declare(bool local) {
     symbols_.assign_numeric_at(id, target_level, n);
     if (deprecation) symbols_.deprecate(std::string(name), std::move(*deprecation));
     if (raw_ahead().is(";")) skip_ahead();
-    else if (scene_.language_version >= 350)
+    else if (language_version() >= 350)
       fail_expected(peek_raw(), "';' after the value of " + std::string(name));
     return;
   }
@@ -171,13 +162,13 @@ void Interpreter::directive_declare(bool local) {
     const Value* held = first.kind == TokenKind::identifier ? lookup(first) : nullptr;
     const bool numeric = first.kind == TokenKind::number || first.kind == TokenKind::symbol ||
                          (held && std::holds_alternative<Numeric>(*held));
-    const RawOperatorLook look(*this, numeric);
+    const Interpreter::RawOperatorLook look(in_, numeric);
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
                                      "interior or camera) for " + std::string(name));
   }
   // Float, vector and colour values need the ';' in #version ≥ 3.5 (§4).
-  const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
+  const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && language_version() >= 350;
   // (Its checks concern functions only: the kept name's Token is made where one is involved.)
   if (const Value* visible = symbols_.find(id);
       !kept_tokens || std::holds_alternative<std::shared_ptr<const FunctionValue>>(*value) ||
@@ -191,7 +182,7 @@ void Interpreter::directive_declare(bool local) {
   else if (needs_semicolon) fail_expected(peek_raw(), "';' after the value of " + std::string(name));
 }
 
-void Interpreter::directive_undef() {
+void DirectiveRunner::directive_undef() {
   Token name = raw();
   if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier after #undef");
   warn_if_deprecated(symbols_, name, [this](const SourceLoc& l, const std::string& m) { warn(l, m); });
@@ -205,7 +196,7 @@ void Interpreter::directive_undef() {
     warn(name.loc, "#undef of '" + std::string(name.text) + "', which is not declared");
 }
 
-std::optional<std::filesystem::path> Interpreter::find_include(const std::string& name) const {
+std::optional<std::filesystem::path> DirectiveRunner::find_include(const std::string& name) const {
   // Candidate names (§4 #include): "x.inc" as given first; otherwise x.inc, x.INC, then the bare name.
   std::vector<std::string> candidates;
   const bool has_inc = name.size() > 4 && (name.ends_with(".inc") || name.ends_with(".INC"));
@@ -229,7 +220,7 @@ std::optional<std::filesystem::path> Interpreter::find_include(const std::string
   return std::nullopt;
 }
 
-void Interpreter::directive_include(const Token& at) {
+void DirectiveRunner::directive_include(const Token& at) {
   Token name_token = next();
   if (name_token.kind != TokenKind::string) fail_expected(name_token, "a file name string after #include");
   const std::string name = string_value(name_token, *stream_.frame().file, false);
@@ -242,22 +233,22 @@ void Interpreter::directive_include(const Token& at) {
   push_file(*path, at, Frame::Kind::include);
 }
 
-bool Interpreter::condition_in_parens() {
-  const RawOperatorLook raw_look(*this);   // POV-Ray's Parse_Cond_Param
+bool DirectiveRunner::condition_in_parens() {
+  const Interpreter::RawOperatorLook raw_look(in_);   // POV-Ray's Parse_Cond_Param
   skip_expected('(', " (conditions are written in parentheses)");
   const double v = parse_float_full();
   skip_expected(')', " closing the condition");
   return std::fabs(v) > kConditionEpsilon;
 }
 
-bool Interpreter::identifier_defined_in_parens() {
+bool DirectiveRunner::identifier_defined_in_parens() {
   expect("(", " (write #ifdef (Name))");
   return parse_defined_identifier();
 }
 
 // Skips a false branch: tokens are still lexed (comments and strings must be well formed) but nothing is
 // evaluated; nested blocks are counted so that only this level's #else/#elseif/#end stop the skip.
-std::string Interpreter::skip_branch(const Token& opener, bool stop_at_else) {
+std::string DirectiveRunner::skip_branch(const Token& opener, bool stop_at_else) {
   int depth = 0;
   while (true) {
     Token t = raw();
@@ -276,7 +267,7 @@ std::string Interpreter::skip_branch(const Token& opener, bool stop_at_else) {
   }
 }
 
-void Interpreter::directive_if(const Token& at, int kind) {
+void DirectiveRunner::directive_if(const Token& at, int kind) {
   bool taken = kind == 0 ? condition_in_parens() : identifier_defined_in_parens();
   if (kind == 2) taken = !taken;
   while (!taken) {
@@ -293,7 +284,7 @@ void Interpreter::directive_if(const Token& at, int kind) {
 }
 
 // Reaching #else/#elseif while executing means the branch before it ran: skip to the #end.
-void Interpreter::directive_else(const Token& at, bool is_elseif) {
+void DirectiveRunner::directive_else(const Token& at, bool is_elseif) {
   // In a #switch, reaching #else while executing a matched section falls through into it, as C's default does
   // (POV-Ray 3.7 behaves so, although its documentation says otherwise).
   if (!is_elseif && !controls_.empty() && controls_.back().kind == Control::Kind::switch_block) return;
@@ -315,7 +306,7 @@ void Interpreter::directive_else(const Token& at, bool is_elseif) {
   controls_.pop_back();
 }
 
-void Interpreter::directive_end(const Token& at) {
+void DirectiveRunner::directive_end(const Token& at) {
   if (controls_.empty()) fail_at(at, "#end without a matching #if, #while, #for or #macro");
   Control& c = controls_.back();
   switch (c.kind) {
@@ -355,21 +346,15 @@ void Interpreter::directive_end(const Token& at) {
   }
 }
 
-void Interpreter::return_from_macro() {
-  stream_.pop_frame();
-  symbols_.pop_scope();
-  controls_.pop_back();
-}
-
 // #switch (F) must be followed by #case or #range (§4). A matched section runs and falls through the later
 // #case/#range/#else lines (they are still parsed) until #break or #end; an unmatched one is skipped.
-void Interpreter::directive_switch(const Token& at) {
+void DirectiveRunner::directive_switch(const Token& at) {
   Control c;
   c.kind = Control::Kind::switch_block;
   c.frame = stream_.depth() - 1;
   c.loc = at.loc;
   c.switch_value = [&] {
-    const RawOperatorLook raw_look(*this);
+    const Interpreter::RawOperatorLook raw_look(in_);
     expect("(", " (conditions are written in parentheses)");
     const double v = parse_float_full();
     expect(")", " closing the condition");
@@ -383,8 +368,8 @@ void Interpreter::directive_switch(const Token& at) {
   if (!case_matches(word)) skip_switch_section(at);
 }
 
-bool Interpreter::case_matches(const Token& word) {
-  const RawOperatorLook raw_look(*this);
+bool DirectiveRunner::case_matches(const Token& word) {
+  const Interpreter::RawOperatorLook raw_look(in_);
   const double v = controls_.back().switch_value;
   expect("(", " (conditions are written in parentheses)");
   const double a = parse_float_full();
@@ -398,7 +383,7 @@ bool Interpreter::case_matches(const Token& word) {
   return v >= a && v <= b;
 }
 
-void Interpreter::skip_switch_section(const Token& at) {
+void DirectiveRunner::skip_switch_section(const Token& at) {
   int depth = 0;
   while (true) {
     Token t = raw();
@@ -419,7 +404,7 @@ void Interpreter::skip_switch_section(const Token& at) {
 }
 
 // Reached while executing a matched section: the condition is parsed but not tested again (fall-through).
-void Interpreter::directive_case(const Token& at, bool is_range) {
+void DirectiveRunner::directive_case(const Token& at, bool is_range) {
   if (controls_.empty() || controls_.back().kind != Control::Kind::switch_block)
     fail_at(at, std::string("#") + (is_range ? "range" : "case") + " without a matching #switch");
   case_matches(at);
@@ -427,7 +412,7 @@ void Interpreter::directive_case(const Token& at, bool is_range) {
 
 // #break (§4): leaves the innermost #switch, #while or #for — skipping to its #end, through any #if around the
 // #break — or returns from the current macro.
-void Interpreter::directive_break(const Token& at) {
+void DirectiveRunner::directive_break(const Token& at) {
   while (true) {
     if (controls_.empty()) fail_at(at, "#break outside a #switch, #while, #for or macro");
     const Control c = controls_.back();
@@ -446,7 +431,7 @@ void Interpreter::directive_break(const Token& at) {
   }
 }
 
-void Interpreter::directive_while(const Token& at) {
+void DirectiveRunner::directive_while(const Token& at) {
   Control c;
   c.kind = Control::Kind::while_loop;
   c.frame = stream_.depth() - 1;
@@ -457,7 +442,7 @@ void Interpreter::directive_while(const Token& at) {
   controls_.push_back(c);
 }
 
-void Interpreter::directive_for(const Token& at) {
+void DirectiveRunner::directive_for(const Token& at) {
   expect("(", " after #for");
   const std::string var = expect_identifier_raw("for the #for loop variable");
   expect(",", " after the #for variable");
@@ -482,7 +467,7 @@ void Interpreter::directive_for(const Token& at) {
   controls_.push_back(c);
 }
 
-void Interpreter::directive_macro(const Token& at) {
+void DirectiveRunner::directive_macro(const Token& at) {
   MacroDefinition m;
   const std::string name = expect_identifier_raw("for the macro name");
   Token open = raw();
@@ -506,11 +491,25 @@ void Interpreter::directive_macro(const Token& at) {
   symbols_.declare(name, std::move(m));   // macros always live in the global table (§3)
 }
 
-void Interpreter::directive_message(const Token& at, const std::string& kind) {
+void DirectiveRunner::directive_message(const Token& at, const std::string& kind) {
   const std::string text = parse_string();
   if (kind == "error") fail_at(at, "#error: " + text);
   std::string out = kind == "warning" ? format_diagnostic(at.loc, "warning", text, {}) : text;
   if (options_.message_sink) options_.message_sink(out); else std::cerr << out << (kind == "warning" ? "\n" : "");
+}
+
+void DirectiveRunner::leaving_include(std::size_t frame, const SourceFile& file) {
+  if (!controls_.empty() && controls_.back().frame == frame)
+    fail(controls_.back().loc,
+         "this directive is not closed in its file: expected '#end' before the end of '" + *file.name + "'");
+  symbols_.pop_scope();
+}
+
+void DirectiveRunner::check_closed_at_end() const {
+  if (!controls_.empty()) {
+    const Control& open = controls_.back();
+    fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
+  }
 }
 
 }  // namespace povtrace::sdl

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "parser/interpreter.hpp"
+#include "parser/directives/directive_services.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -106,7 +106,7 @@ std::optional<Value> read_item(UserFile& f, bool& at_end) {
 }
 }  // namespace
 
-fs::path Interpreter::confined_path(const std::string& name, const Token& at) const {
+fs::path DirectiveRunner::confined_path(const std::string& name, const Token& at) const {
   std::error_code ec;
   const fs::path cwd = fs::current_path(ec);
   const fs::path written(name);
@@ -127,7 +127,7 @@ fs::path Interpreter::confined_path(const std::string& name, const Token& at) co
                   "): povtrace reads and writes user files only there");
 }
 
-void Interpreter::directive_fopen(const Token& at) {
+void DirectiveRunner::directive_fopen(const Token& at) {
   const std::string id = expect_identifier_raw("for the file after #fopen");
   Token name_token = next();
   std::string name;
@@ -164,7 +164,7 @@ void Interpreter::directive_fopen(const Token& at) {
 
 // #fclose Id: closes and undefines the file; an identifier that is no open file (one read to its end, say) is
 // ignored, as POV-Ray does.
-void Interpreter::directive_fclose(const Token& at) {
+void DirectiveRunner::directive_fclose(const Token& at) {
   Token id = raw();
   if (id.kind != TokenKind::identifier) fail_expected(id, "a file identifier after #fclose");
   if (const Value* v = lookup(id); v && std::holds_alternative<std::shared_ptr<UserFile>>(*v)) {
@@ -175,7 +175,7 @@ void Interpreter::directive_fclose(const Token& at) {
   (void)at;
 }
 
-void Interpreter::directive_read(const Token& at) {
+void DirectiveRunner::directive_read(const Token& at) {
   expect("(", " after #read");
   Token id = next();
   const Value* v = lookup(id);
@@ -195,7 +195,7 @@ void Interpreter::directive_read(const Token& at) {
       fail_expected(t, "an identifier to read into, or ')'");
     const std::string name(t.text);
     const bool subscripted = ahead_is("[");
-    std::optional<ElementRef> element;
+    std::optional<Interpreter::ElementRef> element;
     if (subscripted) element = parse_element_reference(t);
     if (!at_end) {
       std::optional<Value> item = read_item(*file, at_end);
@@ -210,7 +210,7 @@ void Interpreter::directive_read(const Token& at) {
   (void)at;
 }
 
-void Interpreter::directive_write(const Token& at) {
+void DirectiveRunner::directive_write(const Token& at) {
   expect("(", " after #write");
   Token id = next();
   const Value* v = lookup(id);

@@ -557,12 +557,7 @@ constexpr int kProgramStack = 8;
 constexpr int kProgramDepth = 16;
 }  // namespace
 
-bool Interpreter::replaying() const {
-  if (stream_.frame().kind == Frame::Kind::macro) return true;
-  for (const Control& c : controls_)
-    if (c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) return true;
-  return false;
-}
+bool Interpreter::replaying() const { return directives_.replaying(); }
 
 // Reads the grammar of parse_expression … parse_primary once more over the kept tokens, emitting the operations
 // in the order the parse would compute them. It looks at tokens only, never at values.

@@ -216,7 +216,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     if (n == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
     if (n == "val") return Numeric::scalar(std::atof(s.c_str()));
     std::error_code ec;   // a name the file system rejects (too long, say) does not exist
-    return Numeric::scalar(find_include(s) || std::filesystem::exists(s, ec) ? 1.0 : 0.0);
+    return Numeric::scalar(directives_.find_include(s) || std::filesystem::exists(s, ec) ? 1.0 : 0.0);
   }
   if (n == "strcmp") {
     expect("(", "");

@@ -15,7 +15,6 @@ namespace povtrace::sdl {
 
 namespace {
 constexpr std::size_t kMaxIncludeDepth = 32;    // POV-Ray's limit of nested files
-constexpr std::size_t kMaxMacroDepth = 256;     // runaway recursion guard
 }  // namespace
 
 namespace {
@@ -222,13 +221,6 @@ Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(
   }
 }
 
-void Interpreter::IncludeExit::leaving_include(std::size_t frame, const SourceFile& file) {
-  if (!in_.controls_.empty() && in_.controls_.back().frame == frame)
-    in_.fail(in_.controls_.back().loc,
-             "this directive is not closed in its file: expected '#end' before the end of '" + *file.name + "'");
-  in_.symbols_.pop_scope();
-}
-
 bool Interpreter::is_macro_call(const Token& t) const {
   const Value* v = lookup(t);
   return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
@@ -250,14 +242,14 @@ Token Interpreter::next() {
     // the first one returns (`#declare A = #declare B = …`, `M(M(M(…)))`): they nest like expressions.
     if (t.is("#")) {
       const NestingGuard guard(*this, t);
-      directive(t);
+      directives_.run(t);
       continue;
     }
     if (t.kind == TokenKind::identifier && !reserved(t)) {
       const Value* v = t.name ? symbols_.find(t.name) : symbols_.find(t.text);
       if (v && std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
         const NestingGuard guard(*this, t);
-        invoke_macro(t);
+        directives_.call_macro(t);
         continue;
       }
       if (v) process_identifier(t, v);
@@ -275,15 +267,15 @@ bool Interpreter::quick_directive() {
   FileTokens& tokens = *f.tokens;
   const std::size_t word_index = f.index + 1;
   const LexedToken& word = lexed(tokens, word_index);
-  if (word.kind() != TokenKind::identifier) return false;
-  const bool declare = word.payload == word_declare_, local = word.payload == word_local_;
-  if (!declare && !local && word.payload != word_end_) return false;
-  // The tokens raw() would have read (directive() takes the word of #declare from the kept token), against the
+  const DirectiveRunner::Quick kind = directives_.quick_word(word);
+  if (kind == DirectiveRunner::Quick::none) return false;
+  // The tokens raw() would have read (the runner takes the word of #declare from the kept token), against the
   // cancel check; where it is due, raw() makes it.
-  const std::uint32_t counted = declare || local ? 1 : 2;
+  const std::uint32_t counted = kind != DirectiveRunner::Quick::end ? 1 : 2;
   if (options_.cancel && !stream_.count_for_cancel_check(counted)) return false;
   // Between statements of the main file, outside any loop, the tokens read so far are not needed again.
-  if (between_statements_ && nesting_ == 0 && stream_.depth() == 1 && controls_.empty()) tokens.release_before(f.index);
+  if (between_statements_ && nesting_ == 0 && stream_.depth() == 1 && directives_.none_open())
+    tokens.release_before(f.index);
   stream_.step(2);   // the '#' and the word
   // next()'s NestingGuard, which nesting_room() has just let in.
   ++nesting_;
@@ -291,29 +283,7 @@ bool Interpreter::quick_directive() {
     int& nesting;
     ~Leave() { --nesting; }
   } leave{nesting_};
-  if (declare || local) {
-    directive_declare(local);
-    return true;
-  }
-  // #end: the round of a #while loop and the end of an #if without a Token; the rest as directive_end does it.
-  if (!controls_.empty()) {
-    const Control& c = controls_.back();
-    if (c.kind == Control::Kind::if_branch) {
-      controls_.pop_back();
-      return true;
-    }
-    if (c.kind == Control::Kind::while_loop && stream_.depth() - 1 == c.frame) {
-      const Control loop = c;
-      stream_.seek(loop.resume);
-      if (condition_in_parens()) return true;
-      controls_.pop_back();
-      Token opener = make_token(tokens, tokens[word_index]);
-      opener.text = "while";
-      skip_branch(opener, false);
-      return true;
-    }
-  }
-  directive_end(make_token(tokens, tokens[word_index]));
+  directives_.quick(kind, tokens, word_index);
   return true;
 }
 
@@ -347,8 +317,7 @@ const Token& Interpreter::peek_raw() {
     const Token& t = stream_.pushed_back();
     // The #end of the running macro is exempt (POV-Ray checks it first): it returns, and the look goes on in
     // the caller. A `#` comes back raw, so the frame still stands just after it.
-    if (t.is("#") && !controls_.empty() && controls_.back().kind == Control::Kind::macro_call &&
-        controls_.back().frame == stream_.depth() - 1) {
+    if (t.is("#") && directives_.running_macro_here()) {
       const Frame& f = stream_.frame();
       const LexedToken& k = lexed(*f.tokens, f.index);
       const std::string_view text(f.file->text.data() + k.offset, k.length());
@@ -356,7 +325,7 @@ const Token& Interpreter::peek_raw() {
         const Token word = make_token(*f.tokens, k);
         stream_.drop_pushed_back();
         stream_.step();
-        directive_end(word);
+        directives_.end(word);
         continue;
       }
     }
@@ -373,15 +342,7 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
   // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
   // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
   // follows in the caller when that is plain.
-  while (!stream_.has_pushed_back() && !options_.max_tokens && !controls_.empty() &&
-         controls_.back().kind == Control::Kind::macro_call && controls_.back().frame == stream_.depth() - 1) {
-    const Frame& f = stream_.frame();
-    if (!plain_symbol(&lexed(*f.tokens, f.index), '#')) break;
-    const LexedToken& word = lexed(*f.tokens, f.index + 1);
-    if (word.kind() != TokenKind::identifier || word.payload != word_end_) break;
-    // raw() reads the '#' and the word; where the cancel check is due, it makes it
-    if (options_.cancel && !stream_.count_for_cancel_check(2)) break;
-    return_from_macro();   // directive_end of a macro call in its own frame
+  while (!stream_.has_pushed_back() && !options_.max_tokens && directives_.end_running_macro_ahead()) {
     const Frame& caller = stream_.frame();
     const LexedToken& k = lexed(*caller.tokens, caller.index);
     if (k.kind() != TokenKind::end_of_input && !plain_symbol(&k, '#')) return {k.kind(), text_of(k)};
@@ -567,81 +528,6 @@ void TokenStream::push_file(const std::filesystem::path& path, const Token& at, 
   }
   frames_.push_back(frame_for(*file, 0, kind, at.loc, {}));
   files_.push_back(std::move(file));
-}
-
-// A macro call: arguments are bound in a new symbol table, then the body's tokens continue the stream until
-// its #end, which returns to just after the call's ')' (§1 item 4, §4 #macro).
-void Interpreter::invoke_macro(const Token& name) {
-  // The shared definition, not a copy: a call needs no allocation for it (and keeps it alive should the call
-  // redefine the macro).
-  const Boxed<MacroDefinition> boxed = std::get<Boxed<MacroDefinition>>(*lookup(name));
-  const MacroDefinition& macro = *boxed;
-  if (stream_.count(Frame::Kind::macro) >= kMaxMacroDepth)
-    fail_at(name, "macro calls nested too deeply (more than " + std::to_string(kMaxMacroDepth) +
-                      " levels: runaway recursion in '" + std::string(name.text) + "'?)");
-  // Checked here rather than with expect(): its message would be built on every call. A plain '(' is taken
-  // where it stands.
-  if (plain_symbol(plain_ahead(), '(')) consume_plain();
-  else if (const Token open = next(); !open.is("("))
-    fail_expected(open, "'(' after the macro name '" + std::string(name.text) + "'");
-  // The values go on a stack kept by the interpreter (a call allocates nothing for them); a call in an argument
-  // pushes its own above them and takes them off again.
-  const std::size_t base = macro_arguments_.size();
-  struct Unwind {
-    std::vector<std::pair<SymbolTable::NameId, Value>>& stack;
-    std::size_t base;
-    ~Unwind() { stack.resize(base); }
-  } unwind{macro_arguments_, base};
-  for (std::size_t i = 0; i < macro.parameters.size(); ++i) {
-    if (i > 0) accept(",");
-    // The common argument, a declared variable's name alone, read from the kept tokens: what the lines below
-    // do with it, without making its Token (plain_ahead() leaves out macros, arrays and deprecated names).
-    if (const LexedToken* k = plain_ahead(); k && !options_.max_tokens && k->kind() == TokenKind::identifier &&
-                                             !symbols_.is_reserved(k->payload)) {
-      const Frame& f = stream_.frame();
-      const LexedToken& after = lexed(*f.tokens, f.index + 1);
-      if (plain_symbol(&after, ',') || plain_symbol(&after, ')'))
-        if (const auto level = symbols_.level_of(k->payload)) {
-          stream_.step();
-          macro_arguments_.emplace_back(macro.parameter_ids[i], Alias{*level, k->payload});
-          continue;
-        }
-    }
-    Token first = next();
-    // A lone identifier naming an outer variable binds by alias (§4): writes go through to the caller. The look
-    // at the token after it has no side effects: if `first` is the result of a macro (`P(Fact(5))`), the #end
-    // of that macro must not run, and drop its locals, before `first` is evaluated.
-    if (first.kind == TokenKind::identifier && !first.element && !reserved(first)) {
-      const bool alone = ahead_is(",") || ahead_is(")");   // lexed first, as the token after it always was
-      auto level = first.name ? symbols_.level_of(first.name) : symbols_.level_of(first.text);
-      if (level && alone) {
-        macro_arguments_.emplace_back(
-            macro.parameter_ids[i],
-            Alias{*level, first.name ? first.name : symbols_.id_of(first.text)});
-        continue;
-      }
-    }
-    std::optional<Value> value;
-    {
-      const RawOperatorLook raw_look(*this);   // POV-Ray's Ok_To_Declare is off in a macro's arguments
-      value = try_parse_rvalue(first);
-    }
-    if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");
-    macro_arguments_.emplace_back(macro.parameter_ids[i], std::move(*value));
-  }
-  if (plain_symbol(plain_ahead(), ')')) consume_plain();
-  else if (Token close = next(); !close.is(")"))
-    fail_expected(close, "')' closing the call of macro '" + std::string(name.text) + "' (it takes " +
-                             std::to_string(macro.parameters.size()) + " parameters)");
-  symbols_.push_scope();
-  for (std::size_t i = base; i < macro_arguments_.size(); ++i)
-    symbols_.bind(macro_arguments_[i].first, std::move(macro_arguments_[i].second));
-  stream_.push_macro(macro, name);
-  Control c;
-  c.kind = Control::Kind::macro_call;
-  c.frame = stream_.depth() - 1;
-  c.loc = name.loc;
-  controls_.push_back(c);
 }
 
 }  // namespace povtrace::sdl

@@ -393,11 +393,7 @@ void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::
 std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
   // A #while/#for of this frame goes back to earlier tokens of the file, and what the scanner reads is not kept
   // for it to replay.
-  bool loop_in_frame = false;
-  for (const Control& c : controls_)
-    if ((c.kind == Control::Kind::while_loop || c.kind == Control::Kind::for_loop) && c.frame == stream_.depth() - 1)
-      loop_in_frame = true;
-  return stream_.literal_scan_start(loop_in_frame);
+  return stream_.literal_scan_start(directives_.loop_in_frame(stream_.depth() - 1));
 }
 
 // As many literal `triangle { <…>, <…>, <…> }` / `smooth_triangle { <…>, <…>, … }` items as follow (no

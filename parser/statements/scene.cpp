@@ -10,7 +10,7 @@
 
 namespace povtrace::sdl {
 
-Interpreter::Interpreter(const ParseOptions& options) : stream_(options, symbols_, include_exit_), options_(options) {
+Interpreter::Interpreter(const ParseOptions& options) : stream_(options, symbols_, directives_), options_(options) {
   default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
 }
 
@@ -37,12 +37,18 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
     if (!e.context().empty() || stream_.depth() < 2) throw;
     throw ParseError(e, reached_from());
   }
-  if (!controls_.empty()) {
-    const Control& open = controls_.back();
-    fail(open.loc, "this directive is not closed: expected '#end' before the end of the file");
-  }
+  directives_.check_closed_at_end();
   scene_.file_names = stream_.file_names();
   return std::move(scene_);
+}
+
+void Interpreter::directive_version(const Token& at) {
+  const double v = parse_float();
+  scene_.language_version = static_cast<int>(std::lround(v * 100.0));
+  version_directive_seen_ = true;
+  if (peek_raw().is(";")) next();
+  if (!statement_seen_ && stream_.depth() == 1) scene_.version_given = true;
+  (void)at;
 }
 
 void Interpreter::parse_statement(const Token& t) {
@@ -210,7 +216,7 @@ void Interpreter::call_macros_ahead() {
     if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
     const Token name = raw();   // what next() reads first, with the cancel check counted
     const NestingGuard guard(*this, name);
-    invoke_macro(name);
+    directives_.call_macro(name);
   }
 }
 
