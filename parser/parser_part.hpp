@@ -57,6 +57,13 @@ class ParserPart {
   inline const Token& peek_raw();   // the next token without running a directive or macro call first
   inline bool reserved(const Token& t) const;
   using NestingGuard = PartNestingGuard<Interpreter>;
+  // The kept-token reads of the fast paths (interpreter.hpp says what each may skip): read by the directives.
+  inline void skip_expected(char symbol, std::string_view context);   // expect() without making its Token
+  inline std::string expect_identifier_raw(std::string_view context);
+  inline const LexedToken* plain_ahead();
+  inline void consume_plain();
+  inline auto raw_ahead();   // the Interpreter's Ahead: kind and text of what peek_raw() would return
+  inline void skip_ahead();
 
   // ---- diagnostics (Diagnostics from S3) ----
   [[noreturn]] inline void fail_at(const Token& t, const std::string& message) const;
@@ -70,6 +77,7 @@ class ParserPart {
   inline Numeric parse_additive_after(Numeric first_operand);
   inline bool starts_string(const Token& t) const;
   inline double parse_float();
+  inline double parse_float_full();   // a float at the full level (?:, comparisons)
   inline Vec3 parse_vector();
   inline Colour parse_colour();
   inline bool starts_colour(const Token& t) const;

@@ -20,6 +20,14 @@ inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symb
 inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
 inline const Token& ParserPart::peek_raw() { return in_.peek_raw(); }
 inline bool ParserPart::reserved(const Token& t) const { return in_.reserved(t); }
+inline void ParserPart::skip_expected(char symbol, std::string_view context) { in_.skip_expected(symbol, context); }
+inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
+  return in_.expect_identifier_raw(context);
+}
+inline const LexedToken* ParserPart::plain_ahead() { return in_.plain_ahead(); }
+inline void ParserPart::consume_plain() { in_.consume_plain(); }
+inline auto ParserPart::raw_ahead() { return in_.raw_ahead(); }
+inline void ParserPart::skip_ahead() { in_.skip_ahead(); }
 
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
@@ -37,6 +45,7 @@ inline Numeric ParserPart::parse_additive_after(Numeric first_operand) {
 }
 inline bool ParserPart::starts_string(const Token& t) const { return in_.starts_string(t); }
 inline double ParserPart::parse_float() { return in_.parse_float(); }
+inline double ParserPart::parse_float_full() { return in_.parse_float_full(); }
 inline Vec3 ParserPart::parse_vector() { return in_.parse_vector(); }
 inline Colour ParserPart::parse_colour() { return in_.parse_colour(); }
 inline bool ParserPart::starts_colour(const Token& t) const { return in_.starts_colour(t); }

@@ -18,14 +18,15 @@
 //   replaying(), loop_in_frame(frame), none_open(), check_closed_at_end()  queries of the control stack
 //   find_include(name)           the include search, which file_exists() asks too
 //
-// Services it still takes from the Interpreter, through the private inline forwarders of directive_services.hpp
-// (the interface to narrow when the reader and expression parts exist, S5/S7): next, peek, peek_raw, unget,
-// expect, accept, skip_expected, expect_identifier_raw, plain_ahead, consume_plain, raw_ahead, skip_ahead,
-// lookup, reserved, RawOperatorLook (through in_), parse_float, parse_float_full, parse_additive,
-// parse_expression, parse_string, starts_string, try_parse_rvalue, numeric_ahead, call_macros_ahead,
-// parse_defined_identifier, parse_element_reference, store_element, directive_declare_element,
-// check_function_redeclaration, parse_default, directive_version and language_version (the scene's). The token
-// stream, the symbols, the diagnostics and the options it holds directly.
+// It is a ParserPart (parser_part.hpp): the token reader's, the diagnostics' and the expressions' services come
+// through ParserPart's forwarders, as for every part (next, peek, peek_raw, unget, expect, accept, skip_expected,
+// expect_identifier_raw, plain_ahead, consume_plain, raw_ahead, skip_ahead, lookup, reserved, fail_at,
+// fail_expected, warn, parse_float(_full), parse_additive, parse_expression, parse_string, starts_string,
+// language_version). The services only it uses go to the Interpreter through the private inline forwarders of
+// directive_services.hpp: try_parse_rvalue, numeric_ahead, call_macros_ahead, parse_defined_identifier,
+// parse_element_reference, store_element, directive_declare_element, check_function_redeclaration, parse_default,
+// directive_version, and RawOperatorLook (through in_). The token stream's kept tokens and frames, the symbols,
+// the diagnostics' fail(loc) and the options it holds directly.
 #pragma once
 
 #include <cstddef>
@@ -41,17 +42,18 @@
 #include "parser/lexing/lexer.hpp"
 #include "parser/lexing/token_stream.hpp"
 #include "parser/parse_scene.hpp"
+#include "parser/parser_part.hpp"
 
 namespace povtrace::sdl {
 
 class Interpreter;
 
-class DirectiveRunner final : public TokenStream::IncludeExit {
+class DirectiveRunner final : public TokenStream::IncludeExit, ParserPart {
  public:
   // Only kept here, not used, until a directive runs (the Interpreter builds its parts around it).
   DirectiveRunner(Interpreter& in, const ParseOptions& options, TokenStream& stream, SymbolTable& symbols,
                   const Diagnostics& diagnostics)
-      : in_(in), options_(options), stream_(stream), symbols_(symbols), diagnostics_(diagnostics) {}
+      : ParserPart(in), in_(in), options_(options), stream_(stream), symbols_(symbols), diagnostics_(diagnostics) {}
   DirectiveRunner(const DirectiveRunner&) = delete;
   DirectiveRunner& operator=(const DirectiveRunner&) = delete;
 
@@ -177,36 +179,12 @@ class DirectiveRunner final : public TokenStream::IncludeExit {
   bool frame_ahead_is(std::string_view symbol) { return stream_.frame_ahead_is(symbol); }
   std::string_view text_of(const LexedToken& k) const { return stream_.text_of(k); }
   bool plain_symbol(const LexedToken* k, char c) const { return stream_.plain_symbol(k, c); }
-  void unget(const Token& t) { stream_.unget(t); }
   const SourceFile& file_of(const SourceLoc& loc) const { return stream_.file_of(loc); }
   FileName file_name(std::string_view name) { return stream_.file_name(name); }
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const { diagnostics_.fail(loc, message); }
-  [[noreturn]] void fail_at(const Token& t, const std::string& message) const { diagnostics_.fail_at(t, message); }
-  [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const {
-    diagnostics_.fail_expected(t, expected);
-  }
-  void warn(const SourceLoc& loc, const std::string& message) const { diagnostics_.warn(loc, message); }
-  bool reserved(const Token& t) const { return sdl::reserved(symbols_, t); }
 
-  // ---- the Interpreter's services (directive_services.hpp) ----
-  Token next();
-  const Token& peek();
-  const Token& peek_raw();
-  Token expect(std::string_view symbol, std::string_view context);
-  bool accept(std::string_view symbol);
-  void skip_expected(char symbol, std::string_view context);
-  std::string expect_identifier_raw(std::string_view context);
-  const LexedToken* plain_ahead();
-  void consume_plain();
-  auto raw_ahead();
-  void skip_ahead();
-  const Value* lookup(const Token& t) const;
-  double parse_float();
-  double parse_float_full();
-  Numeric parse_additive();
-  Numeric parse_expression();
-  std::string parse_string();
-  bool starts_string(const Token& t) const;
+  // ---- the Interpreter's services only the directives use (directive_services.hpp); the reader's and the
+  // expressions' come through ParserPart, as for every part ----
   std::optional<Value> try_parse_rvalue(const Token& first);
   bool numeric_ahead();
   void call_macros_ahead();
@@ -217,8 +195,9 @@ class DirectiveRunner final : public TokenStream::IncludeExit {
   void check_function_redeclaration(const Token& name, bool local, const Value& value);
   void parse_default(const Token& keyword);
   void directive_version(const Token& at);
-  int language_version() const;
 
+  // The Interpreter again (ParserPart keeps its own private): for the services above and RawOperatorLook, until
+  // the value reader and the token reader are parts of their own (S5, S11).
   Interpreter& in_;
   const ParseOptions& options_;
   TokenStream& stream_;

@@ -8,30 +8,6 @@
 
 namespace povtrace::sdl {
 
-inline Token DirectiveRunner::next() { return in_.next(); }
-inline const Token& DirectiveRunner::peek() { return in_.peek(); }
-inline const Token& DirectiveRunner::peek_raw() { return in_.peek_raw(); }
-inline Token DirectiveRunner::expect(std::string_view symbol, std::string_view context) {
-  return in_.expect(symbol, context);
-}
-inline bool DirectiveRunner::accept(std::string_view symbol) { return in_.accept(symbol); }
-inline void DirectiveRunner::skip_expected(char symbol, std::string_view context) {
-  in_.skip_expected(symbol, context);
-}
-inline std::string DirectiveRunner::expect_identifier_raw(std::string_view context) {
-  return in_.expect_identifier_raw(context);
-}
-inline const LexedToken* DirectiveRunner::plain_ahead() { return in_.plain_ahead(); }
-inline void DirectiveRunner::consume_plain() { in_.consume_plain(); }
-inline auto DirectiveRunner::raw_ahead() { return in_.raw_ahead(); }
-inline void DirectiveRunner::skip_ahead() { in_.skip_ahead(); }
-inline const Value* DirectiveRunner::lookup(const Token& t) const { return in_.lookup(t); }
-inline double DirectiveRunner::parse_float() { return in_.parse_float(); }
-inline double DirectiveRunner::parse_float_full() { return in_.parse_float_full(); }
-inline Numeric DirectiveRunner::parse_additive() { return in_.parse_additive(); }
-inline Numeric DirectiveRunner::parse_expression() { return in_.parse_expression(); }
-inline std::string DirectiveRunner::parse_string() { return in_.parse_string(); }
-inline bool DirectiveRunner::starts_string(const Token& t) const { return in_.starts_string(t); }
 inline std::optional<Value> DirectiveRunner::try_parse_rvalue(const Token& first) {
   return in_.try_parse_rvalue(first);
 }
@@ -51,6 +27,5 @@ inline void DirectiveRunner::check_function_redeclaration(const Token& name, boo
 }
 inline void DirectiveRunner::parse_default(const Token& keyword) { in_.parse_default(keyword); }
 inline void DirectiveRunner::directive_version(const Token& at) { in_.directive_version(at); }
-inline int DirectiveRunner::language_version() const { return in_.scene_.language_version; }
 
 }  // namespace povtrace::sdl
