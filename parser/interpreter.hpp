@@ -6,7 +6,8 @@
 //   lexing/token_stream.cpp      the reader over TokenStream: next() hands directives and macro calls to directives_
 //   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
 //   directives/macros.cpp        DirectiveRunner: macro calls
-//   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
+//   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions; the programs that
+//                                replay them are the ExpressionPrograms part (expression_programs.hpp)
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/objects.cpp          shapes, CSG, object modifiers and transforms
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
@@ -34,6 +35,7 @@
 #include "scene/description_transforms.hpp"
 #include "parser/lexing/lexer.hpp"
 #include "parser/lexing/diagnostics.hpp"
+#include "parser/lexing/nesting_limit.hpp"
 #include "parser/lexing/token_stream.hpp"
 #include "parser/extents/object_extents.hpp"
 #include "parser/parse_scene.hpp"
@@ -43,45 +45,13 @@
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
+#include "parser/expressions/builtins.hpp"
+#include "parser/expressions/expression_programs.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
 namespace povtrace::sdl {
-
-// The float arguments of a built-in call, on the stack (expressions in loops call built-ins millions of times).
-struct CallArguments {
-  static constexpr std::size_t kMax = 64;   // the most any built-in takes (min, max, bitwise_*)
-  std::array<double, kMax> values;
-  std::size_t count = 0;
-  std::size_t size() const { return count; }
-  const double* begin() const { return values.data(); }
-  const double* end() const { return values.data() + count; }
-  double operator[](std::size_t i) const { return values[i]; }
-  void push_back(double v) { values[count++] = v; }   // callers stop at max_args ≤ kMax
-};
-
-// Which of POV-Ray's argument checks a built-in float function has (functions.cpp domain_error): known with the
-// function, so that a call need not compare its name against each checked one.
-enum class FloatDomain : std::uint8_t {
-  any,             // no check
-  non_negative,    // sqrt
-  positive,        // ln, log
-  not_both_zero,   // pow, atan2
-  divisor,         // mod, div: the second argument is not 0
-  unit             // acos, asin: |x| > 1 warns and is clamped
-};
-
-// A built-in float function (functions.cpp): its argument counts, its value and its argument check.
-struct FloatFunction {
-  std::size_t min_args, max_args;
-  double (*eval)(const CallArguments&);   // a plain function: no std::function call per evaluation
-  FloatDomain domain = FloatDomain::any;
-};
-const FloatFunction* find_float_function(std::string_view name);   // nullptr: no such built-in
-// What parse_function_call gives for the built-in `name` with these arguments, or nullopt where it would report
-// an error or warn instead (a domain error, acos(2), an infinite result): the expression programs call through here.
-std::optional<double> quiet_float_call(const FloatFunction& f, const CallArguments& args);
 
 class Interpreter {
  public:
@@ -235,36 +205,9 @@ class Interpreter {
   class ExpressionStart;
   double to_float(const Numeric& n, const Token& at) const;
   CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
-  // Loops and macro bodies read the same expressions over and over from the same kept tokens. The first time one
-  // is met again it is translated into a program (numbers, numeric identifiers, + - * / unary ! comparisons & |,
-  // parentheses, vector literals, pure built-in float calls), which later readings run instead of parsing it:
-  // the grammar decides the program from the tokens alone, and the values are checked as it runs. Anything the
-  // program does not cover — a '#' or the end of a file on the way, a string, a macro, an identifier that holds
-  // no number when read, an error or warning the parse would give — leaves it to the full parse, which starts
-  // from the same token and reports it (nothing is consumed before the program has its value).
-  struct ExpressionOp {
-    enum class Code : std::uint8_t {
-      number, name, neg, not_, add, sub, mul, div, compare, and_, or_, vector, call
-    } code = Code::number;
-    std::uint8_t arg = 0;       // compare: the Comparison; vector, call: the component or argument count
-    std::uint32_t name = 0;     // name: the NameId
-    double number = 0;          // number: the value
-    const FloatFunction* function = nullptr;   // call: the built-in
-  };
-  struct ExpressionProgram {
-    std::uint32_t first_op = 0, op_count = 0;   // in program_ops_
-    std::uint32_t end = 0;                      // token index just after the expression
-    bool usable = false;                        // false: the grammar took something no program covers
-  };
-  class ProgramCompiler;
-  // The expression at the frame's next token at the full level (parse_expression) or the parameter level
-  // (parse_additive), run as a program where one exists or can be made; false, having read nothing, elsewhere.
-  bool run_expression_program(bool full, Numeric& out);
-  bool replaying() const;   // inside a macro body or a #while/#for loop: where expressions are read again
-  // Found through the note (FileTokens::note) of the expression's first token and level: 0 not tried yet, 1 no
-  // program, else programs_[note - 2]. A note is an index, not a hash lookup: asked at every expression.
-  std::vector<ExpressionProgram> programs_;
-  std::vector<ExpressionOp> program_ops_;
+  // The expression ahead run as a compiled program (expression_programs.hpp), where one exists and the nesting
+  // limit has room for the levels it passes by; false, having read nothing, elsewhere.
+  bool run_expression_program(bool full, Numeric& out) { return programs_.run(full, out, nesting_); }
 
   // ---- arrays (arrays.cpp) ----
   Value parse_array_declaration(const Token& keyword);
@@ -472,6 +415,7 @@ class Interpreter {
   DirectiveRunner directives_{*this, options_, stream_, symbols_, diagnostics_};
   // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
   Diagnostics diagnostics_{options_, stream_, symbols_};
+  ExpressionPrograms programs_{options_, stream_, symbols_, directives_};   // of replayed expressions (S6)
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
@@ -494,10 +438,7 @@ class Interpreter {
   std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;
   ttf::StringEncoding string_encoding_ = ttf::StringEncoding::ascii;
 
-  // Input nested deeper than this (parentheses, vectors, unary operators, object { object { … } }, transform
-  // blocks) is refused with an error instead of overflowing the C++ stack. POV-Ray itself crashes there.
-  static constexpr int kMaxNesting = 500;
-  int nesting_ = 0;
+  int nesting_ = 0;   // the levels NestingGuard counts, up to kMaxNesting (lexing/nesting_limit.hpp)
   class NestingGuard {
    public:
     NestingGuard(Interpreter& in, const Token& at);

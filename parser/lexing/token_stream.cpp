@@ -4,11 +4,11 @@
 // so that the fetcher's calls of raw() stay in one translation unit.
 #include <algorithm>
 
-#include <pthread.h>
 
 #include "parser/lexing/token_stream.hpp"
 
 #include "parser/interpreter.hpp"
+#include "parser/lexing/nesting_limit.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -178,31 +178,6 @@ bool TokenStream::literal_scan_allows(std::uint64_t tokens, std::size_t items, c
   // Past the token limit the ordinary reading takes over and reports it where it is reached.
   return !options_.max_tokens || tokens_read_ + tokens <= options_.max_tokens;
 }
-
-namespace {
-// The lowest address of the calling thread's stack (null where it cannot be known). Found once per thread:
-// for the main thread glibc reads /proc/self/maps.
-const char* stack_lowest_address() {
-#if defined(__GLIBC__)
-  thread_local const char* lowest = [] {
-    pthread_attr_t attr;
-    if (pthread_getattr_np(pthread_self(), &attr) != 0) return static_cast<const char*>(nullptr);
-    void* address = nullptr;
-    std::size_t size = 0;
-    const bool ok = pthread_attr_getstack(&attr, &address, &size) == 0;
-    pthread_attr_destroy(&attr);
-    return ok ? static_cast<const char*>(address) : nullptr;
-  }();
-  return lowest;
-#else
-  return nullptr;
-#endif
-}
-
-// Stack kept free below the deepest nesting level: what runs between two levels, the error message and the
-// unwinding of the exception.
-constexpr std::ptrdiff_t kStackReserve = 256 * 1024;
-}  // namespace
 
 // The level count makes the limit the same everywhere; the stack check is the safety net for builds with much
 // larger frames (sanitizers, -O0) and for threads with small stacks, where 500 levels may not fit.
