@@ -8,19 +8,14 @@
 //   directives/macros.cpp        DirectiveRunner: macro calls
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
-//   objects/objects.cpp          shapes, CSG, object modifiers and transforms
+//   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
+//                                ObjectParser part (object_parser.hpp); objects/implicit_shapes.cpp also holds
+//                                parse_uv_vector (Parse_UV_Vect), an expression service of the Interpreter's
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
 //   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
 //   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
-//   objects/quadric_shapes.cpp   cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
-//   objects/implicit_shapes.cpp  superellipsoid, blob
-//   objects/height_field.cpp     height_field
-//   objects/text.cpp             text (fonts read by runtime/truetype*.cpp, laid out by runtime/text_layout.cpp)
-//   objects/csg_modifiers.cpp    inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
-//   objects/sweep_shapes.cpp     lathe, prism, sor
-//   objects/isosurface.cpp       isosurface
 #pragma once
 
 #include <array>
