@@ -9,19 +9,14 @@
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions; the programs that
 //                                replay them are the ExpressionPrograms part (expression_programs.hpp)
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
-//   objects/objects.cpp          shapes, CSG, object modifiers and transforms
+//   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
+//                                ObjectParser part (object_parser.hpp); objects/implicit_shapes.cpp also holds
+//                                parse_uv_vector (Parse_UV_Vect), an expression service of the Interpreter's
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
 //   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
 //   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
-//   objects/quadric_shapes.cpp   cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
-//   objects/implicit_shapes.cpp  superellipsoid, blob
-//   objects/height_field.cpp     height_field
-//   objects/text.cpp             text (fonts read by runtime/truetype*.cpp, laid out by runtime/text_layout.cpp)
-//   objects/csg_modifiers.cpp    inverse (De Morgan), clipped_by, bounded_by, removal of unnecessary bounds
-//   objects/sweep_shapes.cpp     lathe, prism, sor
-//   objects/isosurface.cpp       isosurface
 #pragma once
 
 #include <array>
@@ -42,13 +37,13 @@
 #include "parser/lexing/reserved_words.hpp"
 #include "parser/directives/directive_runner.hpp"
 #include "parser/directives/symbols.hpp"
-#include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
 #include "parser/expressions/builtins.hpp"
 #include "parser/expressions/expression_programs.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
+#include "parser/objects/object_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
 namespace povtrace::sdl {
@@ -198,6 +193,9 @@ class Interpreter {
   bool starts_colour(const Token& t) const;
   std::string parse_string();
   std::string parse_datetime();
+  // POV-Ray's Parse_UV_Vect: a float or a 2-D vector at the parameter level (superellipsoid, image_map repeat and
+  // offset); its body is in objects/implicit_shapes.cpp until the expression parser is a part (S7).
+  std::pair<double, double> parse_uv_vector(std::string_view context);
   Numeric compare_strings();   // "a" < "b" and the other comparisons of two strings
   static int strcmp_value(const std::string& a, const std::string& b);   // POV-Ray's strcmp(): a char difference
   bool starts_string(const Token& t) const;
@@ -261,120 +259,16 @@ class Interpreter {
   static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
   const Texture& default_texture() const { return default_texture_; }
 
-  // ---- objects (objects.cpp) ----
-  std::optional<SceneItem> try_parse_item(const Token& t);   // sphere, plane, box, csg, object, light_source
-  Object parse_sphere(const Token& keyword);
-  Object parse_plane(const Token& keyword);
-  Object parse_box(const Token& keyword);
-  Object parse_csg(const Token& keyword, CsgKind kind);
-  SceneItem parse_object_block(const Token& keyword);
-  SceneItem parse_object_block_rest(const Token& keyword, const Token& first);   // after `object {` and its first token
-  // A statement `object { … }`: a declared object is copied once and moved into the scene once (not passed up
-  // through SceneItem and optional, two more moves of a large struct per placed copy).
-  void place_object_block(const Token& keyword);
-  void parse_object_modifiers(Object& object);
-  bool try_object_modifier(const Token& t, Object& object);
-  void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
-  void parse_material_block(const Token& keyword, Object& object);
-  static std::string csg_name(CsgKind kind);
-
-  // ---- cylinder, cone, disc, torus (quadric_shapes.cpp) ----
-  Object parse_cylinder(const Token& keyword);
-  Object parse_cone(const Token& keyword);
-  Object parse_disc(const Token& keyword);
-  Object parse_torus(const Token& keyword);
-  bool accept_open();
-  void check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2);
-  // `sturm [bool]` as an object modifier: legal only on a torus, poly, blob, lathe, prism or sor among the rendered
-  // shapes (POV-Ray's STURM_OK_OBJECT); false when the object is not one of them (another shape decides).
-  bool try_sturm_modifier(const Token& t, Object& object);
-  // poly (order 0: read from the block), cubic (3), quartic (4) — poly_shapes.cpp.
-  Object parse_poly(const Token& keyword, int order);
-  Object parse_quadric(const Token& keyword);
-  // ---- triangles, polygons and meshes (meshes.cpp, mesh2.cpp) ----
-  struct MeshBuilder;
-  std::optional<Object> parse_declared_object_body();   // `shape { Declared_Id modifiers }`
-  Object parse_triangle(const Token& keyword, bool smooth);
-  Object parse_polygon(const Token& keyword);
-  Object parse_mesh(const Token& keyword);
-  void parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh);
-  // A mesh triangle as read (either way): normals checked and normalised, degenerate ones counted, then added.
-  void add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p, std::array<Vec3, 3> n,
-                         const std::array<std::int32_t, 3>& tex, const std::optional<std::array<double, 6>>& uv,
-                         MeshBuilder& mesh);
-  // Literal mesh items read straight from the source text (mesh_scan.hpp): TokenStream::literal_scan_start.
-  using LiteralScanStart = TokenStream::LiteralScanStart;
-  std::optional<LiteralScanStart> literal_scan_start();   // with whether a loop of this frame is open
-  void literal_scan_commit(const LiteralScanStart& start, const LexPosition& to, std::uint64_t tokens) {
-    stream_.literal_scan_commit(start, to, tokens);
-  }
-  bool literal_scan_allows(std::uint64_t tokens, std::size_t items, const LexPosition& at, std::size_t scan_begin) {
-    return stream_.literal_scan_allows(tokens, items, at, scan_begin);
-  }
-  void scan_mesh_triangles(MeshBuilder& mesh);
-  // Up to `max_items` items `<n1, …, nN> [,]` of a mesh2 section, each handed to take(values), which may refuse
-  // it (false: it is then read the ordinary way, which reports what is wrong with it); returns how many it took.
-  template <std::size_t N, class Take>
-  std::size_t scan_mesh2_items(std::size_t max_items, Take&& take);
-  std::array<std::int32_t, 3> parse_mesh_triangle_textures(MeshBuilder& mesh);
-  std::optional<Vec3> parse_inside_vector();
-  Object parse_mesh2(const Token& keyword);
-  std::size_t parse_mesh2_count(const Token& keyword, bool zero_allowed);
-  void check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count, const std::string& items);
-  void expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items);
-  std::vector<float> parse_mesh2_vectors(const Token& keyword, bool normals);
-  std::vector<double> parse_mesh2_uv_vectors(const Token& keyword);
-  std::array<std::uint32_t, 3> mesh2_index_triple(const Token& at, const Numeric& value, std::size_t limit,
-                                                  const std::string& what);
-  std::vector<std::uint32_t> parse_mesh2_indices(const Token& keyword, std::size_t count, std::size_t limit,
-                                                 const std::string& what);
-  void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
-  // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
-  static void invert_object(Object& object);                  // De Morgan for CSG (§10)
-  void parse_clip_or_bound(const Token& keyword, Object& object);
-  std::vector<Object> parse_bound_clip_objects(const Token& keyword);
-  bool all_children_finite(const Csg& csg) const;
-  void remove_unnecessary_bounds(Object& object);             // Link_To_Frame's Remove_Bounds, when placed
-
-  // ---- superellipsoid, blob (implicit_shapes.cpp) ----
-  std::pair<double, double> parse_uv_vector(std::string_view context);   // POV-Ray's Parse_UV_Vect
-  Object parse_superellipsoid(const Token& keyword);
-  Object parse_blob(const Token& keyword);
-  BlobComponent parse_blob_sphere(bool old_syntax);
-  BlobComponent parse_blob_cylinder(const Token& keyword);
-  void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
-
-  // ---- lathe, prism, sor (sweep_shapes.cpp) ----
-  Object parse_lathe(const Token& keyword);
-  Object parse_prism(const Token& keyword);
-  Object parse_sor(const Token& keyword);
-  SplineKind parse_spline_keywords(bool* conic);   // conic: also the prism's sweep keywords
-  long parse_profile_count(const std::string& shape, SplineKind spline, const long minimum[3]);
-  std::vector<ProfilePoint> parse_profile_points(
-      long count, const std::function<void(long, const std::vector<ProfilePoint>&, const Token&)>& check);
-  void close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points);
-
-  // ---- isosurface (isosurface.cpp) ----
-  Object parse_isosurface(const Token& keyword);
-  void parse_isosurface_function(Isosurface& iso, Object& o);
-  void parse_isosurface_container(Isosurface& iso);
-  bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
-  void correct_isosurface_values(const Token& keyword, Isosurface& iso);
-  // ---- height_field (height_field.cpp) ----
-  Object parse_height_field(const Token& keyword);
-  void parse_height_field_image(const Token& keyword, HeightField& h, Object& o);
-  void parse_height_field_function(const Token& keyword, HeightField& h, Object& o);
-
-  // ---- text (text.cpp) ----
-  Object parse_text(const Token& keyword);
-  ttf::Font& font_for_text(const Token& at, const std::string& name);
-  ttf::Font& internal_font(const Token& at, int id);
-
   // ---- spline values (expressions/spline_values.hpp) ----
   SplineValues splines_{*this};
 
   // ---- camera and lights (statements/camera_light_parser.hpp) ----
   CameraLightParser camera_lights_{*this, textures_};
+
+  // ---- objects (objects/object_parser.hpp) ----
+  // It holds the stream and the directive runner (built later: it reads them only while parsing) for the mesh
+  // scanners, which read the kept tokens straight from the source text.
+  ObjectParser objects_{*this, textures_, camera_lights_, stream_, directives_};
 
   // ---- features parsed but not rendered yet (unsupported.cpp) ----
   UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
@@ -433,10 +327,6 @@ class Interpreter {
     int noise_generator;   // the scene's when it was prepared (its isosurfaces' functions read it)
   };
   std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
-  // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
-  // global_settings { charset }.
-  std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;
-  ttf::StringEncoding string_encoding_ = ttf::StringEncoding::ascii;
 
   int nesting_ = 0;   // the levels NestingGuard counts, up to kMaxNesting (lexing/nesting_limit.hpp)
   class NestingGuard {

@@ -9,6 +9,7 @@
 // parser_part_forwarders.hpp once the Interpreter is complete (interpreter.hpp includes it at its end).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -26,6 +27,7 @@
 namespace povtrace::sdl {
 
 class Interpreter;
+class ObjectExtents;
 class ParserPart;
 
 // A NestingGuard taken by a part: the Interpreter's own (same checks, same message), reached through the part.
@@ -57,15 +59,18 @@ class ParserPart {
   inline const Token& peek_raw();   // the next token without running a directive or macro call first
   inline bool reserved(const Token& t) const;
   using NestingGuard = PartNestingGuard<Interpreter>;
-  // The kept-token reads of the fast paths (interpreter.hpp says what each may skip): read by the directives.
-  inline void skip_expected(char symbol, std::string_view context);   // expect() without making its Token
-  inline std::string expect_identifier_raw(std::string_view context);
+  // The kept-token reads of the fast paths (interpreter.hpp says what each may skip), without making Tokens: the
+  // directives' and the plain-symbol look at an object's closing brace.
   inline const LexedToken* plain_ahead();
   inline void consume_plain();
+  inline bool plain_symbol(const LexedToken* k, char c) const;
+  inline void skip_expected(char symbol, std::string_view context);   // expect() without making its Token
+  inline std::string expect_identifier_raw(std::string_view context);
   inline auto raw_ahead();   // the Interpreter's Ahead: kind and text of what peek_raw() would return
   inline void skip_ahead();
 
   // ---- diagnostics (Diagnostics from S3) ----
+  [[noreturn]] inline void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] inline void fail_at(const Token& t, const std::string& message) const;
   [[noreturn]] inline void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] inline void fail_unsupported(const Token& t, std::string_view what) const;
@@ -86,12 +91,19 @@ class ParserPart {
   // Parse_UV_Vect (express.cpp): a float or a 2-D vector at the parameter level; also read by the shapes.
   inline std::pair<double, double> parse_uv_vector(std::string_view context);
   inline std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
+  // The fuzzer's bound on function work (ParseOptions::max_tokens), shared by every function evaluated during the
+  // parse (FunctionValues from S8): height_field { function } evaluates one over its grid.
+  inline std::uint64_t& function_steps_left();
+  inline bool& function_budget_set();
 
   // ---- objects (ObjectParser from S10) ----
   inline std::optional<SceneItem> try_parse_item(const Token& t);
   inline void parse_object_modifiers(Object& object);
   inline void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
   inline const NotesPool& notes_pool() const;   // where the objects' notes are made (ObjectNotes)
+  // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.hpp): they read the options'
+  // object geometry, the noise generator in force and the notes pool, which are not the object parser's.
+  inline ObjectExtents extents() const;
 
   // ---- features parsed but not rendered (unsupported.cpp) ----
   inline UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
@@ -107,6 +119,11 @@ class ParserPart {
   inline const std::optional<double>& assumed_gamma() const;
   inline const std::vector<std::filesystem::path>& library_paths() const;   // +L, for image files
   inline bool povray_tolerances() const;                                     // ParseOptions::povray_tolerances
+  inline std::uint64_t max_tokens() const;                                   // ParseOptions::max_tokens
+  inline int noise_generator() const;   // the scene's noise generator in force now (functions evaluated now read it)
+  // An object or light finished by `object { }` as a statement, joining the scene.
+  inline void place_object(Object&& object, const SourceLoc& at);
+  inline void place_light(Light light, const SourceLoc& at);
 
  private:
   template <class> friend class PartNestingGuard;

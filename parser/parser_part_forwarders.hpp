@@ -20,15 +20,17 @@ inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symb
 inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
 inline const Token& ParserPart::peek_raw() { return in_.peek_raw(); }
 inline bool ParserPart::reserved(const Token& t) const { return in_.reserved(t); }
+inline const LexedToken* ParserPart::plain_ahead() { return in_.plain_ahead(); }
+inline void ParserPart::consume_plain() { in_.consume_plain(); }
+inline bool ParserPart::plain_symbol(const LexedToken* k, char c) const { return in_.plain_symbol(k, c); }
 inline void ParserPart::skip_expected(char symbol, std::string_view context) { in_.skip_expected(symbol, context); }
 inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
   return in_.expect_identifier_raw(context);
 }
-inline const LexedToken* ParserPart::plain_ahead() { return in_.plain_ahead(); }
-inline void ParserPart::consume_plain() { in_.consume_plain(); }
 inline auto ParserPart::raw_ahead() { return in_.raw_ahead(); }
 inline void ParserPart::skip_ahead() { in_.skip_ahead(); }
 
+inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
   in_.fail_expected(t, expected);
@@ -57,13 +59,16 @@ inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view co
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
   return in_.parse_function_definition(keyword);
 }
+inline std::uint64_t& ParserPart::function_steps_left() { return in_.function_steps_left_; }
+inline bool& ParserPart::function_budget_set() { return in_.function_budget_set_; }
 
-inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.try_parse_item(t); }
-inline void ParserPart::parse_object_modifiers(Object& object) { in_.parse_object_modifiers(object); }
+inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.objects_.try_parse_item(t); }
+inline void ParserPart::parse_object_modifiers(Object& object) { in_.objects_.parse_object_modifiers(object); }
 inline void ParserPart::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  in_.apply_transform(object, m, kind);
+  in_.objects_.apply_transform(object, m, kind);
 }
 inline const NotesPool& ParserPart::notes_pool() const { return in_.notes_pool_; }
+inline ObjectExtents ParserPart::extents() const { return in_.extents(); }
 
 inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
   return in_.skip_unsupported(keyword, what);
@@ -79,5 +84,9 @@ inline const std::vector<std::filesystem::path>& ParserPart::library_paths() con
   return in_.options_.library_paths;
 }
 inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
+inline std::uint64_t ParserPart::max_tokens() const { return in_.options_.max_tokens; }
+inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
+inline void ParserPart::place_object(Object&& object, const SourceLoc& at) { in_.place_object(std::move(object), at); }
+inline void ParserPart::place_light(Light light, const SourceLoc& at) { in_.place_light(std::move(light), at); }
 
 }  // namespace povtrace::sdl

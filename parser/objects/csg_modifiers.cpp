@@ -22,10 +22,11 @@
 //   the bounds' box when that is smaller, and Link_To_Frame does not recompute it), so it is kept as
 //   removed_bounds for the renderer.
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
-void Interpreter::invert_object(Object& object) {
+void ObjectParser::invert_object(Object& object) {
   auto* csg = std::get_if<Csg>(&object.shape);
   if (!csg) {
     object.inverse = !object.inverse;
@@ -40,7 +41,7 @@ void Interpreter::invert_object(Object& object) {
   csg->kind = csg->kind == CsgKind::intersection ? CsgKind::merge : CsgKind::intersection;
 }
 
-std::vector<Object> Interpreter::parse_bound_clip_objects(const Token& keyword) {
+std::vector<Object> ObjectParser::parse_bound_clip_objects(const Token& keyword) {
   std::vector<Object> objects;
   Token t = next();
   while (auto item = try_parse_item(t)) {
@@ -59,7 +60,7 @@ std::vector<Object> Interpreter::parse_bound_clip_objects(const Token& keyword) 
   return objects;
 }
 
-void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
+void ObjectParser::parse_clip_or_bound(const Token& keyword, Object& object) {
   const NestingGuard guard(*this, keyword);
   if (const Token open = next(); !open.is("{")) fail_expected(open, "'{' after '" + std::string(keyword.text) + "'");
   const bool clip = keyword.is("clipped_by");
@@ -84,7 +85,7 @@ void Interpreter::parse_clip_or_bound(const Token& keyword, Object& object) {
 }
 
 // Link_To_Frame's test before it keeps a bounded union whole: every child's box has a volume of at most BOUND_HUGE.
-bool Interpreter::all_children_finite(const Csg& csg) const {
+bool ObjectParser::all_children_finite(const Csg& csg) const {
   if (!csg.lights.empty()) return false;   // a light source is a child with the huge box
   try {
     for (const Object& child : csg.children)
@@ -95,7 +96,7 @@ bool Interpreter::all_children_finite(const Csg& csg) const {
   return true;
 }
 
-void Interpreter::remove_unnecessary_bounds(Object& object) {
+void ObjectParser::remove_unnecessary_bounds(Object& object) {
   const auto* csg = std::get_if<Csg>(&object.shape);
   if (!csg) {
     // A text is a CSG union in POV-Ray; a quadric keeps its bounds unless its box computation found one itself.

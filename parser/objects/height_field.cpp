@@ -16,6 +16,7 @@
 #include "runtime/function_value.hpp"
 #include "runtime/image_files.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 #include "parser/textures/image_location.hpp"
 
 namespace povtrace::sdl {
@@ -24,7 +25,7 @@ namespace povtrace::sdl {
 // pixel (column j, row i from the top) is f(j / (W − 1), i / (H − 1), 0); W and H are rounded to integers. The
 // image's bottom row is the height field's z = 0, as for a file. image_height_at reads the grey back as
 // unsigned short(grey · 65535), in float.
-void Interpreter::parse_height_field_function(const Token& keyword, HeightField& h, Object& o) {
+void ObjectParser::parse_height_field_function(const Token& keyword, HeightField& h, Object& o) {
   const Token width_at = peek();
   const double w = std::floor(parse_float() + 0.5);
   accept(",");
@@ -55,9 +56,9 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
   }
   auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(width) * depth);
   double args[3] = {0, 0, 0}, out[5];
-  if (options_.max_tokens && !function_budget_set_) {   // the fuzzer's bound on function work (call_function_from_sdl)
-    function_steps_left_ = options_.max_tokens * 16;
-    function_budget_set_ = true;
+  if (max_tokens() && !function_budget_set()) {   // the fuzzer's bound on function work (call_function_from_sdl)
+    function_steps_left() = max_tokens() * 16;
+    function_budget_set() = true;
   }
   try {
     for (int i = 0; i < depth; ++i) {
@@ -65,7 +66,7 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
       for (int j = 0; j < width; ++j) {
         args[0] = static_cast<double>(j) / (w - 1);
         const double value =
-            evaluate_function(*fn, args, out, noise_generator(), options_.max_tokens ? &function_steps_left_ : nullptr);
+            evaluate_function(*fn, args, out, noise_generator(), max_tokens() ? &function_steps_left() : nullptr);
         (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] =
             static_cast<std::uint16_t>(function_image_value(value) * 65535.0f);
       }
@@ -79,7 +80,7 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
 }
 
 // The image part of a height field: the type keyword (optional), the name, gamma and premultiplied.
-void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h, Object& o) {
+void ObjectParser::parse_height_field_image(const Token& keyword, HeightField& h, Object& o) {
   Token t = next();
   std::string type;
   if (t.is("function")) {
@@ -93,7 +94,7 @@ void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h,
   if (type.empty() && lower_extension(name) != ".png") type = "'" + std::filesystem::path(name).extension().string() + "'";
   if (!type.empty() && type != "png")
     taint(o.unsupported, UnsupportedFeature{"a height_field read from a " + type + " image", keyword.loc});
-  h.file = locate_image_file(name, options_.library_paths);
+  h.file = locate_image_file(name, library_paths());
   while (true) {
     t = next();
     if (t.is("gamma")) {
@@ -108,7 +109,7 @@ void Interpreter::parse_height_field_image(const Token& keyword, HeightField& h,
   }
 }
 
-Object Interpreter::parse_height_field(const Token& keyword) {
+Object ObjectParser::parse_height_field(const Token& keyword) {
   expect("{", " after 'height_field'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -121,7 +122,7 @@ Object Interpreter::parse_height_field(const Token& keyword) {
       h.smooth = true;
     } else if (t.is("water_level")) {
       h.water_level = parse_float();
-      if (scene_.language_version < 200) h.water_level /= 256.0;
+      if (language_version() < 200) h.water_level /= 256.0;
     } else if (t.is("hierarchy")) {
       const Token n = peek();
       if (n.kind == TokenKind::number || n.is("on") || n.is("off") || n.is("true") || n.is("false") ||
@@ -134,7 +135,7 @@ Object Interpreter::parse_height_field(const Token& keyword) {
   }
   o.shape = h;
   parse_object_modifiers(o);
-  edit_notes(o, notes_pool_).box_skips_clips = true;   // Parse_HField computes the box after its own modifiers
+  edit_notes(o, notes_pool()).box_skips_clips = true;   // Parse_HField computes the box after its own modifiers
   return o;
 }
 

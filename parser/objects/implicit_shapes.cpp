@@ -10,6 +10,7 @@
 //   rotate and a uniform scale (centre scaled, radius² by the square); a non-uniform scale, matrix or transform turns
 //   it into an ellipsoid placed by its own transform. A component's own texture is refused by name.
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -22,7 +23,7 @@ std::pair<double, double> Interpreter::parse_uv_vector(std::string_view context)
   return {n.v[0], n.terms == 1 ? n.v[0] : n.v[1]};
 }
 
-Object Interpreter::parse_superellipsoid(const Token& keyword) {
+Object ObjectParser::parse_superellipsoid(const Token& keyword) {
   expect("{", " after 'superellipsoid'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -40,7 +41,7 @@ bool is_uniform_scaling(const Matrix& m) {
 }
 }  // namespace
 
-void Interpreter::parse_blob_component_modifiers(BlobComponent& c, Object& blob) {
+void ObjectParser::parse_blob_component_modifiers(BlobComponent& c, Object& blob) {
   while (true) {
     const Token t = next();
     if (t.is("}")) return;
@@ -63,7 +64,7 @@ void Interpreter::parse_blob_component_modifiers(BlobComponent& c, Object& blob)
 }
 
 // sphere { C, R, [strength] S … } or the old `component S, R, C`.
-BlobComponent Interpreter::parse_blob_sphere(bool old_syntax) {
+BlobComponent ObjectParser::parse_blob_sphere(bool old_syntax) {
   BlobComponent c;
   if (old_syntax) {
     c.strength = parse_float();
@@ -85,7 +86,7 @@ BlobComponent Interpreter::parse_blob_sphere(bool old_syntax) {
   return c;
 }
 
-BlobComponent Interpreter::parse_blob_cylinder(const Token& keyword) {
+BlobComponent ObjectParser::parse_blob_cylinder(const Token& keyword) {
   expect("{", " after 'cylinder' in a blob");
   BlobComponent c;
   c.kind = BlobComponentKind::cylinder;
@@ -102,7 +103,7 @@ BlobComponent Interpreter::parse_blob_cylinder(const Token& keyword) {
   return c;
 }
 
-Object Interpreter::parse_blob(const Token& keyword) {
+Object ObjectParser::parse_blob(const Token& keyword) {
   expect("{", " after 'blob'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;

@@ -14,6 +14,7 @@
 #include "runtime/function_value.hpp"
 #include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -21,7 +22,7 @@ namespace {
 constexpr int kMaxTrace = 10;   // isosurf.h ISOSURFACE_MAXTRACE
 }
 
-void Interpreter::parse_isosurface_function(Isosurface& iso, Object& o) {
+void ObjectParser::parse_isosurface_function(Isosurface& iso, Object& o) {
   const Token keyword = next();
   if (!keyword.is("function")) fail_expected(keyword, "'function' starting the isosurface");
   auto fn = parse_function_definition(keyword);
@@ -33,7 +34,7 @@ void Interpreter::parse_isosurface_function(Isosurface& iso, Object& o) {
 }
 
 // contained_by { box { C1, C2 } | sphere { C, R } } (or empty: the default box).
-void Interpreter::parse_isosurface_container(Isosurface& iso) {
+void ObjectParser::parse_isosurface_container(Isosurface& iso) {
   expect("{", " after 'contained_by'");
   const Token t = next();
   if (t.is("box")) {
@@ -58,7 +59,7 @@ void Interpreter::parse_isosurface_container(Isosurface& iso) {
   expect("}", " closing contained_by (a box or a sphere)");
 }
 
-bool Interpreter::try_isosurface_item(const Token& t, Isosurface& iso, Object& o) {
+bool ObjectParser::try_isosurface_item(const Token& t, Isosurface& iso, Object& o) {
   if (t.is("contained_by")) parse_isosurface_container(iso);
   else if (t.is("threshold")) iso.threshold = parse_float();
   else if (t.is("accuracy")) iso.accuracy = parse_float();
@@ -79,7 +80,7 @@ bool Interpreter::try_isosurface_item(const Token& t, Isosurface& iso, Object& o
   return true;
 }
 
-void Interpreter::correct_isosurface_values(const Token& keyword, Isosurface& iso) {
+void ObjectParser::correct_isosurface_values(const Token& keyword, Isosurface& iso) {
   if (iso.accuracy <= 0.0) {
     warn(keyword.loc, "isosurface 'accuracy' is not positive; using 0.001 (the default), as POV-Ray does");
     iso.accuracy = 0.001;
@@ -98,7 +99,7 @@ void Interpreter::correct_isosurface_values(const Token& keyword, Isosurface& is
   }
 }
 
-Object Interpreter::parse_isosurface(const Token& keyword) {
+Object ObjectParser::parse_isosurface(const Token& keyword) {
   expect("{", " after 'isosurface'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
   Object o;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 #include "parser/lexing/mesh_scan.hpp"
 
 namespace povtrace::sdl {
@@ -20,7 +21,7 @@ std::string plural(std::size_t n, const std::string& what) {
 }  // namespace
 
 template <std::size_t N, class Take>
-std::size_t Interpreter::scan_mesh2_items(std::size_t max_items, Take&& take) {
+std::size_t ObjectParser::scan_mesh2_items(std::size_t max_items, Take&& take) {
   if (max_items == 0) return 0;
   const auto start = literal_scan_start();
   if (!start) return 0;
@@ -48,7 +49,7 @@ std::size_t Interpreter::scan_mesh2_items(std::size_t max_items, Take&& take) {
 }
 
 // `{ n,` of a mesh2 section: the declared count, truncated as POV-Ray's (int) cast does.
-std::size_t Interpreter::parse_mesh2_count(const Token& keyword, bool zero_allowed) {
+std::size_t ObjectParser::parse_mesh2_count(const Token& keyword, bool zero_allowed) {
   expect("{", " after '" + std::string(keyword.text) + "'");
   const Token at = peek();
   const double n = std::trunc(parse_float());
@@ -60,7 +61,7 @@ std::size_t Interpreter::parse_mesh2_count(const Token& keyword, bool zero_allow
 }
 
 // After the last of `count` items: the section must close here.
-void Interpreter::expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items) {
+void ObjectParser::expect_mesh2_section_end(const Token& keyword, std::size_t count, const std::string& items) {
   const Token t = next();
   if (!t.is("}"))
     fail_at(t, "'" + std::string(keyword.text) + "' declares " + plural(count, items) +
@@ -68,7 +69,7 @@ void Interpreter::expect_mesh2_section_end(const Token& keyword, std::size_t cou
 }
 
 // Before item `index` of `count`: a '}' here means the section lists fewer items than it declares.
-void Interpreter::check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count,
+void ObjectParser::check_mesh2_item(const Token& keyword, std::size_t index, std::size_t count,
                                    const std::string& items) {
   const Token t = peek();
   if (t.is("}"))
@@ -77,7 +78,7 @@ void Interpreter::check_mesh2_item(const Token& keyword, std::size_t index, std:
 }
 
 // vertex_vectors / normal_vectors { n, V1, … }: single precision; normals normalised (zero → <1,0,0>, warned).
-std::vector<float> Interpreter::parse_mesh2_vectors(const Token& keyword, bool normals) {
+std::vector<float> ObjectParser::parse_mesh2_vectors(const Token& keyword, bool normals) {
   const std::size_t n = parse_mesh2_count(keyword, normals);
   std::vector<float> out;
   out.reserve(3 * std::min(n, kMaxReserve));
@@ -110,7 +111,7 @@ std::vector<float> Interpreter::parse_mesh2_vectors(const Token& keyword, bool n
 }
 
 // uv_vectors { n, UV1, … }: u v per vector.
-std::vector<double> Interpreter::parse_mesh2_uv_vectors(const Token& keyword) {
+std::vector<double> ObjectParser::parse_mesh2_uv_vectors(const Token& keyword) {
   const std::size_t n = parse_mesh2_count(keyword, true);
   std::vector<double> uvs;
   uvs.reserve(2 * std::min(n, kMaxReserve));
@@ -140,7 +141,7 @@ std::optional<std::array<std::uint32_t, 3>> literal_index_triple(const std::arra
 }  // namespace
 
 // One index triple <a, b, c>, truncated to integers and checked against `limit` at its own position.
-std::array<std::uint32_t, 3> Interpreter::mesh2_index_triple(const Token& at, const Numeric& value,
+std::array<std::uint32_t, 3> ObjectParser::mesh2_index_triple(const Token& at, const Numeric& value,
                                                              std::size_t limit, const std::string& what) {
   const Vec3 v = value.terms == 1 ? Vec3{value.v[0], value.v[0], value.v[0]} : value.as_vec3();
   std::array<std::uint32_t, 3> out{};
@@ -155,7 +156,7 @@ std::array<std::uint32_t, 3> Interpreter::mesh2_index_triple(const Token& at, co
 }
 
 // uv_indices / normal_indices { n, <a,b,c>, … } against `limit` items.
-std::vector<std::uint32_t> Interpreter::parse_mesh2_indices(const Token& keyword, std::size_t count,
+std::vector<std::uint32_t> ObjectParser::parse_mesh2_indices(const Token& keyword, std::size_t count,
                                                             std::size_t limit, const std::string& what) {
   std::vector<std::uint32_t> out;
   out.reserve(3 * std::min(count, kMaxReserve));
@@ -178,7 +179,7 @@ std::vector<std::uint32_t> Interpreter::parse_mesh2_indices(const Token& keyword
 
 // face_indices { n, <a,b,c> [, ti [, tj, tk]] … }. A face's texture indices are the floats that follow it; the
 // first non-float item is the next face (POV-Ray's CASE_FLOAT look-ahead).
-void Interpreter::parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count,
+void ObjectParser::parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count,
                                     MeshData& data) {
   const std::size_t n = parse_mesh2_count(keyword, false);
   data.faces.reserve(3 * std::min(n, kMaxReserve));
@@ -271,7 +272,7 @@ void assign_face_normals(MeshData& data, std::vector<std::uint32_t> indices) {
 }
 }  // namespace
 
-Object Interpreter::parse_mesh2(const Token& keyword) {
+Object ObjectParser::parse_mesh2(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'mesh2'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);

@@ -31,6 +31,7 @@
 #include <cmath>
 
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 #include "parser/lexing/mesh_scan.hpp"
 
 namespace povtrace::sdl {
@@ -106,7 +107,7 @@ class TripleIndex {
 }  // namespace
 
 // mesh { } under construction: vertices and normals merged through hash tables, textures by identity.
-struct Interpreter::MeshBuilder {
+struct ObjectParser::MeshBuilder {
   MeshData data;
   std::vector<std::shared_ptr<const Texture>> textures;
   TripleIndex vertex_index, normal_index;
@@ -156,7 +157,7 @@ struct Interpreter::MeshBuilder {
 };
 
 // `shape { Declared_Id modifiers }`: POV-Ray's Parse_Object_Id accepts a declared object as the whole body.
-std::optional<Object> Interpreter::parse_declared_object_body() {
+std::optional<Object> ObjectParser::parse_declared_object_body() {
   Token t = next();
   if (const Value* v = lookup(t); v && std::holds_alternative<std::shared_ptr<const SceneItem>>(*v)) {
     const auto& item = *std::get<std::shared_ptr<const SceneItem>>(*v);
@@ -200,7 +201,7 @@ bool mesh_inside(const MeshData& data, const Matrix& world_from_object, Vec3 wor
 
 namespace povtrace::sdl {
 
-Object Interpreter::parse_triangle(const Token& keyword, bool smooth) {
+Object ObjectParser::parse_triangle(const Token& keyword, bool smooth) {
   const std::string name(keyword.text);
   expect("{", " after '" + name + "'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
@@ -276,7 +277,7 @@ Polygon polygon_in_plane(const std::vector<Vec3>& points) {
 }
 }  // namespace
 
-Object Interpreter::parse_polygon(const Token& keyword) {
+Object ObjectParser::parse_polygon(const Token& keyword) {
   expect("{", " after 'polygon'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
   Object o;
@@ -314,7 +315,7 @@ Object Interpreter::parse_polygon(const Token& keyword) {
 }
 
 // `texture { T_id }` (repeatable, the last counts) or `texture_list { T1 T2 T3 }` after a mesh triangle.
-std::array<std::int32_t, 3> Interpreter::parse_mesh_triangle_textures(MeshBuilder& mesh) {
+std::array<std::int32_t, 3> ObjectParser::parse_mesh_triangle_textures(MeshBuilder& mesh) {
   std::array<std::int32_t, 3> tex{-1, -1, -1};
   auto texture_id = [&]() {
     const Token t = next();
@@ -345,7 +346,7 @@ std::array<std::int32_t, 3> Interpreter::parse_mesh_triangle_textures(MeshBuilde
 }
 
 // triangle { P1, P2, P3 … } or smooth_triangle { P1, N1, P2, N2, P3, N3 … } inside mesh { }.
-void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh) {
+void ObjectParser::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBuilder& mesh) {
   expect("{", smooth ? " after 'smooth_triangle'" : " after 'triangle'");
   std::array<Vec3, 3> p, n;
   for (int k = 0; k < 3; ++k) {
@@ -368,7 +369,7 @@ void Interpreter::parse_mesh_triangle(const Token& keyword, bool smooth, MeshBui
   add_mesh_triangle(keyword.loc, smooth, p, n, tex, uv, mesh);
 }
 
-void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p,
+void ObjectParser::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::array<Vec3, 3> p,
                                     std::array<Vec3, 3> n, const std::array<std::int32_t, 3>& tex,
                                     const std::optional<std::array<double, 6>>& uv, MeshBuilder& mesh) {
   if (smooth) {
@@ -390,7 +391,7 @@ void Interpreter::add_mesh_triangle(const SourceLoc& keyword, bool smooth, std::
   mesh.add_triangle(p, distinct_normals ? &n : nullptr, tex, uv);
 }
 
-std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
+std::optional<ObjectParser::LiteralScanStart> ObjectParser::literal_scan_start() {
   // A #while/#for of this frame goes back to earlier tokens of the file, and what the scanner reads is not kept
   // for it to replay.
   return stream_.literal_scan_start(directives_.loop_in_frame(stream_.depth() - 1));
@@ -398,7 +399,7 @@ std::optional<Interpreter::LiteralScanStart> Interpreter::literal_scan_start() {
 
 // As many literal `triangle { <…>, <…>, <…> }` / `smooth_triangle { <…>, <…>, … }` items as follow (no
 // uv_vectors, no textures: those items are read the ordinary way).
-void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
+void ObjectParser::scan_mesh_triangles(MeshBuilder& mesh) {
   const auto start = literal_scan_start();
   if (!start) return;
   const SourceFile& file = *stream_.frame().file;
@@ -434,13 +435,13 @@ void Interpreter::scan_mesh_triangles(MeshBuilder& mesh) {
   if (items > 0) literal_scan_commit(*start, s.position(), s.tokens());
 }
 
-std::optional<Vec3> Interpreter::parse_inside_vector() {
+std::optional<Vec3> ObjectParser::parse_inside_vector() {
   const Vec3 v = parse_vector();
   if (is_zero_vector(v)) return std::nullopt;
   return normalize(v);
 }
 
-Object Interpreter::parse_mesh(const Token& keyword) {
+Object ObjectParser::parse_mesh(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'mesh'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);

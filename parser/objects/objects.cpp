@@ -5,6 +5,7 @@
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 #include "parser/objects/object_transform.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -23,11 +24,11 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults, const Notes
 
 // A transform moves the object and what is attached to it (scene/description_transforms.cpp), and the parser's notes
 // on them (object_transform.cpp).
-void Interpreter::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
-  transform_noted(object, m, notes_pool_, kind);
+void ObjectParser::apply_transform(Object& object, const Matrix& m, TransformKind kind) {
+  transform_noted(object, m, notes_pool(), kind);
 }
 
-bool Interpreter::try_object_modifier(const Token& t, Object& object) {
+bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
   Matrix m;
   if (textures_.try_transform(t, m)) {
     const TransformKind kind = t.is("translate") ? TransformKind::translate
@@ -45,7 +46,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
     // layering (POV-Ray's Link_Textures).
     textures_.refuse_layering(t, object.texture.get(), tex->patterned());
     if (object.texture) {
-      apply_deferred_texture_transforms(object, notes_pool_);   // the layers below were moved by them, the new ones are not
+      apply_deferred_texture_transforms(object, notes_pool());   // the layers below were moved by them, the new ones are not
       auto layered = std::make_shared<Texture>(*object.texture);
       for (const auto& l : tex->layers) layered->layers.push_back(l);
       object.texture = std::move(layered);
@@ -61,19 +62,19 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
   }
   if (k == "pigment" || k == "normal" || k == "finish") textures_.refuse_layering(t, object.texture.get(), false);
   if (k == "pigment") {
-    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool());
     layer.pigment = textures_.parse_pigment_block(t, layer.pigment);
     return true;
   }
   if (k == "normal") {
-    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool());
     layer.normal =
         std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
     taint(object.unsupported, layer.normal->unsupported);
     return true;
   }
   if (k == "finish") {
-    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool_);
+    TextureLayer& layer = own_top_layer(object, default_texture(), notes_pool());
     layer.finish = textures_.parse_finish_block(t, layer.finish);
     return true;
   }
@@ -116,7 +117,7 @@ bool Interpreter::try_object_modifier(const Token& t, Object& object) {
 }
 
 // material { [M_id] texture{} interior{} transforms } (§9): a texture and an interior together.
-void Interpreter::parse_material_block(const Token& keyword, Object& object) {
+void ObjectParser::parse_material_block(const Token& keyword, Object& object) {
   const NestingGuard guard(*this, keyword);
   expect("{", " after 'material'");
   Object holder;   // collects the material's parts with the object-modifier rules, then hands them over
@@ -141,13 +142,13 @@ void Interpreter::parse_material_block(const Token& keyword, Object& object) {
   }
   if (holder.texture) {
     object.texture = holder.texture;
-    drop_deferred_texture_transforms(object, notes_pool_);   // they belonged to the texture replaced
+    drop_deferred_texture_transforms(object, notes_pool());   // they belonged to the texture replaced
   }
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);
 }
 
-void Interpreter::parse_object_modifiers(Object& object) {
+void ObjectParser::parse_object_modifiers(Object& object) {
   while (true) {
     if (plain_symbol(plain_ahead(), '}')) {   // the closing brace, without making its Token
       consume_plain();
@@ -166,7 +167,7 @@ void Interpreter::parse_object_modifiers(Object& object) {
   }
 }
 
-Object Interpreter::parse_sphere(const Token& keyword) {
+Object ObjectParser::parse_sphere(const Token& keyword) {
   skip_expected('{', " after 'sphere'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -180,7 +181,7 @@ Object Interpreter::parse_sphere(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_plane(const Token& keyword) {
+Object ObjectParser::parse_plane(const Token& keyword) {
   skip_expected('{', " after 'plane'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -198,7 +199,7 @@ Object Interpreter::parse_plane(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_box(const Token& keyword) {
+Object ObjectParser::parse_box(const Token& keyword) {
   skip_expected('{', " after 'box'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -211,7 +212,7 @@ Object Interpreter::parse_box(const Token& keyword) {
   return o;
 }
 
-std::string Interpreter::csg_name(CsgKind kind) {
+std::string ObjectParser::csg_name(CsgKind kind) {
   switch (kind) {
     case CsgKind::union_: return "'union'";
     case CsgKind::merge: return "'merge'";
@@ -223,7 +224,7 @@ std::string Interpreter::csg_name(CsgKind kind) {
 
 // union/merge/intersection/difference { objects… modifiers } (§10). A difference becomes an intersection whose
 // items after the first are inverted as they are added (a light source counts as an item, as in POV-Ray).
-Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
+Object ObjectParser::parse_csg(const Token& keyword, CsgKind kind) {
   const NestingGuard guard(*this, keyword);
   if (const Token open = next(); !open.is("{"))   // not expect(): its message would be built every time
     fail_expected(open, "'{' after '" + std::string(keyword.text) + "'");
@@ -256,13 +257,13 @@ Object Interpreter::parse_csg(const Token& keyword, CsgKind kind) {
 }
 
 // object { Id modifiers } — a deep copy of a declared object (or light) with modifiers applied.
-SceneItem Interpreter::parse_object_block(const Token& keyword) {
+SceneItem ObjectParser::parse_object_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   skip_expected('{', " after 'object'");
   return parse_object_block_rest(keyword, next());
 }
 
-void Interpreter::place_object_block(const Token& keyword) {
+void ObjectParser::place_object_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
   skip_expected('{', " after 'object'");
   const Token t = next();
@@ -278,7 +279,7 @@ void Interpreter::place_object_block(const Token& keyword) {
   else place_object(std::move(std::get<Object>(item)), keyword.loc);
 }
 
-SceneItem Interpreter::parse_object_block_rest(const Token& keyword, const Token& first) {
+SceneItem ObjectParser::parse_object_block_rest(const Token& keyword, const Token& first) {
   const Token& t = first;
   std::optional<SceneItem> item;
   if (const Value* v = lookup(t)) {
@@ -301,7 +302,7 @@ SceneItem Interpreter::parse_object_block_rest(const Token& keyword, const Token
   return std::move(*item);   // not a copy: an object is large
 }
 
-std::optional<SceneItem> Interpreter::try_parse_item(const Token& t) {
+std::optional<SceneItem> ObjectParser::try_parse_item(const Token& t) {
   if (t.kind != TokenKind::identifier) return std::nullopt;
   const std::string_view k = t.text;
   if (k == "sphere") return parse_sphere(t);

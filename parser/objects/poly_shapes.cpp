@@ -6,6 +6,7 @@
 // povtrace renders orders 2 to 4 (what every sample scene and shapesq.inc use); a higher order parses and is refused
 // by name when the object reaches the scene.
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -16,7 +17,7 @@ constexpr int kMaxRenderedOrder = 4;    // the polynomial solvers povtrace has
 int term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
 }  // namespace
 
-Object Interpreter::parse_poly(const Token& keyword, int order) {
+Object ObjectParser::parse_poly(const Token& keyword, int order) {
   expect("{", " after '" + std::string(keyword.text) + "'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -53,7 +54,7 @@ Object Interpreter::parse_poly(const Token& keyword, int order) {
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J } (POV-Ray's Parse_Quadric): square, mixed and linear terms, then the
 // constant; commas optional.
-Object Interpreter::parse_quadric(const Token& keyword) {
+Object ObjectParser::parse_quadric(const Token& keyword) {
   expect("{", " after 'quadric'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -31,20 +32,20 @@ bool is_object_modifier_word(std::string_view w) {
 }  // namespace
 
 // `open` directly after the parameters of a cylinder or cone.
-bool Interpreter::accept_open() {
+bool ObjectParser::accept_open() {
   Token t = next();
   if (t.is("open")) return true;
   unget(t);
   return false;
 }
 
-void Interpreter::check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2) {
+void ObjectParser::check_cone_axis(const Token& keyword, Vec3 end1, Vec3 end2) {
   if (length(end1 - end2) < kEpsilon)
     fail_at(keyword, "degenerate " + std::string(keyword.text) + ": its two end points are the same point (" +
                          "POV-Ray refuses it too)");
 }
 
-Object Interpreter::parse_cylinder(const Token& keyword) {
+Object ObjectParser::parse_cylinder(const Token& keyword) {
   expect("{", " after 'cylinder'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -62,7 +63,7 @@ Object Interpreter::parse_cylinder(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_cone(const Token& keyword) {
+Object ObjectParser::parse_cone(const Token& keyword) {
   expect("{", " after 'cone'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -82,7 +83,7 @@ Object Interpreter::parse_cone(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_disc(const Token& keyword) {
+Object ObjectParser::parse_disc(const Token& keyword) {
   expect("{", " after 'disc'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -111,7 +112,7 @@ Object Interpreter::parse_disc(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_torus(const Token& keyword) {
+Object ObjectParser::parse_torus(const Token& keyword) {
   expect("{", " after 'torus'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -128,7 +129,7 @@ Object Interpreter::parse_torus(const Token& keyword) {
 // POV-Ray: `sturm` on an object whose type is not STURM_OK_OBJECT is the error "Keyword 'sturm' cannot be used with
 // this object"; an optional float follows, and sturm is on when it is > 0. CSG is never STURM_OK. A shape povtrace
 // skips unrendered (lathe, sor, prism, blob… which may take sturm) is left to the caller, which refuses it by name.
-bool Interpreter::try_sturm_modifier(const Token& t, Object& object) {
+bool ObjectParser::try_sturm_modifier(const Token& t, Object& object) {
   if (!std::holds_alternative<Csg>(object.shape) && object.unsupported) return false;
   bool* flag = nullptr;
   if (auto* torus = std::get_if<Torus>(&object.shape)) flag = &torus->sturm;

@@ -19,6 +19,7 @@
 
 #include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace {
 
@@ -101,7 +102,7 @@ bool bezier_outline_closed(const std::vector<ProfilePoint>& p) {
 }  // namespace
 
 // The spline keywords (and with `sweeps`, the prism's sweep keywords), in any order.
-SplineKind Interpreter::parse_spline_keywords(bool* conic) {
+SplineKind ObjectParser::parse_spline_keywords(bool* conic) {
   SplineKind spline = SplineKind::linear;
   while (true) {
     const Token t = next();
@@ -119,7 +120,7 @@ SplineKind Interpreter::parse_spline_keywords(bool* conic) {
 }
 
 // The point count (truncated) and its POV-Ray minimum for the spline kind; Bézier counts must be multiples of four.
-long Interpreter::parse_profile_count(const std::string& shape, SplineKind spline, const long minimum[3]) {
+long ObjectParser::parse_profile_count(const std::string& shape, SplineKind spline, const long minimum[3]) {
   const Token at = peek();
   const long count = saturating_cast<int>(parse_float());
   const long least = spline == SplineKind::bezier ? 0 : minimum[static_cast<int>(spline)];
@@ -132,7 +133,7 @@ long Interpreter::parse_profile_count(const std::string& shape, SplineKind splin
 }
 
 // N points, each an optional comma and a UV vector; `check(i, point, at)` may refuse one.
-std::vector<ProfilePoint> Interpreter::parse_profile_points(
+std::vector<ProfilePoint> ObjectParser::parse_profile_points(
     long count, const std::function<void(long, const std::vector<ProfilePoint>&, const Token&)>& check) {
   std::vector<ProfilePoint> points;
   for (long i = 0; i < count; ++i) {
@@ -145,7 +146,7 @@ std::vector<ProfilePoint> Interpreter::parse_profile_points(
   return points;
 }
 
-Object Interpreter::parse_lathe(const Token& keyword) {
+Object ObjectParser::parse_lathe(const Token& keyword) {
   expect("{", " after 'lathe'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
   Object o;
@@ -165,7 +166,7 @@ Object Interpreter::parse_lathe(const Token& keyword) {
 }
 
 // Parse_Prism's closing rules (see the top of this file) applied to the points read.
-void Interpreter::close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points) {
+void ObjectParser::close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points) {
   ProfilePoint start{};
   const bool closed = prism.spline == SplineKind::bezier ? bezier_outline_closed(points)
                                                          : spline_outline_closed(prism.spline, points, start);
@@ -183,7 +184,7 @@ void Interpreter::close_prism_outline(const Token& keyword, Prism& prism, std::v
   prism.segment_starts = std::make_shared<const std::vector<std::uint32_t>>(std::move(*starts));
 }
 
-Object Interpreter::parse_prism(const Token& keyword) {
+Object ObjectParser::parse_prism(const Token& keyword) {
   expect("{", " after 'prism'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
   Object o;
@@ -206,7 +207,7 @@ Object Interpreter::parse_prism(const Token& keyword) {
   return o;
 }
 
-Object Interpreter::parse_sor(const Token& keyword) {
+Object ObjectParser::parse_sor(const Token& keyword) {
   expect("{", " after 'sor'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);
   Object o;

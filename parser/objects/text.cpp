@@ -20,6 +20,7 @@
 #include "parser/expressions/int_cast.hpp"
 #include "parser/objects/object_transform.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/objects/object_parser.hpp"
 
 namespace povtrace::sdl {
 
@@ -68,13 +69,13 @@ const char* internal_font_file(int id) {
 }
 }  // namespace
 
-ttf::Font& Interpreter::font_for_text(const Token& at, const std::string& name) {
+ttf::Font& ObjectParser::font_for_text(const Token& at, const std::string& name) {
   for (auto& [found_as, font] : fonts_)
     if (found_as == name) return *font;
-  const auto found = find_font(name, options_.library_paths);
+  const auto found = find_font(name, library_paths());
   if (!found) {
     std::string searched = "the working directory";
-    for (const auto& d : options_.library_paths) searched += ", " + d.string();
+    for (const auto& d : library_paths()) searched += ", " + d.string();
     fail_at(at, "cannot find font file \"" + name + "\" (searched " + searched + ", also with .ttf and .TTF)");
   }
   try {
@@ -86,9 +87,9 @@ ttf::Font& Interpreter::font_for_text(const Token& at, const std::string& name) 
 }
 
 // A built-in font is opened afresh for every text object (POV-Ray keeps no cache entry for it).
-ttf::Font& Interpreter::internal_font(const Token& at, int id) {
+ttf::Font& ObjectParser::internal_font(const Token& at, int id) {
   const std::string file = internal_font_file(id);
-  const auto found = find_font(file, options_.library_paths);
+  const auto found = find_font(file, library_paths());
   if (!found)
     fail_at(at, "internal font " + std::to_string(id) + " is POV-Ray's built-in copy of " + file +
                     ", which povtrace reads from the POV-Ray include folder; it is not in the library path");
@@ -100,7 +101,7 @@ ttf::Font& Interpreter::internal_font(const Token& at, int id) {
   return *fonts_.back().second;
 }
 
-Object Interpreter::parse_text(const Token& keyword) {
+Object ObjectParser::parse_text(const Token& keyword) {
   expect("{", " after 'text'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
   Object o;
@@ -120,7 +121,7 @@ Object Interpreter::parse_text(const Token& keyword) {
   const Vec3 offset = parse_vector();
   Text text;
   try {
-    text = ttf::lay_out_text(*font, ttf::character_codes(string, string_encoding_, scene_.language_version), thickness,
+    text = ttf::lay_out_text(*font, ttf::character_codes(string, string_encoding_, language_version()), thickness,
                              offset);
   } catch (const ttf::FontError& e) {
     fail_at(string_at, "cannot lay out this text with the font: " + std::string(e.what()));
@@ -128,7 +129,7 @@ Object Interpreter::parse_text(const Token& keyword) {
   const Matrix anti_crack = Matrix::rotation({kAntiCrackRotation, kAntiCrackRotation, kAntiCrackRotation});
   o.shape = std::move(text);
   extents().made(o);
-  transform_noted(o, anti_crack, notes_pool_);   // POV-Ray turns the new text (and its box) by the anti-crack rotation
+  transform_noted(o, anti_crack, notes_pool());   // POV-Ray turns the new text (and its box) by the anti-crack rotation
   parse_object_modifiers(o);
   return o;
 }

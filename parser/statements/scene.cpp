@@ -73,8 +73,8 @@ void Interpreter::parse_statement(const Token& t) {
     scene_.sky_sphere = std::move(sky);
     return;
   }
-  if (k == "object") return place_object_block(t);
-  if (auto item = try_parse_item(t)) {
+  if (k == "object") return objects_.place_object_block(t);
+  if (auto item = objects_.try_parse_item(t)) {
     if (auto* light = std::get_if<Light>(&*item)) place_light(std::move(*light), t.loc);
     else place_object(std::move(std::get<Object>(*item)), t.loc);
     return;
@@ -122,7 +122,7 @@ void Interpreter::parse_global_settings(const Token& keyword) {
       const Token c = next();
       if (c.is("sys")) fail_unsupported(c, "the global setting 'charset sys'");
       if (!c.is("ascii") && !c.is("utf8")) fail_expected(c, "ascii, utf8 or sys after 'charset'");
-      string_encoding_ = c.is("utf8") ? ttf::StringEncoding::utf8 : ttf::StringEncoding::ascii;
+      objects_.set_string_encoding(c.is("utf8") ? ttf::StringEncoding::utf8 : ttf::StringEncoding::ascii);
     } else if (k == "number_of_waves") {
       // POV-Ray truncates it and makes a value below 1 into 1 with a warning.
       const Token value_at = peek();
@@ -262,7 +262,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (k == "transform") return Value(textures_.parse_transform_block(first));
   if (k == "material") {
     Object holder;
-    parse_material_block(first, holder);
+    objects_.parse_material_block(first, holder);
     if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
     return Value(MaterialValue{holder.texture, holder.interior});
   }
@@ -274,7 +274,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
     return *v;
   }
-  if (auto item = try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
+  if (auto item = objects_.try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
   // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
   // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
   if (first.kind == TokenKind::identifier && is_reserved_word(k) && !starts_colour(first)) {
@@ -448,7 +448,7 @@ const Normal* first_untyped_normal(const Object& o) {
 
 void Interpreter::place_object(Object&& object, const SourceLoc& at) {
   refuse_if_unsupported(first_unsupported(object), at, "object");
-  remove_unnecessary_bounds(object);
+  objects_.remove_unnecessary_bounds(object);
   settle_deferred_texture_transforms(object, notes_pool_);
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
