@@ -43,6 +43,7 @@
 #include "runtime/truetype.hpp"
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
+#include "parser/expressions/array_values.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
@@ -266,23 +267,8 @@ class Interpreter {
   std::vector<ExpressionProgram> programs_;
   std::vector<ExpressionOp> program_ops_;
 
-  // ---- arrays (arrays.cpp) ----
-  Value parse_array_declaration(const Token& keyword);
-  void parse_array_initialiser(ArrayValue& a, std::size_t dim, std::size_t base);
-  void store_element(ArrayValue& a, std::size_t index, Value value, const Token& at, const std::string& name);
-  // `[i][j]…` after an array name: the flat element index. Subscripts are truncated floats (§3).
-  std::size_t parse_subscripts(const ArrayValue& a, const std::string& name, Token& last);
-  // `Name[i]…` read raw (an lvalue or #ifdef): the array and element index, or nullopt if Name is no array.
-  struct ElementRef {
-    std::shared_ptr<ArrayValue> array;
-    std::size_t index = 0;
-  };
-  std::optional<ElementRef> parse_element_reference(const Token& name);
-  void directive_declare_element(const Token& name, bool local);
-  Numeric parse_dimensions(const Token& name);   // dimensions(A), dimension_size(A, k)
-  // defined(Id) / #ifdef (Id): Id may be an array element, defined iff assigned. Reads from after '('.
-  bool parse_defined_identifier();
-
+  // ---- arrays (expressions/array_values.hpp) ----
+  ArrayValues arrays_{*this, symbols_};
 
   // ---- object queries (object_queries.cpp) ----
   Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
@@ -310,6 +296,7 @@ class Interpreter {
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
   friend class ParserPart;
   template <class> friend class PartNestingGuard;
+  template <class> friend class PartRawOperatorLook;
 
   // ---- textures (textures/texture_parser.hpp) ----
   TextureParser textures_{*this};

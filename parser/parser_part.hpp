@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "parser/expressions/values.hpp"
+#include "parser/extents/object_extents.hpp"
 #include "parser/extents/object_notes.hpp"
 #include "parser/lexing/lexer.hpp"
 #include "scene/description.hpp"
@@ -40,6 +41,17 @@ template <class In> class PartNestingGuard {
   typename In::NestingGuard guard_;
 };
 
+// The Interpreter's RawOperatorLook taken by a part (array initialisers, element assignments): the same flag.
+template <class In> class PartRawOperatorLook {
+ public:
+  explicit PartRawOperatorLook(ParserPart& part, bool raw = true);
+  PartRawOperatorLook(const PartRawOperatorLook&) = delete;
+  PartRawOperatorLook& operator=(const PartRawOperatorLook&) = delete;
+
+ private:
+  typename In::RawOperatorLook look_;
+};
+
 class ParserPart {
  protected:
   explicit ParserPart(Interpreter& in) : in_(in) {}
@@ -56,9 +68,14 @@ class ParserPart {
   inline const Value* lookup(const Token& t) const;
   inline const Token& peek_raw();   // the next token without running a directive or macro call first
   inline bool reserved(const Token& t) const;
+  inline Token raw();                                // the next token with no directive processing (#ifdef's name)
+  inline bool ahead_is(std::string_view symbol);     // a raw look at the next token
+  inline Token pop_pushed_back();                    // the token a peek_raw() pushed back
   using NestingGuard = PartNestingGuard<Interpreter>;
+  using RawOperatorLook = PartRawOperatorLook<Interpreter>;
 
   // ---- diagnostics (Diagnostics from S3) ----
+  [[noreturn]] inline void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] inline void fail_at(const Token& t, const std::string& message) const;
   [[noreturn]] inline void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] inline void fail_unsupported(const Token& t, std::string_view what) const;
@@ -78,12 +95,15 @@ class ParserPart {
   // Parse_UV_Vect (express.cpp): a float or a 2-D vector at the parameter level; also read by the shapes.
   inline std::pair<double, double> parse_uv_vector(std::string_view context);
   inline std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
+  // A right-hand value: a number, string, array, object, function… (the ValueReader's from S11).
+  inline std::optional<Value> try_parse_rvalue(const Token& first);
 
   // ---- objects (ObjectParser from S10) ----
   inline std::optional<SceneItem> try_parse_item(const Token& t);
   inline void parse_object_modifiers(Object& object);
   inline void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
   inline const NotesPool& notes_pool() const;   // where the objects' notes are made (ObjectNotes)
+  inline ObjectExtents extents() const;          // POV-Ray's bounding boxes of objects (object_extents.cpp)
 
   // ---- features parsed but not rendered (unsupported.cpp) ----
   inline UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
@@ -99,9 +119,13 @@ class ParserPart {
   inline const std::optional<double>& assumed_gamma() const;
   inline const std::vector<std::filesystem::path>& library_paths() const;   // +L, for image files
   inline bool povray_tolerances() const;                                     // ParseOptions::povray_tolerances
+  // The noise generator in force now (1 before #version 3.5, 2 from then on, unless global_settings set it):
+  // what functions evaluated and objects prepared during the parse read.
+  inline int noise_generator() const;
 
  private:
   template <class> friend class PartNestingGuard;
+  template <class> friend class PartRawOperatorLook;
   Interpreter& in_;
 };
 

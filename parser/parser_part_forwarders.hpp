@@ -9,6 +9,8 @@ namespace povtrace::sdl {
 
 template <class In>
 PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_, at) {}
+template <class In>
+PartRawOperatorLook<In>::PartRawOperatorLook(ParserPart& part, bool raw) : look_(part.in_, raw) {}
 
 inline Token ParserPart::next() { return in_.next(); }
 inline const Token& ParserPart::peek() { return in_.peek(); }
@@ -20,7 +22,11 @@ inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symb
 inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
 inline const Token& ParserPart::peek_raw() { return in_.peek_raw(); }
 inline bool ParserPart::reserved(const Token& t) const { return in_.reserved(t); }
+inline Token ParserPart::raw() { return in_.raw(); }
+inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.ahead_is(symbol); }
+inline Token ParserPart::pop_pushed_back() { return in_.pop_pushed_back(); }
 
+inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
   in_.fail_expected(t, expected);
@@ -48,6 +54,7 @@ inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view co
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
   return in_.parse_function_definition(keyword);
 }
+inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
 
 inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.try_parse_item(t); }
 inline void ParserPart::parse_object_modifiers(Object& object) { in_.parse_object_modifiers(object); }
@@ -55,6 +62,7 @@ inline void ParserPart::apply_transform(Object& object, const Matrix& m, Transfo
   in_.apply_transform(object, m, kind);
 }
 inline const NotesPool& ParserPart::notes_pool() const { return in_.notes_pool_; }
+inline ObjectExtents ParserPart::extents() const { return in_.extents(); }
 
 inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
   return in_.skip_unsupported(keyword, what);
@@ -70,5 +78,6 @@ inline const std::vector<std::filesystem::path>& ParserPart::library_paths() con
   return in_.options_.library_paths;
 }
 inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
+inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
 
 }  // namespace povtrace::sdl

@@ -228,9 +228,9 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   }
   if (n == "defined") {
     expect("(", " after 'defined'");
-    return Numeric::scalar(parse_defined_identifier() ? 1.0 : 0.0);
+    return Numeric::scalar(arrays_.parse_defined_identifier() ? 1.0 : 0.0);
   }
-  if (n == "dimensions" || n == "dimension_size") return parse_dimensions(name);
+  if (n == "dimensions" || n == "dimension_size") return arrays_.parse_dimensions(name);
   if (n == "inside" || n == "min_extent" || n == "max_extent") return parse_object_query(name);
   if (n == "now") {
     // Days since 2000-01-01 00:00 UTC (§5), with POV-Ray's microsecond resolution.

@@ -254,7 +254,7 @@ void Interpreter::store_trace_normal(Vec3 normal) {
   if (!v) fail_expected(ahead, "a declared vector identifier to receive trace()'s normal, or ')'");
   if (std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) {
     const Token name = pop_pushed_back();   // the token peek_raw() looked at
-    const auto ref = parse_element_reference(name);
+    const auto ref = arrays_.parse_element_reference(name);
     const auto& element = ref->array->elements[ref->index];
     const auto* n = element ? std::get_if<Numeric>(&*element) : nullptr;
     if (!n || n->terms != 3 || n->colour)
