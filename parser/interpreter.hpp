@@ -28,7 +28,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "scene/description_transforms.hpp"
@@ -44,6 +43,7 @@
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
 #include "parser/expressions/array_values.hpp"
+#include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
@@ -270,12 +270,7 @@ class Interpreter {
   // ---- arrays (expressions/array_values.hpp) ----
   ArrayValues arrays_{*this, symbols_};
 
-  // ---- object queries (object_queries.cpp) ----
-  Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
-  Numeric parse_trace(const Token& name);          // trace(O, Start, Dir [, Normal])
-  void store_trace_normal(Vec3 normal);
-  const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
-  const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
+  // ---- bounding boxes (extents/object_extents.hpp) ----
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
   ObjectExtents extents() const {
     return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
@@ -469,13 +464,8 @@ class Interpreter {
   // evaluated while rendering see the final one.
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
-  // Declared objects made ready for trace() and inside() by ParseOptions::object_geometry (object_queries.cpp).
-  struct PreparedEntry {
-    std::shared_ptr<const SceneItem> item;   // keeps the key's object alive
-    std::unique_ptr<const PreparedObject> prepared;
-    int noise_generator;   // the scene's when it was prepared (its isosurfaces' functions read it)
-  };
-  std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
+  // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
+  ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
   // global_settings { charset }.
   std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;

@@ -231,7 +231,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     return Numeric::scalar(arrays_.parse_defined_identifier() ? 1.0 : 0.0);
   }
   if (n == "dimensions" || n == "dimension_size") return arrays_.parse_dimensions(name);
-  if (n == "inside" || n == "min_extent" || n == "max_extent") return parse_object_query(name);
+  if (n == "inside" || n == "min_extent" || n == "max_extent") return object_queries_.parse_object_query(name);
   if (n == "now") {
     // Days since 2000-01-01 00:00 UTC (§5), with POV-Ray's microsecond resolution.
     const auto since_epoch = std::chrono::duration_cast<std::chrono::microseconds>(
@@ -239,7 +239,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     constexpr double kY2kSeconds = 946684800.0;
     return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
   }
-  if (n == "trace") return parse_trace(name);
+  if (n == "trace") return object_queries_.parse_trace(name);
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
     rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));
