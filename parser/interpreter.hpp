@@ -43,6 +43,7 @@
 #include "parser/expressions/values.hpp"
 #include "parser/parser_part.hpp"
 #include "parser/expressions/array_values.hpp"
+#include "parser/expressions/function_values.hpp"
 #include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
@@ -186,8 +187,6 @@ class Interpreter {
   int noise_generator() const {
     return scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
   }
-  // The renderer's pattern values for pattern functions (ParseOptions::pattern_evaluator); may be null.
-  const PatternEvaluator* pattern_evaluator() const { return options_.pattern_evaluator.get(); }
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
@@ -275,18 +274,6 @@ class Interpreter {
   ObjectExtents extents() const {
     return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
   }
-
-  // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
-  friend class FunctionParser;
-  // `function …` (a definition), `F(…)` (a call of a declared function) or `F` (a copy) as a right-hand value.
-  std::optional<Value> try_parse_function_rvalue(const Token& first);
-  Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
-  // `function [(params)] { … }` after its keyword: the compiled function.
-  std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
-  // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
-  void check_function_redeclaration(const Token& name, bool local, const Value& value);
-  std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
-  bool function_budget_set_ = false;
 
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
   friend class ParserPart;
@@ -466,6 +453,8 @@ class Interpreter {
   std::vector<std::uint32_t> rand_streams_;
   // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
+  // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
+  FunctionValues functions_{*this, options_, symbols_, textures_, splines_};
   // Fonts read so far, by the name POV-Ray's cache compares with (text.cpp), and the string encoding set by
   // global_settings { charset }.
   std::vector<std::pair<std::string, std::unique_ptr<ttf::Font>>> fonts_;

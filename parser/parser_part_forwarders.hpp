@@ -52,7 +52,7 @@ inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view co
   return in_.parse_uv_vector(context);
 }
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
-  return in_.parse_function_definition(keyword);
+  return in_.functions_.parse_definition(keyword);
 }
 inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
 

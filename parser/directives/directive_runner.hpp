@@ -23,9 +23,10 @@
 // expect, accept, skip_expected, expect_identifier_raw, plain_ahead, consume_plain, raw_ahead, skip_ahead,
 // lookup, reserved, RawOperatorLook (through in_), parse_float, parse_float_full, parse_additive,
 // parse_expression, parse_string, starts_string, try_parse_rvalue, numeric_ahead, call_macros_ahead,
-// parse_defined_identifier, parse_element_reference, store_element, directive_declare_element (the ArrayValues part),
-// check_function_redeclaration, parse_default, directive_version and language_version (the scene's). The token
-// stream, the symbols, the diagnostics and the options it holds directly.
+// parse_defined_identifier, parse_element_reference, store_element, directive_declare_element (the ArrayValues
+// part's), check_function_redeclaration (the FunctionValues part's check_redeclaration), parse_default,
+// directive_version and language_version (the scene's). The token stream, the symbols, the diagnostics and the
+// options it holds directly.
 #pragma once
 
 #include <cstddef>

@@ -282,7 +282,7 @@ Numeric Interpreter::parse_primary(const Token& t) {
     // the name of that feature.
     if (const auto* opaque = std::get_if<Boxed<OpaqueValue>>(v))
       refuse_if_unsupported((*opaque)->feature, t.loc, "expression");
-    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return call_function_from_sdl(t, *fn);
+    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return functions_.call(t, *fn);
     if (const auto* s = std::get_if<Boxed<SplineValue>>(v)) return splines_.call(t, *s);
     if (!std::holds_alternative<Numeric>(*v))
       fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +

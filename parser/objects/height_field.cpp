@@ -33,7 +33,7 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
     fail_at(width_at, "a height_field function needs a size of 2 to 16384 samples each way");
   const Token open = peek();
   if (!open.is("{")) fail_expected(open, "'{' after the size of the height_field function");
-  const auto fn = parse_function_definition(keyword);
+  const auto fn = functions_.parse_definition(keyword);
   const int width = static_cast<int>(w), depth = static_cast<int>(d);
   h.file_loc = keyword.loc;
   if (fn->kind == FunctionValue::Kind::pigment && fn->pigment) {
@@ -55,17 +55,14 @@ void Interpreter::parse_height_field_function(const Token& keyword, HeightField&
   }
   auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(width) * depth);
   double args[3] = {0, 0, 0}, out[5];
-  if (options_.max_tokens && !function_budget_set_) {   // the fuzzer's bound on function work (call_function_from_sdl)
-    function_steps_left_ = options_.max_tokens * 16;
-    function_budget_set_ = true;
-  }
+  std::uint64_t* const budget = functions_.budget();   // the fuzzer's bound on function work, shared with SDL calls
   try {
     for (int i = 0; i < depth; ++i) {
       args[1] = static_cast<double>(i) / (d - 1);
       for (int j = 0; j < width; ++j) {
         args[0] = static_cast<double>(j) / (w - 1);
         const double value =
-            evaluate_function(*fn, args, out, noise_generator(), options_.max_tokens ? &function_steps_left_ : nullptr);
+            evaluate_function(*fn, args, out, noise_generator(), budget);
         (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] =
             static_cast<std::uint16_t>(function_image_value(value) * 65535.0f);
       }

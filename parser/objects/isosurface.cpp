@@ -24,7 +24,7 @@ constexpr int kMaxTrace = 10;   // isosurf.h ISOSURFACE_MAXTRACE
 void Interpreter::parse_isosurface_function(Isosurface& iso, Object& o) {
   const Token keyword = next();
   if (!keyword.is("function")) fail_expected(keyword, "'function' starting the isosurface");
-  auto fn = parse_function_definition(keyword);
+  auto fn = functions_.parse_definition(keyword);
   if (fn->return_size != 0 || fn->parameter_count != 3)
     fail_at(keyword, "an isosurface needs a float function of x, y and z");
   if (auto part = unevaluable_part(*fn))
