@@ -11,9 +11,11 @@
 //   objects/objects.cpp          shapes, CSG, object modifiers and transforms
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
-//   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
+//   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
+//   expressions/function_parser.cpp user-defined functions: the FunctionValues part (function_values.hpp)
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
-//   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
+//   expressions/object_queries.cpp inside(), min_extent(), max_extent(), trace(): the ObjectQueries part
+//                                (object_queries.hpp)
 //   objects/quadric_shapes.cpp   cylinder, cone, disc, torus and the modifiers only they take (open, sturm)
 //   objects/implicit_shapes.cpp  superellipsoid, blob
 //   objects/height_field.cpp     height_field
