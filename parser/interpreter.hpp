@@ -14,9 +14,11 @@
 //                                parse_uv_vector (Parse_UV_Vect), an expression service of the Interpreter's
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
-//   expressions/arrays.cpp       array declarations, subscripts, element assignment, dimensions()
+//   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
+//   expressions/function_parser.cpp user-defined functions: the FunctionValues part (function_values.hpp)
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
-//   expressions/object_queries.cpp inside(), min_extent(), max_extent() on declared objects
+//   expressions/object_queries.cpp inside(), min_extent(), max_extent(), trace(): the ObjectQueries part
+//                                (object_queries.hpp)
 #pragma once
 
 #include <array>
@@ -24,7 +26,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "scene/description_transforms.hpp"
@@ -41,6 +42,9 @@
 #include "parser/parser_part.hpp"
 #include "parser/expressions/builtins.hpp"
 #include "parser/expressions/expression_programs.hpp"
+#include "parser/expressions/array_values.hpp"
+#include "parser/expressions/function_values.hpp"
+#include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/objects/object_parser.hpp"
@@ -150,8 +154,6 @@ class Interpreter {
   int noise_generator() const {
     return scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
   }
-  // The renderer's pattern values for pattern functions (ParseOptions::pattern_evaluator); may be null.
-  const PatternEvaluator* pattern_evaluator() const { return options_.pattern_evaluator.get(); }
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
@@ -207,50 +209,19 @@ class Interpreter {
   // limit has room for the levels it passes by; false, having read nothing, elsewhere.
   bool run_expression_program(bool full, Numeric& out) { return programs_.run(full, out, nesting_); }
 
-  // ---- arrays (arrays.cpp) ----
-  Value parse_array_declaration(const Token& keyword);
-  void parse_array_initialiser(ArrayValue& a, std::size_t dim, std::size_t base);
-  void store_element(ArrayValue& a, std::size_t index, Value value, const Token& at, const std::string& name);
-  // `[i][j]…` after an array name: the flat element index. Subscripts are truncated floats (§3).
-  std::size_t parse_subscripts(const ArrayValue& a, const std::string& name, Token& last);
-  // `Name[i]…` read raw (an lvalue or #ifdef): the array and element index, or nullopt if Name is no array.
-  struct ElementRef {
-    std::shared_ptr<ArrayValue> array;
-    std::size_t index = 0;
-  };
-  std::optional<ElementRef> parse_element_reference(const Token& name);
-  void directive_declare_element(const Token& name, bool local);
-  Numeric parse_dimensions(const Token& name);   // dimensions(A), dimension_size(A, k)
-  // defined(Id) / #ifdef (Id): Id may be an array element, defined iff assigned. Reads from after '('.
-  bool parse_defined_identifier();
+  // ---- arrays (expressions/array_values.hpp) ----
+  ArrayValues arrays_{*this, symbols_};
 
-
-  // ---- object queries (object_queries.cpp) ----
-  Numeric parse_object_query(const Token& name);   // inside(O, P), min_extent(O), max_extent(O)
-  Numeric parse_trace(const Token& name);          // trace(O, Start, Dir [, Normal])
-  void store_trace_normal(Vec3 normal);
-  const std::shared_ptr<const SceneItem>& object_identifier(const Token& id, std::string_view function);
-  const PreparedObject& prepared_object(const std::shared_ptr<const SceneItem>& item);
+  // ---- bounding boxes (extents/object_extents.hpp) ----
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
   ObjectExtents extents() const {
     return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
   }
 
-  // ---- user-defined functions (function_parser.cpp, function_vm.cpp, function_internal.cpp) ----
-  friend class FunctionParser;
-  // `function …` (a definition), `F(…)` (a call of a declared function) or `F` (a copy) as a right-hand value.
-  std::optional<Value> try_parse_function_rvalue(const Token& first);
-  Numeric call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn);
-  // `function [(params)] { … }` after its keyword: the compiled function.
-  std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
-  // #declare/#local of `name`: a function must be #undef'd before its name is declared again (§3).
-  void check_function_redeclaration(const Token& name, bool local, const Value& value);
-  std::uint64_t function_steps_left_ = 0;   // with ParseOptions::max_tokens: what function evaluation may still do
-  bool function_budget_set_ = false;
-
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
   friend class ParserPart;
   template <class> friend class PartNestingGuard;
+  template <class> friend class PartRawOperatorLook;
 
   // ---- textures (textures/texture_parser.hpp) ----
   TextureParser textures_{*this};
@@ -320,13 +291,10 @@ class Interpreter {
   // evaluated while rendering see the final one.
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
   std::vector<std::uint32_t> rand_streams_;
-  // Declared objects made ready for trace() and inside() by ParseOptions::object_geometry (object_queries.cpp).
-  struct PreparedEntry {
-    std::shared_ptr<const SceneItem> item;   // keeps the key's object alive
-    std::unique_ptr<const PreparedObject> prepared;
-    int noise_generator;   // the scene's when it was prepared (its isosurfaces' functions read it)
-  };
-  std::unordered_map<const SceneItem*, PreparedEntry> prepared_objects_;
+  // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
+  ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
+  // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
+  FunctionValues functions_{*this, options_, symbols_, textures_, splines_};
 
   int nesting_ = 0;   // the levels NestingGuard counts, up to kMaxNesting (lexing/nesting_limit.hpp)
   class NestingGuard {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "parser/expressions/values.hpp"
+#include "parser/extents/object_extents.hpp"
 #include "parser/extents/object_notes.hpp"
 #include "parser/lexing/lexer.hpp"
 #include "scene/description.hpp"
@@ -42,6 +43,17 @@ template <class In> class PartNestingGuard {
   typename In::NestingGuard guard_;
 };
 
+// The Interpreter's RawOperatorLook taken by a part (array initialisers, element assignments): the same flag.
+template <class In> class PartRawOperatorLook {
+ public:
+  explicit PartRawOperatorLook(ParserPart& part, bool raw = true);
+  PartRawOperatorLook(const PartRawOperatorLook&) = delete;
+  PartRawOperatorLook& operator=(const PartRawOperatorLook&) = delete;
+
+ private:
+  typename In::RawOperatorLook look_;
+};
+
 class ParserPart {
  protected:
   explicit ParserPart(Interpreter& in) : in_(in) {}
@@ -58,6 +70,9 @@ class ParserPart {
   inline const Value* lookup(const Token& t) const;
   inline const Token& peek_raw();   // the next token without running a directive or macro call first
   inline bool reserved(const Token& t) const;
+  inline Token raw();                                // the next token with no directive processing (#ifdef's name)
+  inline bool ahead_is(std::string_view symbol);     // a raw look at the next token
+  inline Token pop_pushed_back();                    // the token a peek_raw() pushed back
   using NestingGuard = PartNestingGuard<Interpreter>;
   // The kept-token reads of the fast paths (interpreter.hpp says what each may skip), without making Tokens: the
   // directives' and the plain-symbol look at an object's closing brace.
@@ -68,6 +83,7 @@ class ParserPart {
   inline std::string expect_identifier_raw(std::string_view context);
   inline auto raw_ahead();   // the Interpreter's Ahead: kind and text of what peek_raw() would return
   inline void skip_ahead();
+  using RawOperatorLook = PartRawOperatorLook<Interpreter>;
 
   // ---- diagnostics (Diagnostics from S3) ----
   [[noreturn]] inline void fail(const SourceLoc& loc, const std::string& message) const;
@@ -92,9 +108,10 @@ class ParserPart {
   inline std::pair<double, double> parse_uv_vector(std::string_view context);
   inline std::shared_ptr<const FunctionValue> parse_function_definition(const Token& keyword);
   // The fuzzer's bound on function work (ParseOptions::max_tokens), shared by every function evaluated during the
-  // parse (FunctionValues from S8): height_field { function } evaluates one over its grid.
-  inline std::uint64_t& function_steps_left();
-  inline bool& function_budget_set();
+  // parse (FunctionValues::budget): height_field { function } evaluates one over its grid. Null without a limit.
+  inline std::uint64_t* function_budget();
+  // A right-hand value: a number, string, array, object, function… (the ValueReader's from S11).
+  inline std::optional<Value> try_parse_rvalue(const Token& first);
 
   // ---- objects (ObjectParser from S10) ----
   inline std::optional<SceneItem> try_parse_item(const Token& t);
@@ -119,7 +136,6 @@ class ParserPart {
   inline const std::optional<double>& assumed_gamma() const;
   inline const std::vector<std::filesystem::path>& library_paths() const;   // +L, for image files
   inline bool povray_tolerances() const;                                     // ParseOptions::povray_tolerances
-  inline std::uint64_t max_tokens() const;                                   // ParseOptions::max_tokens
   inline int noise_generator() const;   // the scene's noise generator in force now (functions evaluated now read it)
   // An object or light finished by `object { }` as a statement, joining the scene.
   inline void place_object(Object&& object, const SourceLoc& at);
@@ -127,6 +143,7 @@ class ParserPart {
 
  private:
   template <class> friend class PartNestingGuard;
+  template <class> friend class PartRawOperatorLook;
   Interpreter& in_;
 };
 

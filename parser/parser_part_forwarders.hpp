@@ -9,6 +9,8 @@ namespace povtrace::sdl {
 
 template <class In>
 PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_, at) {}
+template <class In>
+PartRawOperatorLook<In>::PartRawOperatorLook(ParserPart& part, bool raw) : look_(part.in_, raw) {}
 
 inline Token ParserPart::next() { return in_.next(); }
 inline const Token& ParserPart::peek() { return in_.peek(); }
@@ -29,6 +31,9 @@ inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
 }
 inline auto ParserPart::raw_ahead() { return in_.raw_ahead(); }
 inline void ParserPart::skip_ahead() { in_.skip_ahead(); }
+inline Token ParserPart::raw() { return in_.raw(); }
+inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.ahead_is(symbol); }
+inline Token ParserPart::pop_pushed_back() { return in_.pop_pushed_back(); }
 
 inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
@@ -57,10 +62,10 @@ inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view co
   return in_.parse_uv_vector(context);
 }
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
-  return in_.parse_function_definition(keyword);
+  return in_.functions_.parse_definition(keyword);
 }
-inline std::uint64_t& ParserPart::function_steps_left() { return in_.function_steps_left_; }
-inline bool& ParserPart::function_budget_set() { return in_.function_budget_set_; }
+inline std::uint64_t* ParserPart::function_budget() { return in_.functions_.budget(); }
+inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
 
 inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.objects_.try_parse_item(t); }
 inline void ParserPart::parse_object_modifiers(Object& object) { in_.objects_.parse_object_modifiers(object); }
@@ -84,7 +89,6 @@ inline const std::vector<std::filesystem::path>& ParserPart::library_paths() con
   return in_.options_.library_paths;
 }
 inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
-inline std::uint64_t ParserPart::max_tokens() const { return in_.options_.max_tokens; }
 inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
 inline void ParserPart::place_object(Object&& object, const SourceLoc& at) { in_.place_object(std::move(object), at); }
 inline void ParserPart::place_light(Light light, const SourceLoc& at) { in_.place_light(std::move(light), at); }

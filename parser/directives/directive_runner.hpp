@@ -21,12 +21,12 @@
 // It is a ParserPart (parser_part.hpp): the token reader's, the diagnostics' and the expressions' services come
 // through ParserPart's forwarders, as for every part (next, peek, peek_raw, unget, expect, accept, skip_expected,
 // expect_identifier_raw, plain_ahead, consume_plain, raw_ahead, skip_ahead, lookup, reserved, fail_at,
-// fail_expected, warn, parse_float(_full), parse_additive, parse_expression, parse_string, starts_string,
-// language_version). The services only it uses go to the Interpreter through the private inline forwarders of
-// directive_services.hpp: try_parse_rvalue, numeric_ahead, call_macros_ahead, parse_defined_identifier,
-// parse_element_reference, store_element, directive_declare_element, check_function_redeclaration, parse_default,
-// directive_version, and RawOperatorLook (through in_). The token stream's kept tokens and frames, the symbols,
-// the diagnostics' fail(loc) and the options it holds directly.
+// fail_expected, warn, RawOperatorLook, parse_float(_full), parse_additive, parse_expression, parse_string, starts_string,
+// try_parse_rvalue, language_version). The services only it uses go through the private inline forwarders of
+// directive_services.hpp: to the ArrayValues part (parse_defined_identifier, parse_element_reference,
+// store_element, directive_declare_element), to the FunctionValues part (check_function_redeclaration) and to
+// the Interpreter (numeric_ahead, call_macros_ahead, parse_default, directive_version). The token stream's kept tokens and frames, the symbols, the diagnostics' fail(loc) and the options it
+// holds directly.
 #pragma once
 
 #include <cstddef>
@@ -185,7 +185,6 @@ class DirectiveRunner final : public TokenStream::IncludeExit, ParserPart {
 
   // ---- the Interpreter's services only the directives use (directive_services.hpp); the reader's and the
   // expressions' come through ParserPart, as for every part ----
-  std::optional<Value> try_parse_rvalue(const Token& first);
   bool numeric_ahead();
   void call_macros_ahead();
   bool parse_defined_identifier();
@@ -196,8 +195,8 @@ class DirectiveRunner final : public TokenStream::IncludeExit, ParserPart {
   void parse_default(const Token& keyword);
   void directive_version(const Token& at);
 
-  // The Interpreter again (ParserPart keeps its own private): for the services above and RawOperatorLook, until
-  // the value reader and the token reader are parts of their own (S5, S11).
+  // The Interpreter again (ParserPart keeps its own private): for the services above, until the value reader is a
+  // part of its own (S11).
   Interpreter& in_;
   const ParseOptions& options_;
   TokenStream& stream_;

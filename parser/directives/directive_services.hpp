@@ -8,22 +8,21 @@
 
 namespace povtrace::sdl {
 
-inline std::optional<Value> DirectiveRunner::try_parse_rvalue(const Token& first) {
-  return in_.try_parse_rvalue(first);
-}
 inline bool DirectiveRunner::numeric_ahead() { return in_.numeric_ahead(); }
 inline void DirectiveRunner::call_macros_ahead() { in_.call_macros_ahead(); }
-inline bool DirectiveRunner::parse_defined_identifier() { return in_.parse_defined_identifier(); }
-inline auto DirectiveRunner::parse_element_reference(const Token& name) { return in_.parse_element_reference(name); }
+inline bool DirectiveRunner::parse_defined_identifier() { return in_.arrays_.parse_defined_identifier(); }
+inline auto DirectiveRunner::parse_element_reference(const Token& name) {
+  return in_.arrays_.parse_element_reference(name);
+}
 inline void DirectiveRunner::store_element(ArrayValue& a, std::size_t index, Value value, const Token& at,
                                            const std::string& name) {
-  in_.store_element(a, index, std::move(value), at, name);
+  in_.arrays_.store_element(a, index, std::move(value), at, name);
 }
 inline void DirectiveRunner::directive_declare_element(const Token& name, bool local) {
-  in_.directive_declare_element(name, local);
+  in_.arrays_.directive_declare_element(name, local);
 }
 inline void DirectiveRunner::check_function_redeclaration(const Token& name, bool local, const Value& value) {
-  in_.check_function_redeclaration(name, local, value);
+  in_.functions_.check_redeclaration(name, local, value);
 }
 inline void DirectiveRunner::parse_default(const Token& keyword) { in_.parse_default(keyword); }
 inline void DirectiveRunner::directive_version(const Token& at) { in_.directive_version(at); }

@@ -138,7 +138,7 @@ void DirectiveRunner::directive_declare(bool local) {
   // The table the value goes to is fixed now, before the value is parsed (POV-Ray's Parse_Declare): #local's is
   // the current one; #declare's the one holding the visible entry, or the global table.
   const std::size_t target_level = local ? symbols_.depth() - 1 : symbols_.level_of(id).value_or(0);
-  const Interpreter::RawOperatorLook raw_look(in_);   // the value of a #declare: POV-Ray's Ok_To_Declare is off
+  const RawOperatorLook raw_look(*this);   // the value of a #declare: POV-Ray's Ok_To_Declare is off
   call_macros_ahead();
   if (numeric_ahead()) {
     // A number or vector, what try_parse_rvalue() makes of it without a Token, and the steps below for it: stored
@@ -162,7 +162,7 @@ void DirectiveRunner::directive_declare(bool local) {
     const Value* held = first.kind == TokenKind::identifier ? lookup(first) : nullptr;
     const bool numeric = first.kind == TokenKind::number || first.kind == TokenKind::symbol ||
                          (held && std::holds_alternative<Numeric>(*held));
-    const Interpreter::RawOperatorLook look(in_, numeric);
+    const RawOperatorLook look(*this, numeric);
     value = try_parse_rvalue(first);
     if (!value) fail_expected(first, "a value (number, vector, colour, string, object, texture, pigment, finish, "
                                      "interior or camera) for " + std::string(name));
@@ -234,7 +234,7 @@ void DirectiveRunner::directive_include(const Token& at) {
 }
 
 bool DirectiveRunner::condition_in_parens() {
-  const Interpreter::RawOperatorLook raw_look(in_);   // POV-Ray's Parse_Cond_Param
+  const RawOperatorLook raw_look(*this);   // POV-Ray's Parse_Cond_Param
   skip_expected('(', " (conditions are written in parentheses)");
   const double v = parse_float_full();
   skip_expected(')', " closing the condition");
@@ -354,7 +354,7 @@ void DirectiveRunner::directive_switch(const Token& at) {
   c.frame = stream_.depth() - 1;
   c.loc = at.loc;
   c.switch_value = [&] {
-    const Interpreter::RawOperatorLook raw_look(in_);
+    const RawOperatorLook raw_look(*this);
     expect("(", " (conditions are written in parentheses)");
     const double v = parse_float_full();
     expect(")", " closing the condition");
@@ -369,7 +369,7 @@ void DirectiveRunner::directive_switch(const Token& at) {
 }
 
 bool DirectiveRunner::case_matches(const Token& word) {
-  const Interpreter::RawOperatorLook raw_look(in_);
+  const RawOperatorLook raw_look(*this);
   const double v = controls_.back().switch_value;
   expect("(", " (conditions are written in parentheses)");
   const double a = parse_float_full();

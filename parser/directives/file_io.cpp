@@ -195,7 +195,7 @@ void DirectiveRunner::directive_read(const Token& at) {
       fail_expected(t, "an identifier to read into, or ')'");
     const std::string name(t.text);
     const bool subscripted = ahead_is("[");
-    std::optional<Interpreter::ElementRef> element;
+    std::optional<ArrayValues::ElementRef> element;
     if (subscripted) element = parse_element_reference(t);
     if (!at_end) {
       std::optional<Value> item = read_item(*file, at_end);

@@ -64,7 +64,7 @@ void DirectiveRunner::call_macro(const Token& name) {
     }
     std::optional<Value> value;
     {
-      const Interpreter::RawOperatorLook raw_look(in_);   // POV-Ray's Ok_To_Declare is off in a macro's arguments
+      const RawOperatorLook raw_look(*this);   // POV-Ray's Ok_To_Declare is off in a macro's arguments
       value = try_parse_rvalue(first);
     }
     if (!value) fail_expected(first, "a value for macro parameter '" + macro.parameters[i] + "'");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "parser/expressions/array_values.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -25,7 +26,7 @@ std::string number_text(double v) {
 std::string plural_type(const std::string& type) { return type + "s"; }
 }  // namespace
 
-Value Interpreter::parse_array_declaration(const Token& keyword) {
+Value ArrayValues::parse_array_declaration(const Token& keyword) {
   auto a = std::make_shared<ArrayValue>();
   double total = 1;
   // Raw looks: the value may be complete after any `]` or `}`, and a following directive must run only after it
@@ -53,7 +54,7 @@ Value Interpreter::parse_array_declaration(const Token& keyword) {
 
 // { … } for dimension `dim`: nested blocks down to the last dimension, whose block holds exactly that many values
 // (commas optional).
-void Interpreter::parse_array_initialiser(ArrayValue& a, std::size_t dim, std::size_t base) {
+void ArrayValues::parse_array_initialiser(ArrayValue& a, std::size_t dim, std::size_t base) {
   const NestingGuard guard(*this, peek());
   Token open = expect("{", " opening the array initialiser");
   std::size_t stride = 1;
@@ -88,7 +89,7 @@ void Interpreter::parse_array_initialiser(ArrayValue& a, std::size_t dim, std::s
 }
 
 // The first value stored fixes the array's element type; a value of another type is an error (§3, [V sdl_eps]).
-void Interpreter::store_element(ArrayValue& a, std::size_t index, Value value, const Token& at,
+void ArrayValues::store_element(ArrayValue& a, std::size_t index, Value value, const Token& at,
                                 const std::string& name) {
   const std::string type = array_type_of(value);
   if (a.type.empty()) a.type = type;
@@ -98,7 +99,7 @@ void Interpreter::store_element(ArrayValue& a, std::size_t index, Value value, c
   a.elements[index] = std::move(value);
 }
 
-std::size_t Interpreter::parse_subscripts(const ArrayValue& a, const std::string& name, Token& last) {
+std::size_t ArrayValues::parse_subscripts(const ArrayValue& a, const std::string& name, Token& last) {
   std::size_t index = 0;
   for (std::size_t d = 0; d < a.sizes.size(); ++d) {
     Token open = next();
@@ -119,7 +120,7 @@ std::size_t Interpreter::parse_subscripts(const ArrayValue& a, const std::string
   return index;
 }
 
-std::optional<Interpreter::ElementRef> Interpreter::parse_element_reference(const Token& name) {
+std::optional<ArrayValues::ElementRef> ArrayValues::parse_element_reference(const Token& name) {
   if (name.kind != TokenKind::identifier || is_reserved_word(name.text)) return std::nullopt;
   const Value* v = symbols_.find(std::string(name.text));
   if (!v || !std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) return std::nullopt;
@@ -139,7 +140,7 @@ std::optional<Interpreter::ElementRef> Interpreter::parse_element_reference(cons
 }
 
 // #declare A[i]… = value / #local A[i]… = value: assigns the element of the visible array in place.
-void Interpreter::directive_declare_element(const Token& name, bool local) {
+void ArrayValues::directive_declare_element(const Token& name, bool local) {
   auto ref = parse_element_reference(name);
   const std::string shown(name.text);
   Token eq = next();
@@ -151,7 +152,7 @@ void Interpreter::directive_declare_element(const Token& name, bool local) {
     value = try_parse_rvalue(first);
   }
   if (!value) fail_expected(first, "a value for an element of " + shown);
-  const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && scene_.language_version >= 350;
+  const bool needs_semicolon = std::holds_alternative<Numeric>(*value) && language_version() >= 350;
   // POV-Ray stores `#local A[i] = …` of an array that is not in the innermost table (a global array, from inside
   // a macro or an include file) in a new local entry nothing can read: the array stays unchanged.
   if (local && symbols_.level_of(shown) != symbols_.depth() - 1)
@@ -164,7 +165,7 @@ void Interpreter::directive_declare_element(const Token& name, bool local) {
   else if (needs_semicolon) fail_expected(semi, "';' after the value of " + shown + "[…]");
 }
 
-bool Interpreter::parse_defined_identifier() {
+bool ArrayValues::parse_defined_identifier() {
   Token name = raw();
   if (name.kind != TokenKind::identifier) fail_expected(name, "an identifier");
   bool defined = false;
@@ -183,7 +184,7 @@ bool Interpreter::parse_defined_identifier() {
 
 // dimensions(A): the number of dimensions; dimension_size(A, k): the size of dimension k (1-based), 0 when k is
 // out of range (§5).
-Numeric Interpreter::parse_dimensions(const Token& name) {
+Numeric ArrayValues::parse_dimensions(const Token& name) {
   expect("(", " after '" + std::string(name.text) + "'");
   Token id = next();
   const Value* v = lookup(id);

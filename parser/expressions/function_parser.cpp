@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "runtime/function_value.hpp"
+#include "parser/expressions/function_values.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -100,10 +101,11 @@ struct Node {
 
 }  // namespace
 
-// Parses one `function …` definition; a friend of Interpreter, reading its token stream.
+// Parses one `function …` definition; a friend of the FunctionValues part, reading its tokens, textures and splines
+// through it.
 class FunctionParser {
  public:
-  explicit FunctionParser(Interpreter& in) : in_(in) {}
+  explicit FunctionParser(FunctionValues& in) : in_(in) {}
   std::shared_ptr<const FunctionValue> parse_definition(const Token& keyword);
 
  private:
@@ -148,7 +150,7 @@ class FunctionParser {
   int here() const { return static_cast<int>(out_->code.size()); }
   int callee_index(const std::shared_ptr<const FunctionValue>& fn);
 
-  Interpreter& in_;
+  FunctionValues& in_;
   std::vector<Node> nodes_;
   std::vector<std::string> parameters_;
   struct Local {
@@ -334,7 +336,7 @@ int FunctionParser::parse_signed_operand() {
 
 int FunctionParser::parse_operand() {
   Token t = in_.next();
-  const Interpreter::NestingGuard guard(in_, t);
+  const FunctionValues::NestingGuard guard(in_, t);
   if (t.kind == TokenKind::number) return constant(t.number, t.loc);
   if (t.is("(")) {
     const int g = parse_body_expression();
@@ -832,9 +834,9 @@ void FunctionParser::compile_call(int i) {
   depth_ += 1 - argc;
 }
 
-// ---- the interpreter's hooks ---------------------------------------------------------------------------------
+// ---- the FunctionValues part: the interpreter's hooks ---------------------------------------------------------
 
-std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) {
+std::optional<Value> FunctionValues::try_parse_rvalue(const Token& first) {
   if (first.is("function")) return Value(FunctionParser(*this).parse_definition(first));
   const Value* v = lookup(first);
   const auto* found = v ? std::get_if<std::shared_ptr<const FunctionValue>>(v) : nullptr;
@@ -844,7 +846,7 @@ std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) 
   std::shared_ptr<const FunctionValue> held = *found;
   const Token after = peek_raw();   // raw: a directive after `#declare G = F` runs once G is stored
   if (after.is("(")) {   // a call: the value is an expression (F(1,2,3) + 1), its first operand this call
-    return Value(parse_additive_after(call_function_from_sdl(first, std::move(held))).stored());
+    return Value(parse_additive_after(call(first, std::move(held))).stored());
   }
   // `F + 1` or `F.x` is a call without its arguments (POV-Ray: "incomplete function call").
   if (after.is("+") || after.is("-") || after.is("*") || after.is("/") || after.is("."))
@@ -853,11 +855,11 @@ std::optional<Value> Interpreter::try_parse_function_rvalue(const Token& first) 
   return Value(std::move(held));   // `#declare G = F;`: G is a copy (an immutable value, so shared)
 }
 
-std::shared_ptr<const FunctionValue> Interpreter::parse_function_definition(const Token& keyword) {
+std::shared_ptr<const FunctionValue> FunctionValues::parse_definition(const Token& keyword) {
   return FunctionParser(*this).parse_definition(keyword);
 }
 
-Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<const FunctionValue> fn) {
+Numeric FunctionValues::call(const Token& name, std::shared_ptr<const FunctionValue> fn) {
   // `fn` is held here: parsing the arguments may end the macro or include file whose local it is.
   const FunctionValue& f = *fn;
   const std::string what = "the function '" + std::string(name.text) + "'";
@@ -877,11 +879,7 @@ Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<c
   double out[5] = {0, 0, 0, 0, 0};
   double result = 0;
   try {
-    if (options_.max_tokens && !function_budget_set_) {
-      function_steps_left_ = options_.max_tokens * 16;   // shared by every call of the parse
-      function_budget_set_ = true;
-    }
-    result = evaluate_function(f, args, out, noise_generator(), options_.max_tokens ? &function_steps_left_ : nullptr);
+    result = evaluate_function(f, args, out, noise_generator(), budget());
   } catch (const FunctionError& e) {
     fail_at(name, e.what());
   }
@@ -895,7 +893,7 @@ Numeric Interpreter::call_function_from_sdl(const Token& name, std::shared_ptr<c
 
 // POV-Ray refuses to declare a name again while it holds a function, and to turn a declared value of another
 // type into a function (§3: #undef first).
-void Interpreter::check_function_redeclaration(const Token& name, bool local, const Value& value) {
+void FunctionValues::check_redeclaration(const Token& name, bool local, const Value& value) {
   // By the token's NameId: this runs for every #declare, most of them of plain values.
   const Value* visible = name.name ? symbols_.find(name.name) : symbols_.find(name.text);
   if (visible && std::holds_alternative<std::shared_ptr<const FunctionValue>>(*visible))

@@ -228,10 +228,10 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   }
   if (n == "defined") {
     expect("(", " after 'defined'");
-    return Numeric::scalar(parse_defined_identifier() ? 1.0 : 0.0);
+    return Numeric::scalar(arrays_.parse_defined_identifier() ? 1.0 : 0.0);
   }
-  if (n == "dimensions" || n == "dimension_size") return parse_dimensions(name);
-  if (n == "inside" || n == "min_extent" || n == "max_extent") return parse_object_query(name);
+  if (n == "dimensions" || n == "dimension_size") return arrays_.parse_dimensions(name);
+  if (n == "inside" || n == "min_extent" || n == "max_extent") return object_queries_.parse_object_query(name);
   if (n == "now") {
     // Days since 2000-01-01 00:00 UTC (§5), with POV-Ray's microsecond resolution.
     const auto since_epoch = std::chrono::duration_cast<std::chrono::microseconds>(
@@ -239,7 +239,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
     constexpr double kY2kSeconds = 946684800.0;
     return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
   }
-  if (n == "trace") return parse_trace(name);
+  if (n == "trace") return object_queries_.parse_trace(name);
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
     rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));
@@ -282,7 +282,7 @@ Numeric Interpreter::parse_primary(const Token& t) {
     // the name of that feature.
     if (const auto* opaque = std::get_if<Boxed<OpaqueValue>>(v))
       refuse_if_unsupported((*opaque)->feature, t.loc, "expression");
-    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return call_function_from_sdl(t, *fn);
+    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return functions_.call(t, *fn);
     if (const auto* s = std::get_if<Boxed<SplineValue>>(v)) return splines_.call(t, *s);
     if (!std::holds_alternative<Numeric>(*v))
       fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +

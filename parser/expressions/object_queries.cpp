@@ -18,6 +18,8 @@
 
 #include <stdexcept>
 
+#include "parser/expressions/array_values.hpp"
+#include "parser/expressions/object_queries.hpp"
 #include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 
@@ -161,7 +163,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
 
 // The object an identifier token names, for inside(), trace(), min_extent() and max_extent() (§5: they take an
 // object identifier).
-const std::shared_ptr<const SceneItem>& Interpreter::object_identifier(const Token& id, std::string_view function) {
+const std::shared_ptr<const SceneItem>& ObjectQueries::object_identifier(const Token& id, std::string_view function) {
   const Value* v = lookup(id);
   const auto* item = v ? std::get_if<std::shared_ptr<const SceneItem>>(v) : nullptr;
   if (!item || !std::holds_alternative<Object>(**item))
@@ -173,7 +175,7 @@ const std::shared_ptr<const SceneItem>& Interpreter::object_identifier(const Tok
 // same object in loops. The cache keeps the values it was made from alive, so an address is never reused for
 // another object; it is emptied when it grows past a few hundred objects (a loop declaring and tracing a new object
 // each time).
-const PreparedObject& Interpreter::prepared_object(const std::shared_ptr<const SceneItem>& item) {
+const PreparedObject& ObjectQueries::prepared_object(const std::shared_ptr<const SceneItem>& item) {
   constexpr std::size_t kMaxPreparedObjects = 256;
   const int generator = noise_generator();
   if (auto found = prepared_objects_.find(item.get()); found != prepared_objects_.end()) {
@@ -191,7 +193,7 @@ const PreparedObject& Interpreter::prepared_object(const std::shared_ptr<const S
 
 // inside(O, P) → 1 or 0; min_extent(O), max_extent(O) → the corners of O's bounding box. O must be an object
 // identifier (§5). inside() of shapes the parser does not test itself asks the renderer's geometry.
-Numeric Interpreter::parse_object_query(const Token& name) {
+Numeric ObjectQueries::parse_object_query(const Token& name) {
   const std::string n(name.text);
   expect("(", " after '" + n + "'");
   Token id = next();
@@ -221,7 +223,7 @@ Numeric Interpreter::parse_object_query(const Token& name) {
 // miss. When a declared vector identifier follows, it receives the surface's raw normal there (reversed on an
 // inverted surface), or <0, 0, 0> on a miss; anything else there must be the closing ')'. A zero direction, for
 // which POV-Ray traces a NaN ray that meets nothing, gives the miss with a warning.
-Numeric Interpreter::parse_trace(const Token& name) {
+Numeric ObjectQueries::parse_trace(const Token& name) {
   expect("(", " after 'trace'");
   Token id = next();
   const std::shared_ptr<const SceneItem>& item = object_identifier(id, "trace");
@@ -247,14 +249,14 @@ Numeric Interpreter::parse_trace(const Token& name) {
 
 // trace()'s optional fourth argument: a declared 3-D vector identifier (or array element) is assigned in place,
 // wherever it lives (through macro aliases); other tokens are left for the closing ')'.
-void Interpreter::store_trace_normal(Vec3 normal) {
+void ObjectQueries::store_trace_normal(Vec3 normal) {
   const Token& ahead = peek_raw();
   if (ahead.kind != TokenKind::identifier || is_reserved_word(ahead.text)) return;
   const Value* v = symbols_.find(std::string(ahead.text));
   if (!v) fail_expected(ahead, "a declared vector identifier to receive trace()'s normal, or ')'");
   if (std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) {
     const Token name = pop_pushed_back();   // the token peek_raw() looked at
-    const auto ref = parse_element_reference(name);
+    const auto ref = arrays_.parse_element_reference(name);
     const auto& element = ref->array->elements[ref->index];
     const auto* n = element ? std::get_if<Numeric>(&*element) : nullptr;
     if (!n || n->terms != 3 || n->colour)

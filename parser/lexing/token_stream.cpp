@@ -274,7 +274,7 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
     if (!ahead_is("[")) return;
     const std::shared_ptr<ArrayValue> keep = *array;   // the subscripts may run code that reassigns the name
     Token last = t;
-    const std::size_t index = parse_subscripts(*keep, std::string(t.text), last);
+    const std::size_t index = arrays_.parse_subscripts(*keep, std::string(t.text), last);
     const auto& element = keep->elements[index];
     if (last.loc.file == t.loc.file && last.end.offset > t.begin.offset)
       t.text = std::string_view(t.text.data(), last.end.offset - t.begin.offset);

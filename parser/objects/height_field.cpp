@@ -56,17 +56,14 @@ void ObjectParser::parse_height_field_function(const Token& keyword, HeightField
   }
   auto samples = std::make_shared<std::vector<std::uint16_t>>(static_cast<std::size_t>(width) * depth);
   double args[3] = {0, 0, 0}, out[5];
-  if (max_tokens() && !function_budget_set()) {   // the fuzzer's bound on function work (call_function_from_sdl)
-    function_steps_left() = max_tokens() * 16;
-    function_budget_set() = true;
-  }
+  std::uint64_t* const budget = function_budget();   // the fuzzer's bound on function work, shared with SDL calls
   try {
     for (int i = 0; i < depth; ++i) {
       args[1] = static_cast<double>(i) / (d - 1);
       for (int j = 0; j < width; ++j) {
         args[0] = static_cast<double>(j) / (w - 1);
         const double value =
-            evaluate_function(*fn, args, out, noise_generator(), max_tokens() ? &function_steps_left() : nullptr);
+            evaluate_function(*fn, args, out, noise_generator(), budget);
         (*samples)[static_cast<std::size_t>(depth - 1 - i) * width + j] =
             static_cast<std::uint16_t>(function_image_value(value) * 65535.0f);
       }

@@ -266,9 +266,9 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
     return Value(MaterialValue{holder.texture, holder.interior});
   }
-  if (k == "array") return parse_array_declaration(first);
+  if (k == "array") return arrays_.parse_array_declaration(first);
   if (auto s = splines_.try_parse_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
-  if (auto f = try_parse_function_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
+  if (auto f = functions_.try_parse_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
   if (const Value* v = lookup(first);
       v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
     if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
