@@ -1,9 +1,11 @@
 // The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
-// owns the token stream (TokenStream: a stack of source frames), the diagnostics (Diagnostics), the symbol tables,
-// the directives with their control-flow stack and the macro calls (DirectiveRunner), and the statement parsers
-// that fill the SceneDescription
+// owns the token reader (TokenReader, with the token stream: a stack of source frames), the diagnostics
+// (Diagnostics), the symbol tables, the directives with their control-flow stack and the macro calls
+// (DirectiveRunner), and the statement parsers that fill the SceneDescription
 // (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
-//   lexing/token_stream.cpp      the reader over TokenStream: next() hands directives and macro calls to directives_
+//   lexing/token_stream.cpp      the TokenReader part (token_reader.hpp), the reader over TokenStream: next()
+//                                hands directives and macro calls to directives_; also fast_operand, the
+//                                expression parser's (S7)
 //   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
 //   directives/macros.cpp        DirectiveRunner: macro calls
 //   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions; the programs that
@@ -33,6 +35,7 @@
 #include "parser/lexing/diagnostics.hpp"
 #include "parser/lexing/nesting_limit.hpp"
 #include "parser/lexing/token_stream.hpp"
+#include "parser/lexing/token_reader.hpp"
 #include "parser/extents/object_extents.hpp"
 #include "parser/parse_scene.hpp"
 #include "parser/lexing/reserved_words.hpp"
@@ -57,96 +60,46 @@ class Interpreter {
   explicit Interpreter(const ParseOptions& options);
   SceneDescription run(std::unique_ptr<SourceFile> main_file);
   // `name` held in the parse's file names (the SceneDescription keeps them: its locations point to them).
-  FileName file_name(std::string_view name) { return stream_.file_name(name); }
+  FileName file_name(std::string_view name) { return reader_.stream().file_name(name); }
 
  private:
-  // ---- token stream (token_stream.cpp) ----
-  // The frames and kept tokens are the TokenStream's (lexing/token_stream.hpp); the functions below of the same
-  // names forward to it. It is the first data member: its address is the Interpreter's, so that the hot paths
-  // keep no second pointer around their calls into it (measured: 0.4-1.2% more instructions in the parse benchmarks
-  // otherwise).
-  TokenStream stream_;
+  // ---- token reader (lexing/token_reader.hpp) ----
+  // The reader owns the token stream and the reader's state. It is the first data member: its address (and its
+  // stream's) is the Interpreter's, so that the hot paths keep no second pointer around their calls into it
+  // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The Interpreter's own code
+  // (expressions, scene statements) reads through the one-line forwarders below of the same names until S7 and S11
+  // move that code into parts, which reach the reader through ParserPart.
+  TokenReader reader_;
   using Frame = TokenStream::Frame;
-  Token raw() { return stream_.raw(); }   // next token of the frame stack, no directive processing
-  const LexedToken& lexed(FileTokens& tokens, std::size_t index) { return stream_.lexed(tokens, index); }
-  Token make_token(const FileTokens& tokens, const LexedToken& t) const { return stream_.make_token(tokens, t); }
-  bool ahead_is(std::string_view symbol) { return stream_.ahead_is(symbol); }
-  bool frame_ahead_is(std::string_view symbol) { return stream_.frame_ahead_is(symbol); }
-  bool reserved(const Token& t) const { return sdl::reserved(symbols_, t); }
-  Token next();                  // next token after directives and macro calls
-  // `#declare`, `#local` and `#end` — the directives loops run — read from the kept tokens, neither the '#' nor
-  // the word made a Token unless an error needs it. False, having read nothing, where next() takes the full path:
-  // a token limit, a cancel check due, the nesting limit near, another directive, a pushed-back token.
-  bool quick_directive();
-  const Token& peek();   // valid until the next token is read
-  // The next token *without* running a directive or macro call it may be (POV-Ray's Ok_To_Declare look-ahead
-  // at the end of a #declare): a following `#declare`/`#end` must run only after the current one is finished.
-  const Token& peek_raw();   // valid until the next token is read
-  // Kind and text of what peek_raw() would return, without making a Token of it when the frame's next token is
-  // plain (not '#', not the end of a file): the look for an operator after every operand.
-  struct Ahead {
-    TokenKind kind;
-    std::string_view text;
-    bool is(std::string_view s) const {
-      // Length and first byte first, as Token::is: asked after every operand, mostly of one-byte symbols.
-      return (kind == TokenKind::symbol || kind == TokenKind::identifier) && text.size() == s.size() &&
-             (text.empty() || text[0] == s[0]) && text == s;
-    }
+  using Ahead = TokenReader::Ahead;
+  Token raw() { return reader_.raw(); }
+  const LexedToken& lexed(FileTokens& tokens, std::size_t index) { return reader_.lexed(tokens, index); }
+  Token make_token(const FileTokens& tokens, const LexedToken& t) const { return reader_.make_token(tokens, t); }
+  bool reserved(const Token& t) const { return reader_.reserved(t); }
+  Token next() { return reader_.next(); }
+  const Token& peek() { return reader_.peek(); }
+  const Token& peek_raw() { return reader_.peek_raw(); }
+  Ahead raw_ahead() { return reader_.raw_ahead(); }
+  const LexedToken* plain_ahead() { return reader_.plain_ahead(); }
+  void consume_plain() { reader_.consume_plain(); }
+  void skip_ahead() { reader_.skip_ahead(); }
+  std::string_view text_of(const LexedToken& k) const { return reader_.text_of(k); }
+  bool plain_symbol(const LexedToken* k, char c) const { return reader_.plain_symbol(k, c); }
+  void skip_expected(char symbol, std::string_view context) { reader_.skip_expected(symbol, context); }
+  bool nesting_room() const { return reader_.nesting_room(); }
+  void unget(const Token& t) { reader_.unget(t); }
+  Token expect(std::string_view symbol, std::string_view context) { return reader_.expect(symbol, context); }
+  bool accept(std::string_view symbol) { return reader_.accept(symbol); }
+  const Value* lookup(const Token& t) const { return reader_.lookup(t); }
+  // The reader's NestingGuard taken by the Interpreter's own code (expressions, scene).
+  struct NestingGuard : TokenReader::NestingGuard {
+    using RoomChecked = TokenReader::NestingGuard::RoomChecked;
+    NestingGuard(Interpreter& in, const Token& at) : TokenReader::NestingGuard(in.reader_, at) {}
+    NestingGuard(Interpreter& in, RoomChecked room) : TokenReader::NestingGuard(in.reader_, room) {}
   };
-  // Inline for the frame's next plain token (asked after every operand, by every level of the expression grammar);
-  // out of line where a token was pushed back, a frame ends or a directive may follow.
-  Ahead raw_ahead() {
-    if (!stream_.has_pushed_back()) {
-      const Frame& f = stream_.frame();
-      const LexedToken& k = lexed(*f.tokens, f.index);
-      const std::string_view text(f.file->text.data() + k.offset, k.length());
-      if (k.kind() != TokenKind::end_of_input && !(text.size() == 1 && text[0] == '#')) return {k.kind(), text};
-    }
-    return raw_ahead_full();
-  }
-  Ahead raw_ahead_full();
-  // Whether a directive ahead of a complete operand waits until the value is finished (§1 item 6, POV-Ray's
-  // Ok_To_Declare off): in the value of a #declare or #local, a macro argument, an array initialiser and the
-  // condition of #if/#elseif/#while/#switch/#case/#range — where POV-Ray reads '#' there as a plain token and
-  // reports it. Elsewhere (object, pigment, transform arguments, #debug) POV-Ray's Get_Token runs the directive
-  // while it looks for an operator: `pigment { M() * 0.5 }` with M's value inside an #if … #end goes on with `* 0.5`
-  // after the directives and the macro's #end (advanced/isocacti.pov).
-  bool raw_operator_look_ = false;
-  class RawOperatorLook {
-   public:
-    explicit RawOperatorLook(Interpreter& in, bool raw = true) : in_(in), saved_(in.raw_operator_look_) {
-      in_.raw_operator_look_ = raw;
-    }
-    ~RawOperatorLook() { in_.raw_operator_look_ = saved_; }
-    RawOperatorLook(const RawOperatorLook&) = delete;
-    RawOperatorLook& operator=(const RawOperatorLook&) = delete;
-
-   private:
-    Interpreter& in_;
-    bool saved_;
-  };
-  // Reading without making Tokens, where next() would return the frame's next kept token unchanged: nothing is
-  // pushed back, and that token is neither '#', nor the end of a file, nor an identifier that runs something or
-  // resolves to something else when read (a macro call, an array that subscripts may follow, a deprecated name).
-  // The kept token then; nullptr where only next() may read on. A look: nothing is run or consumed.
-  const LexedToken* plain_ahead();
-  // Consumes the token plain_ahead() or raw_ahead() (when not pushed back) just returned: a symbol, counted
-  // against the token limit as next() would count it.
-  void consume_plain();
-  void skip_ahead();   // consumes the symbol raw_ahead() just returned, pushed back or not
-  std::string_view text_of(const LexedToken& k) const { return stream_.text_of(k); }
-  bool plain_symbol(const LexedToken* k, char c) const { return stream_.plain_symbol(k, c); }
-  // expect() where its Token is not needed: a plain `symbol` ahead is consumed without making one.
-  void skip_expected(char symbol, std::string_view context);
   // A number or a numeric identifier as a whole operand, read from the kept tokens without a Token (most operands
-  // are one); false, having read nothing, where the full parse_unary() must run.
+  // are one); false, having read nothing, where the full parse_unary() must run. The expression parser's (S7).
   bool fast_operand(Numeric& out);
-  bool nesting_room() const;   // whether NestingGuard would let one more level in
-  void unget(const Token& t) { stream_.unget(t); }
-  Token pop_pushed_back() { return stream_.pop_pushed_back(); }
-  Token expect(std::string_view symbol, std::string_view context);
-  bool accept(std::string_view symbol);   // consumes the token if it is `symbol`
-  std::string expect_identifier_raw(std::string_view context);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
   // The scene's noise generator in force now (POV-Ray's: 1 before #version 3.5, 2 from then on, unless
@@ -157,15 +110,10 @@ class Interpreter {
   [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
   [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
   void warn(const SourceLoc& loc, const std::string& message) const;
-  std::string reached_from() const { return stream_.reached_from(); }
+  std::string reached_from() const { return reader_.stream().reached_from(); }
   std::string describe(const Token& t) const;
-  const SourceFile& file_of(const SourceLoc& loc) const { return stream_.file_of(loc); }
+  const SourceFile& file_of(const SourceLoc& loc) const { return reader_.stream().file_of(loc); }
   bool is_macro_call(const Token& t) const;
-  // The value an identifier token stands for: an array element's value (Token::element), else the symbol
-  // visible under its name; nullptr for anything else. Every identifier lookup goes through here.
-  const Value* lookup(const Token& t) const;
-  // next() on a fresh identifier: the deprecation warning, and `A[i]…` resolved to its element.
-  void process_identifier(Token& t, const Value* v);
 
   // ---- directives (directive_runner.hpp) ----
   // The directives and macro calls are the DirectiveRunner's (directives_); it reads through the services below
@@ -207,7 +155,7 @@ class Interpreter {
   CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
   // The expression ahead run as a compiled program (expression_programs.hpp), where one exists and the nesting
   // limit has room for the levels it passes by; false, having read nothing, elsewhere.
-  bool run_expression_program(bool full, Numeric& out) { return programs_.run(full, out, nesting_); }
+  bool run_expression_program(bool full, Numeric& out) { return programs_.run(full, out, reader_.nesting()); }
 
   // ---- arrays (expressions/array_values.hpp) ----
   ArrayValues arrays_{*this, symbols_};
@@ -239,7 +187,7 @@ class Interpreter {
   // ---- objects (objects/object_parser.hpp) ----
   // It holds the stream and the directive runner (built later: it reads them only while parsing) for the mesh
   // scanners, which read the kept tokens straight from the source text.
-  ObjectParser objects_{*this, textures_, camera_lights_, stream_, directives_};
+  ObjectParser objects_{*this, textures_, camera_lights_, reader_.stream(), directives_};
 
   // ---- features parsed but not rendered yet (unsupported.cpp) ----
   UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
@@ -271,16 +219,13 @@ class Interpreter {
 
   const ParseOptions& options_;
   NotesPool notes_pool_;   // where the objects' notes are made (ObjectNotes); before the members holding objects
-  // True while run() reads the next statement's first token: a directive then run at nesting level 0 stands
-  // between statements, where nothing holds a kept token (FileTokens::release_before).
-  bool between_statements_ = false;
   SymbolTable symbols_;
   // The directives and macro calls, with their control stack (directive_runner.hpp). Built here, where the directive
   // words it interns were interned before.
-  DirectiveRunner directives_{*this, options_, stream_, symbols_, diagnostics_};
+  DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_};
   // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
-  Diagnostics diagnostics_{options_, stream_, symbols_};
-  ExpressionPrograms programs_{options_, stream_, symbols_, directives_};   // of replayed expressions (S6)
+  Diagnostics diagnostics_{options_, reader_.stream(), symbols_};
+  ExpressionPrograms programs_{options_, reader_.stream(), symbols_, directives_};   // of replayed expressions (S6)
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
@@ -295,21 +240,6 @@ class Interpreter {
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
   FunctionValues functions_{*this, options_, symbols_, textures_, splines_};
-
-  int nesting_ = 0;   // the levels NestingGuard counts, up to kMaxNesting (lexing/nesting_limit.hpp)
-  class NestingGuard {
-   public:
-    NestingGuard(Interpreter& in, const Token& at);
-    // One more level where nesting_room() has just said there is room: nothing to report, so no Token needed.
-    struct RoomChecked {};
-    NestingGuard(Interpreter& in, RoomChecked) : in_(in) { ++in_.nesting_; }
-    ~NestingGuard() { --in_.nesting_; }
-    NestingGuard(const NestingGuard&) = delete;
-    NestingGuard& operator=(const NestingGuard&) = delete;
-
-   private:
-    Interpreter& in_;
-  };
 };
 
 }  // namespace povtrace::sdl

@@ -29,10 +29,11 @@ namespace povtrace::sdl {
 
 class Interpreter;
 class ObjectExtents;
+class TokenReader;
 class ParserPart;
 
-// A NestingGuard taken by a part: the Interpreter's own (same checks, same message), reached through the part.
-// A template only so that the Interpreter's nested guard is named where it is complete (at the guard's use).
+// A NestingGuard taken by a part: the TokenReader's own (same checks, same message), reached through the part.
+// A template only so that the reader's nested guard is named where it is complete (at the guard's use).
 template <class In> class PartNestingGuard {
  public:
   PartNestingGuard(ParserPart& part, const Token& at);
@@ -43,7 +44,7 @@ template <class In> class PartNestingGuard {
   typename In::NestingGuard guard_;
 };
 
-// The Interpreter's RawOperatorLook taken by a part (array initialisers, element assignments): the same flag.
+// The TokenReader's RawOperatorLook taken by a part (array initialisers, element assignments): the same flag.
 template <class In> class PartRawOperatorLook {
  public:
   explicit PartRawOperatorLook(ParserPart& part, bool raw = true);
@@ -61,7 +62,7 @@ class ParserPart {
   ParserPart(const ParserPart&) = delete;
   ParserPart& operator=(const ParserPart&) = delete;
 
-  // ---- token reader (the Interpreter's token stream today; TokenReader from S5) ----
+  // ---- token reader (TokenReader, lexing/token_reader.hpp) ----
   inline Token next();
   inline const Token& peek();   // valid until the next token is read
   inline void unget(const Token& t);
@@ -73,17 +74,17 @@ class ParserPart {
   inline Token raw();                                // the next token with no directive processing (#ifdef's name)
   inline bool ahead_is(std::string_view symbol);     // a raw look at the next token
   inline Token pop_pushed_back();                    // the token a peek_raw() pushed back
-  using NestingGuard = PartNestingGuard<Interpreter>;
-  // The kept-token reads of the fast paths (interpreter.hpp says what each may skip), without making Tokens: the
+  using NestingGuard = PartNestingGuard<TokenReader>;
+  // The kept-token reads of the fast paths (token_reader.hpp says what each may skip), without making Tokens: the
   // directives' and the plain-symbol look at an object's closing brace.
   inline const LexedToken* plain_ahead();
   inline void consume_plain();
   inline bool plain_symbol(const LexedToken* k, char c) const;
   inline void skip_expected(char symbol, std::string_view context);   // expect() without making its Token
   inline std::string expect_identifier_raw(std::string_view context);
-  inline auto raw_ahead();   // the Interpreter's Ahead: kind and text of what peek_raw() would return
+  inline auto raw_ahead();   // the reader's Ahead: kind and text of what peek_raw() would return
   inline void skip_ahead();
-  using RawOperatorLook = PartRawOperatorLook<Interpreter>;
+  using RawOperatorLook = PartRawOperatorLook<TokenReader>;
 
   // ---- diagnostics (Diagnostics from S3) ----
   [[noreturn]] inline void fail(const SourceLoc& loc, const std::string& message) const;

@@ -8,32 +8,34 @@
 namespace povtrace::sdl {
 
 template <class In>
-PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_, at) {}
+PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_.reader_, at) {}
 template <class In>
-PartRawOperatorLook<In>::PartRawOperatorLook(ParserPart& part, bool raw) : look_(part.in_, raw) {}
+PartRawOperatorLook<In>::PartRawOperatorLook(ParserPart& part, bool raw) : look_(part.in_.reader_, raw) {}
 
-inline Token ParserPart::next() { return in_.next(); }
-inline const Token& ParserPart::peek() { return in_.peek(); }
-inline void ParserPart::unget(const Token& t) { in_.unget(t); }
+inline Token ParserPart::next() { return in_.reader_.next(); }
+inline const Token& ParserPart::peek() { return in_.reader_.peek(); }
+inline void ParserPart::unget(const Token& t) { in_.reader_.unget(t); }
 inline Token ParserPart::expect(std::string_view symbol, std::string_view context) {
-  return in_.expect(symbol, context);
+  return in_.reader_.expect(symbol, context);
 }
-inline bool ParserPart::accept(std::string_view symbol) { return in_.accept(symbol); }
-inline const Value* ParserPart::lookup(const Token& t) const { return in_.lookup(t); }
-inline const Token& ParserPart::peek_raw() { return in_.peek_raw(); }
-inline bool ParserPart::reserved(const Token& t) const { return in_.reserved(t); }
-inline const LexedToken* ParserPart::plain_ahead() { return in_.plain_ahead(); }
-inline void ParserPart::consume_plain() { in_.consume_plain(); }
-inline bool ParserPart::plain_symbol(const LexedToken* k, char c) const { return in_.plain_symbol(k, c); }
-inline void ParserPart::skip_expected(char symbol, std::string_view context) { in_.skip_expected(symbol, context); }
+inline bool ParserPart::accept(std::string_view symbol) { return in_.reader_.accept(symbol); }
+inline const Value* ParserPart::lookup(const Token& t) const { return in_.reader_.lookup(t); }
+inline const Token& ParserPart::peek_raw() { return in_.reader_.peek_raw(); }
+inline bool ParserPart::reserved(const Token& t) const { return in_.reader_.reserved(t); }
+inline const LexedToken* ParserPart::plain_ahead() { return in_.reader_.plain_ahead(); }
+inline void ParserPart::consume_plain() { in_.reader_.consume_plain(); }
+inline bool ParserPart::plain_symbol(const LexedToken* k, char c) const { return in_.reader_.plain_symbol(k, c); }
+inline void ParserPart::skip_expected(char symbol, std::string_view context) {
+  in_.reader_.skip_expected(symbol, context);
+}
 inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
-  return in_.expect_identifier_raw(context);
+  return in_.reader_.expect_identifier_raw(context);
 }
-inline auto ParserPart::raw_ahead() { return in_.raw_ahead(); }
-inline void ParserPart::skip_ahead() { in_.skip_ahead(); }
-inline Token ParserPart::raw() { return in_.raw(); }
-inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.ahead_is(symbol); }
-inline Token ParserPart::pop_pushed_back() { return in_.pop_pushed_back(); }
+inline auto ParserPart::raw_ahead() { return in_.reader_.raw_ahead(); }
+inline void ParserPart::skip_ahead() { in_.reader_.skip_ahead(); }
+inline Token ParserPart::raw() { return in_.reader_.raw(); }
+inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.reader_.ahead_is(symbol); }
+inline Token ParserPart::pop_pushed_back() { return in_.reader_.pop_pushed_back(); }
 
 inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
 inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }

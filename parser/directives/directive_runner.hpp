@@ -3,13 +3,13 @@
 // Implemented in directives.cpp (#declare … #macro, #version's reading, #debug…), macros.cpp (macro calls and
 // their return) and file_io.cpp (#fopen #read #write #fclose).
 //
-// Public interface, as the token reader (today the Interpreter: next(), peek_raw(), raw_ahead_full(),
-// quick_directive(); TokenReader from S5) and the other parts use it:
+// Public interface, as the token reader (TokenReader, lexing/token_reader.hpp: next(), peek_raw(), raw_ahead_full(),
+// quick_directive()) and the other parts use it:
 //   run(hash)                    a directive whose '#' next() has just read
 //   quick_word(word), quick(…)   the directives loops run (#declare, #local, #end) read from the kept tokens.
 //                                The plan had one `bool quick()`; it is split because its look runs for every
 //                                token and reads the reader's state (nesting, between statements): the look stays
-//                                in Interpreter::quick_directive (token_stream.cpp), which calls quick() only once
+//                                in TokenReader::quick_directive (token_stream.cpp), which calls quick() only once
 //                                it has stepped past a '#' and one of these words.
 //   call_macro(name)             a macro call whose name next() has just read (today invoke_macro)
 //   running_macro_here(), end(word)  peek_raw()'s exemption of the running macro's #end

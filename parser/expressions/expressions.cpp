@@ -26,7 +26,7 @@ double Interpreter::to_float(const Numeric& n, const Token& at) const {
 class Interpreter::ExpressionStart {
  public:
   explicit ExpressionStart(Interpreter& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
-    if (kept_) tokens_ = in.stream_.frame().tokens;
+    if (kept_) tokens_ = in.reader_.stream().frame().tokens;
     else token_ = in.peek();
   }
   Token token() const { return kept_ ? in_.make_token(*tokens_, *kept_) : token_; }

@@ -1,5 +1,5 @@
 // The token stream: a stack of source frames (main file, include files, macro bodies), read raw by TokenStream
-// (token_stream.hpp). Directives and macro calls are executed here too, by the Interpreter's token fetcher next(),
+// (token_stream.hpp). Directives and macro calls are executed here too, by the TokenReader's token fetcher next(),
 // so they may stand between any two tokens (povray-sdl-and-geometry.md §1, items 2 and 5). Both share this file
 // so that the fetcher's calls of raw() stay in one translation unit.
 #include <algorithm>
@@ -181,7 +181,7 @@ bool TokenStream::literal_scan_allows(std::uint64_t tokens, std::size_t items, c
 
 // The level count makes the limit the same everywhere; the stack check is the safety net for builds with much
 // larger frames (sanitizers, -O0) and for threads with small stacks, where 500 levels may not fit.
-Interpreter::NestingGuard::NestingGuard(Interpreter& in, const Token& at) : in_(in) {
+TokenReader::NestingGuard::NestingGuard(TokenReader& in, const Token& at) : in_(in) {
   ++in_.nesting_;
   const char* lowest = stack_lowest_address();
   const char* here = static_cast<const char*>(__builtin_frame_address(0));
@@ -201,9 +201,9 @@ bool Interpreter::is_macro_call(const Token& t) const {
   return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
 }
 
-const Value* Interpreter::lookup(const Token& t) const { return sdl::lookup(symbols_, t); }
+const Value* TokenReader::lookup(const Token& t) const { return sdl::lookup(symbols_, t); }
 
-Token Interpreter::next() {
+Token TokenReader::next() {
   while (true) {
     // A directive may itself look ahead and push a token back: that token comes first, before reading on.
     // Tokens pushed back by peek_raw() are not processed yet, so they go through the same checks; tokens put
@@ -234,7 +234,7 @@ Token Interpreter::next() {
   }
 }
 
-bool Interpreter::quick_directive() {
+bool TokenReader::quick_directive() {
   if (options_.max_tokens || !nesting_room()) return false;
   const Frame& f = stream_.frame();
   const LexedToken& hash = lexed(*f.tokens, f.index);
@@ -262,7 +262,7 @@ bool Interpreter::quick_directive() {
   return true;
 }
 
-void Interpreter::process_identifier(Token& t, const Value* v) {
+void TokenReader::process_identifier(Token& t, const Value* v) {
   if (symbols_.any_deprecated())
     if (auto* d = symbols_.deprecation(std::string(t.text)); d && !d->shown) {
       if (d->once) d->shown = true;
@@ -285,7 +285,7 @@ void Interpreter::process_identifier(Token& t, const Value* v) {
   }
 }
 
-const Token& Interpreter::peek_raw() {
+const Token& TokenReader::peek_raw() {
   while (true) {
     // The token looked at stays pushed back (it is called after every operand: no pop and push again).
     if (!stream_.has_pushed_back()) stream_.unget(raw());
@@ -308,12 +308,12 @@ const Token& Interpreter::peek_raw() {
   }
 }
 
-const Token& Interpreter::peek() {
+const Token& TokenReader::peek() {
   stream_.unget(next());
   return stream_.pushed_back();
 }
 
-Interpreter::Ahead Interpreter::raw_ahead_full() {
+TokenReader::Ahead TokenReader::raw_ahead_full() {
   // The #end of the running macro, which peek_raw() runs before looking on in the caller, read from the kept
   // tokens (a macro's value is followed by it on every call): the same checks, no Token for '#', 'end' or what
   // follows in the caller when that is plain.
@@ -332,7 +332,7 @@ Interpreter::Ahead Interpreter::raw_ahead_full() {
   return {raw_look.kind, raw_look.text};
 }
 
-const LexedToken* Interpreter::plain_ahead() {
+const LexedToken* TokenReader::plain_ahead() {
   if (stream_.has_pushed_back()) return nullptr;
   const Frame& f = stream_.frame();
   const LexedToken& k = lexed(*f.tokens, f.index);
@@ -354,7 +354,7 @@ const LexedToken* Interpreter::plain_ahead() {
   return nullptr;
 }
 
-void Interpreter::consume_plain() {
+void TokenReader::consume_plain() {
   if (options_.max_tokens) {   // next() counts it and reports the limit as everywhere else
     next();
     return;
@@ -362,17 +362,17 @@ void Interpreter::consume_plain() {
   stream_.step();
 }
 
-void Interpreter::skip_ahead() {
+void TokenReader::skip_ahead() {
   if (!stream_.has_pushed_back()) consume_plain();
   else stream_.drop_pushed_back();   // a symbol, which next() would return as it is
 }
 
-void Interpreter::skip_expected(char symbol, std::string_view context) {
+void TokenReader::skip_expected(char symbol, std::string_view context) {
   if (plain_symbol(plain_ahead(), symbol)) consume_plain();
   else expect(std::string_view(&symbol, 1), context);
 }
 
-bool Interpreter::nesting_room() const {
+bool TokenReader::nesting_room() const {
   const char* lowest = stack_lowest_address();
   const char* here = static_cast<const char*>(__builtin_frame_address(0));
   return nesting_ < kMaxNesting && !(lowest && here - lowest < kStackReserve);
@@ -383,7 +383,7 @@ bool Interpreter::fast_operand(Numeric& out) {
   if (options_.max_tokens || !nesting_room()) return false;
   const LexedToken* k = plain_ahead();
   if (!k) return false;
-  const Frame& f = stream_.frame();
+  const Frame& f = reader_.stream().frame();
   if (k->kind() == TokenKind::number) {
     out = Numeric::scalar(f.tokens->number(*k));
   } else if (k->kind() == TokenKind::identifier && !symbols_.is_reserved(k->payload)) {
@@ -394,18 +394,18 @@ bool Interpreter::fast_operand(Numeric& out) {
   } else {
     return false;
   }
-  stream_.step();
+  reader_.stream().step();
   if (raw_ahead().is(".")) out = parse_postfix(out);
   return true;
 }
 
-Token Interpreter::expect(std::string_view symbol, std::string_view context) {
+Token TokenReader::expect(std::string_view symbol, std::string_view context) {
   Token t = next();
   if (!t.is(symbol)) fail_expected(t, "'" + std::string(symbol) + "'" + std::string(context));
   return t;
 }
 
-bool Interpreter::accept(std::string_view symbol) {
+bool TokenReader::accept(std::string_view symbol) {
   // A plain token ahead is looked at where it stands: no Token made, none pushed back.
   if (const LexedToken* k = plain_ahead()) {
     if ((k->kind() != TokenKind::symbol && k->kind() != TokenKind::identifier) || text_of(*k) != symbol)
@@ -419,7 +419,7 @@ bool Interpreter::accept(std::string_view symbol) {
   return false;
 }
 
-std::string Interpreter::expect_identifier_raw(std::string_view context) {
+std::string TokenReader::expect_identifier_raw(std::string_view context) {
   Token t = raw();
   if (t.kind != TokenKind::identifier) fail_expected(t, std::string("an identifier ") + std::string(context));
   if (reserved(t))

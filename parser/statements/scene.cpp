@@ -10,12 +10,13 @@
 
 namespace povtrace::sdl {
 
-Interpreter::Interpreter(const ParseOptions& options) : stream_(options, symbols_, directives_), options_(options) {
+Interpreter::Interpreter(const ParseOptions& options)
+    : reader_(options, symbols_, directives_, arrays_, diagnostics_, directives_), options_(options) {
   default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
 }
 
 SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
-  stream_.open_main(std::move(main_file));
+  reader_.stream().open_main(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
       {"image_width", options_.image_width}, {"image_height", options_.image_height}, {"clock_delta", 0},
@@ -25,20 +26,20 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
 
   try {
     while (true) {
-      between_statements_ = true;
+      reader_.set_between_statements(true);
       Token t = next();
-      between_statements_ = false;
+      reader_.set_between_statements(false);
       if (t.kind == TokenKind::end_of_input) break;
       parse_statement(t);
     }
   } catch (const ParseError& e) {
     // Errors from below the interpreter (the lexer: an unterminated string in an include file) get the chain of
     // includes and macro calls that fail() gives the others; the frame stack is still as it was at the throw.
-    if (!e.context().empty() || stream_.depth() < 2) throw;
+    if (!e.context().empty() || reader_.stream().depth() < 2) throw;
     throw ParseError(e, reached_from());
   }
   directives_.check_closed_at_end();
-  scene_.file_names = stream_.file_names();
+  scene_.file_names = reader_.stream().file_names();
   return std::move(scene_);
 }
 
@@ -47,7 +48,7 @@ void Interpreter::directive_version(const Token& at) {
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
   if (peek_raw().is(";")) next();
-  if (!statement_seen_ && stream_.depth() == 1) scene_.version_given = true;
+  if (!statement_seen_ && reader_.stream().depth() == 1) scene_.version_given = true;
   (void)at;
 }
 
@@ -208,8 +209,8 @@ bool Interpreter::numeric_ahead() {
 void Interpreter::call_macros_ahead() {
   // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
   // limit (next() counts), no deprecated names (their warnings come from next()).
-  while (!stream_.has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
-    const Frame& f = stream_.frame();
+  while (!reader_.stream().has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
+    const Frame& f = reader_.stream().frame();
     const LexedToken& k = lexed(*f.tokens, f.index);
     if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
     const Value* v = symbols_.find(k.payload);
