@@ -379,7 +379,7 @@ bool Interpreter::nesting_room() const {
 }
 
 // The ExpressionParser's (expression_parser.hpp), defined here beside plain_ahead() and nesting_room(), which it
-// inlines: once per operand. Defined in expressions.cpp, with the two as calls, it cost 2.1% more instructions on
+// inlines: once per operand. Defined in expressions.cpp, with the two as calls, it cost 1.1% more instructions on
 // the parse_declares benchmark.
 bool ExpressionParser::fast_operand(Numeric& out) {
   // The token limit is counted by next() alone; a component selector (.x) goes through parse_postfix.
