@@ -8,12 +8,13 @@
 //                                expression parser's (S7)
 //   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
 //   directives/macros.cpp        DirectiveRunner: macro calls
-//   expressions/expressions.cpp  float/vector/colour/string expressions and built-in functions; the programs that
-//                                replay them are the ExpressionPrograms part (expression_programs.hpp)
+//   expressions/expressions.cpp  float/vector/colour/string expressions, Parse_UV_Vect and Allow_Float, and
+//   expressions/functions.cpp    the built-in functions: the ExpressionParser part (expression_parser.hpp); the
+//                                programs that replay expressions are the ExpressionPrograms part
+//                                (expression_programs.hpp)
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
-//                                ObjectParser part (object_parser.hpp); objects/implicit_shapes.cpp also holds
-//                                parse_uv_vector (Parse_UV_Vect), an expression service of the Interpreter's
+//                                ObjectParser part (object_parser.hpp)
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
 //   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
@@ -45,6 +46,7 @@
 #include "parser/parser_part.hpp"
 #include "parser/expressions/builtins.hpp"
 #include "parser/expressions/expression_programs.hpp"
+#include "parser/expressions/expression_parser.hpp"
 #include "parser/expressions/array_values.hpp"
 #include "parser/expressions/function_values.hpp"
 #include "parser/expressions/object_queries.hpp"
@@ -97,9 +99,6 @@ class Interpreter {
     NestingGuard(Interpreter& in, const Token& at) : TokenReader::NestingGuard(in.reader_, at) {}
     NestingGuard(Interpreter& in, RoomChecked room) : TokenReader::NestingGuard(in.reader_, room) {}
   };
-  // A number or a numeric identifier as a whole operand, read from the kept tokens without a Token (most operands
-  // are one); false, having read nothing, where the full parse_unary() must run. The expression parser's (S7).
-  bool fast_operand(Numeric& out);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
   // The scene's noise generator in force now (POV-Ray's: 1 before #version 3.5, 2 from then on, unless
@@ -121,41 +120,9 @@ class Interpreter {
   friend class DirectiveRunner;
   void directive_version(const Token& at);
 
-  // ---- expressions (expressions.cpp) ----
-  Numeric parse_expression();            // full level: ?:, & |, comparisons, + -
-  Numeric parse_additive();              // parameter level (Parse_Rel_Factor)
-  Numeric parse_multiplicative();
-  // The rest of an additive expression whose first operand the caller has already read (a call of a function or
-  // spline it held, the identifier of which may no longer resolve): its postfix, then * / and + - as usual.
-  Numeric parse_additive_after(Numeric first_operand);
-  Numeric parse_additive_rest(Numeric value);         // + - after the operand `value`
-  Numeric parse_multiplicative_rest(Numeric value);   // * / after the operand `value`
-  Numeric parse_unary();
-  Numeric parse_postfix(Numeric value);
-  Numeric parse_primary(const Token& t);   // t: the operand's first token, already read
-  Numeric parse_vector_literal(const Token& open);
-  Numeric parse_colour_keyword_form(const Token& keyword);
-  Numeric parse_function_call(const Token& name);
-  double parse_float();
-  double parse_float_full();             // a float at the full level (inside parentheses semantics)
-  Vec3 parse_vector();
-  Colour parse_colour();                 // Parse_Colour: optional colour keyword, forms, overrides
-  bool starts_colour(const Token& t) const;
-  std::string parse_string();
-  std::string parse_datetime();
-  // POV-Ray's Parse_UV_Vect: a float or a 2-D vector at the parameter level (superellipsoid, image_map repeat and
-  // offset); its body is in objects/implicit_shapes.cpp until the expression parser is a part (S7).
-  std::pair<double, double> parse_uv_vector(std::string_view context);
-  Numeric compare_strings();   // "a" < "b" and the other comparisons of two strings
-  static int strcmp_value(const std::string& a, const std::string& b);   // POV-Ray's strcmp(): a char difference
-  bool starts_string(const Token& t) const;
-  bool string_ahead();   // starts_string() of what comes next, made a Token only where needed
-  class ExpressionStart;
-  double to_float(const Numeric& n, const Token& at) const;
-  CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
-  // The expression ahead run as a compiled program (expression_programs.hpp), where one exists and the nesting
-  // limit has room for the levels it passes by; false, having read nothing, elsewhere.
-  bool run_expression_program(bool full, Numeric& out) { return programs_.run(full, out, reader_.nesting()); }
+  // ---- expressions (expressions/expression_parser.hpp) ----
+  // The ExpressionParser (expressions_, declared below after the parts it reads): the Interpreter's own statements
+  // call it as expressions_.parse_float(…), the parts through ParserPart.
 
   // ---- arrays (expressions/array_values.hpp) ----
   ArrayValues arrays_{*this, symbols_};
@@ -173,9 +140,6 @@ class Interpreter {
 
   // ---- textures (textures/texture_parser.hpp) ----
   TextureParser textures_{*this};
-  // POV-Ray's Allow_Float: a float expression if one follows, else `fallback` (object modifiers, finishes, maps).
-  double optional_float(double fallback);
-  static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
   const Texture& default_texture() const { return default_texture_; }
 
   // ---- spline values (expressions/spline_values.hpp) ----
@@ -235,11 +199,13 @@ class Interpreter {
   // setting): updated at #version, at global_settings and once more when the parse ends, so that functions
   // evaluated while rendering see the final one.
   bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
-  std::vector<std::uint32_t> rand_streams_;
   // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
   FunctionValues functions_{*this, options_, symbols_, textures_, splines_};
+  // ---- expressions (expressions/expression_parser.hpp): after options_ and the value parts it calls ----
+  ExpressionParser expressions_{*this,   options_, programs_,  directives_,
+                                arrays_, object_queries_, functions_, splines_};
 };
 
 }  // namespace povtrace::sdl

@@ -1,9 +1,9 @@
 // The base of the parser's components (docs/parser-split-plan.md §2): a part holds the Interpreter and reaches the
 // services it needs — the token reader, diagnostics, the expression parser, the statements' language settings —
 // through the protected one-line forwarders below, so that a part's bodies read as they did in the Interpreter
-// (`next()`, `expect(…)`, `fail_at(…)`, `parse_float()`, `NestingGuard guard(*this, keyword)`). The token reader,
-// diagnostics and expression parser are not components yet (steps S5, S3, S7): the forwarders go to the
-// Interpreter for now and will be retargeted at them without the parts' call sites changing.
+// (`next()`, `expect(…)`, `fail_at(…)`, `parse_float()`, `NestingGuard guard(*this, keyword)`). The token reader
+// and diagnostics are not components yet (steps S5, S3): the forwarders go to the Interpreter for now and will be
+// retargeted at them without the parts' call sites changing; the expression parser's go to the ExpressionParser.
 //
 // Only the services a part uses are forwarded; each is a plain inline call (no virtual call), defined in
 // parser_part_forwarders.hpp once the Interpreter is complete (interpreter.hpp includes it at its end).
@@ -28,6 +28,8 @@
 namespace povtrace::sdl {
 
 class Interpreter;
+class SymbolTable;
+class TokenStream;
 class ObjectExtents;
 class TokenReader;
 class ParserPart;
@@ -37,6 +39,9 @@ class ParserPart;
 template <class In> class PartNestingGuard {
  public:
   PartNestingGuard(ParserPart& part, const Token& at);
+  // One more level where nesting_room() has just said there is room (the expressions' plain '(').
+  using RoomChecked = typename In::NestingGuard::RoomChecked;
+  PartNestingGuard(ParserPart& part, RoomChecked);
   PartNestingGuard(const PartNestingGuard&) = delete;
   PartNestingGuard& operator=(const PartNestingGuard&) = delete;
 
@@ -93,7 +98,7 @@ class ParserPart {
   [[noreturn]] inline void fail_unsupported(const Token& t, std::string_view what) const;
   inline void warn(const SourceLoc& loc, const std::string& message) const;
 
-  // ---- expressions (ExpressionParser from S7) ----
+  // ---- expressions (the ExpressionParser, expressions/expression_parser.hpp) ----
   inline Numeric parse_expression();
   inline Numeric parse_additive();
   inline Numeric parse_additive_after(Numeric first_operand);
@@ -113,6 +118,14 @@ class ParserPart {
   inline std::uint64_t* function_budget();
   // A right-hand value: a number, string, array, object, function… (the ValueReader's from S11).
   inline std::optional<Value> try_parse_rvalue(const Token& first);
+  // The reader's nesting level and room, which only the expressions' fast paths and their programs ask (the
+  // Interpreter's NestingGuard count; the TokenReader's from S5).
+  inline bool nesting_room() const;
+  inline int nesting() const;
+  // The token stream and the symbols as the expressions' fast paths read them (kept tokens, NameIds): reached
+  // through the Interpreter, whose first member the stream is, so that they cost no reference of their own.
+  inline TokenStream& token_stream() const;
+  inline const SymbolTable& symbol_table() const;
 
   // ---- objects (ObjectParser from S10) ----
   inline std::optional<SceneItem> try_parse_item(const Token& t);
@@ -126,6 +139,8 @@ class ParserPart {
   // ---- features parsed but not rendered (unsupported.cpp) ----
   inline UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
   inline void skip_balanced(const Token& open);
+  // An identifier holding a value parsed but not supported (an OpaqueValue) used in an expression: refused by name.
+  inline void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
   static inline void taint(Unsupported& slot, const Unsupported& feature);   // keeps the first one found
 
   // ---- the scene's settings so far (SceneStatements from S11) ----

@@ -10,6 +10,8 @@ namespace povtrace::sdl {
 template <class In>
 PartNestingGuard<In>::PartNestingGuard(ParserPart& part, const Token& at) : guard_(part.in_.reader_, at) {}
 template <class In>
+PartNestingGuard<In>::PartNestingGuard(ParserPart& part, RoomChecked room) : guard_(part.in_.reader_, room) {}
+template <class In>
 PartRawOperatorLook<In>::PartRawOperatorLook(ParserPart& part, bool raw) : look_(part.in_.reader_, raw) {}
 
 inline Token ParserPart::next() { return in_.reader_.next(); }
@@ -47,27 +49,31 @@ inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) 
 }
 inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
 
-inline Numeric ParserPart::parse_expression() { return in_.parse_expression(); }
-inline Numeric ParserPart::parse_additive() { return in_.parse_additive(); }
+inline Numeric ParserPart::parse_expression() { return in_.expressions_.parse_expression(); }
+inline Numeric ParserPart::parse_additive() { return in_.expressions_.parse_additive(); }
 inline Numeric ParserPart::parse_additive_after(Numeric first_operand) {
-  return in_.parse_additive_after(std::move(first_operand));
+  return in_.expressions_.parse_additive_after(std::move(first_operand));
 }
-inline bool ParserPart::starts_string(const Token& t) const { return in_.starts_string(t); }
-inline double ParserPart::parse_float() { return in_.parse_float(); }
-inline double ParserPart::parse_float_full() { return in_.parse_float_full(); }
-inline Vec3 ParserPart::parse_vector() { return in_.parse_vector(); }
-inline Colour ParserPart::parse_colour() { return in_.parse_colour(); }
-inline bool ParserPart::starts_colour(const Token& t) const { return in_.starts_colour(t); }
-inline std::string ParserPart::parse_string() { return in_.parse_string(); }
-inline double ParserPart::optional_float(double fallback) { return in_.optional_float(fallback); }
+inline bool ParserPart::starts_string(const Token& t) const { return in_.expressions_.starts_string(t); }
+inline double ParserPart::parse_float() { return in_.expressions_.parse_float(); }
+inline double ParserPart::parse_float_full() { return in_.expressions_.parse_float_full(); }
+inline Vec3 ParserPart::parse_vector() { return in_.expressions_.parse_vector(); }
+inline Colour ParserPart::parse_colour() { return in_.expressions_.parse_colour(); }
+inline bool ParserPart::starts_colour(const Token& t) const { return in_.expressions_.starts_colour(t); }
+inline std::string ParserPart::parse_string() { return in_.expressions_.parse_string(); }
+inline double ParserPart::optional_float(double fallback) { return in_.expressions_.optional_float(fallback); }
 inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view context) {
-  return in_.parse_uv_vector(context);
+  return in_.expressions_.parse_uv_vector(context);
 }
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
   return in_.functions_.parse_definition(keyword);
 }
 inline std::uint64_t* ParserPart::function_budget() { return in_.functions_.budget(); }
 inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
+inline bool ParserPart::nesting_room() const { return in_.reader_.nesting_room(); }
+inline int ParserPart::nesting() const { return in_.reader_.nesting(); }
+inline TokenStream& ParserPart::token_stream() const { return in_.reader_.stream(); }
+inline const SymbolTable& ParserPart::symbol_table() const { return in_.symbols_; }
 
 inline std::optional<SceneItem> ParserPart::try_parse_item(const Token& t) { return in_.objects_.try_parse_item(t); }
 inline void ParserPart::parse_object_modifiers(Object& object) { in_.objects_.parse_object_modifiers(object); }
@@ -81,6 +87,10 @@ inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, con
   return in_.skip_unsupported(keyword, what);
 }
 inline void ParserPart::skip_balanced(const Token& open) { in_.skip_balanced(open); }
+inline void ParserPart::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
+                                              std::string_view what) const {
+  in_.refuse_if_unsupported(u, placed_at, what);
+}
 inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) { Interpreter::taint(slot, feature); }
 
 inline const Texture& ParserPart::default_texture() const { return in_.default_texture(); }

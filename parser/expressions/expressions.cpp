@@ -10,47 +10,49 @@
 
 #include "parser/expressions/int_cast.hpp"
 #include "parser/expressions/numeric_ops.hpp"
+#include "parser/expressions/expression_parser.hpp"
+#include "parser/expressions/expression_programs.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
 
 
-double Interpreter::to_float(const Numeric& n, const Token& at) const {
+double ExpressionParser::to_float(const Numeric& n, const Token& at) const {
   if (n.terms != 1) fail_at(at, "expected a float, found a " + value_type_name(Value(n)));
   return n.v[0];
 }
 
 // The first token of an expression, for its error messages: where the token ahead is plain it is made only if
 // an error needs it (peek() would make it, and push it back, for every expression).
-class Interpreter::ExpressionStart {
+class ExpressionParser::ExpressionStart {
  public:
-  explicit ExpressionStart(Interpreter& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
-    if (kept_) tokens_ = in.reader_.stream().frame().tokens;
+  explicit ExpressionStart(ExpressionParser& in) : in_(in), tokens_(nullptr), kept_(in.plain_ahead()) {
+    if (kept_) tokens_ = in.token_stream().frame().tokens;
     else token_ = in.peek();
   }
   Token token() const { return kept_ ? in_.make_token(*tokens_, *kept_) : token_; }
 
  private:
-  Interpreter& in_;
+  ExpressionParser& in_;
   const FileTokens* tokens_;
   const LexedToken* kept_;   // chunked storage: stays where it is while the expression is read
   Token token_;
 };
 
-double Interpreter::parse_float() {
+double ExpressionParser::parse_float() {
   const ExpressionStart start(*this);
   const Numeric n = parse_additive();
   return n.terms == 1 ? n.v[0] : to_float(n, start.token());
 }
 
-double Interpreter::parse_float_full() {
+double ExpressionParser::parse_float_full() {
   const ExpressionStart start(*this);
   const Numeric n = parse_expression();
   return n.terms == 1 ? n.v[0] : to_float(n, start.token());
 }
 
-Vec3 Interpreter::parse_vector() {
+Vec3 ExpressionParser::parse_vector() {
   const ExpressionStart start(*this);
   Numeric n = parse_additive();
   if (n.terms > 3 && !n.colour)
@@ -58,8 +60,36 @@ Vec3 Interpreter::parse_vector() {
   return promoted_to(n, 3).as_vec3();
 }
 
+// Parse_UV_Vect: a float or a 2-D vector at the parameter level.
+std::pair<double, double> ExpressionParser::parse_uv_vector(std::string_view context) {
+  const Token start = peek();
+  const Numeric n = parse_additive();
+  if (n.terms > 2)
+    fail_at(start, "expected a 2-D vector " + std::string(context) + ", found a " + value_type_name(Value(n)));
+  return {n.v[0], n.terms == 1 ? n.v[0] : n.v[1]};
+}
+
+// POV-Ray's Allow_Float: a float expression if one follows (`metallic`, `fresnel on`, `metallic 0.5`), else the
+// default. A keyword that is an item of the enclosing block (`metallic falloff 2`) is no float.
+double ExpressionParser::optional_float(double fallback) {
+  const Token n = peek();
+  static const std::string_view float_words[] = {"true", "false", "on", "off", "yes", "no", "pi", "version",
+                                                 "clock", "clock_delta", "clock_on"};
+  bool starts = n.kind == TokenKind::number || n.is("(") || n.is("-") || n.is("+") || n.is("!");
+  if (n.kind == TokenKind::identifier) {
+    if (!is_reserved_word(n.text)) {
+      const Value* v = lookup(n);
+      starts = v && std::holds_alternative<Numeric>(*v);
+    } else {
+      for (auto w : float_words) starts = starts || n.text == w;
+      starts = starts || is_float_function(n.text);
+    }
+  }
+  return starts ? parse_float() : fallback;
+}
+
 // ---- full level ----------------------------------------------------------------------------------------
-Numeric Interpreter::compare_strings() {
+Numeric ExpressionParser::compare_strings() {
   const std::string a = parse_string();
   Token op = next();
   static const std::string_view ops[] = {"<", "<=", "=", "!=", ">=", ">"};
@@ -71,7 +101,7 @@ Numeric Interpreter::compare_strings() {
   return Numeric::scalar(r ? 1.0 : 0.0);
 }
 
-int Interpreter::strcmp_value(const std::string& a, const std::string& b) {
+int ExpressionParser::strcmp_value(const std::string& a, const std::string& b) {
   // POV-Ray's UCS2_strcmp: the difference of the first differing characters (0 past the end).
   for (std::size_t i = 0;; ++i) {
     const int ca = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
@@ -82,7 +112,7 @@ int Interpreter::strcmp_value(const std::string& a, const std::string& b) {
 
 // datetime(F [, format]) (§5): F days since 2000-01-01 00:00 UTC, formatted with strftime in UTC; the default
 // format is "%Y-%m-%d %H:%M:%SZ".
-std::string Interpreter::parse_datetime() {
+std::string ExpressionParser::parse_datetime() {
   expect("(", " after 'datetime'");
   const double days = parse_float();
   accept(",");
@@ -106,14 +136,19 @@ std::string Interpreter::parse_datetime() {
   return std::string(buf, n);
 }
 
-Numeric Interpreter::parse_expression() {
+// One out-of-line call per expression: a find inline and a run out of line cost more (expression_programs.hpp).
+inline bool ExpressionParser::run_expression_program(bool full, Numeric& out) {
+  return programs_.run(full, out, nesting());
+}
+
+Numeric ExpressionParser::parse_expression() {
   if (Numeric n; run_expression_program(true, n)) return n;
   auto comparison = [this]() {
     // A string operand takes exactly one comparison with another string, in strcmp order (§5).
     if (string_ahead()) return compare_strings();
     Numeric left = parse_additive();
     while (true) {
-      const Ahead ahead = raw_ahead();
+      const auto ahead = raw_ahead();
       const Comparison c = comparison_of(ahead.kind, ahead.text);
       if (c == Comparison::none) return left;
       const Token op = next();
@@ -123,7 +158,7 @@ Numeric Interpreter::parse_expression() {
   };
   Numeric value = comparison();
   while (true) {   // & and | share one level (§5: (1 | 0 & 0) = 0)
-    if (const Ahead look = raw_ahead(); !look.is("&") && !look.is("|")) break;
+    if (const auto look = raw_ahead(); !look.is("&") && !look.is("|")) break;
     const Token op = next();
     const bool a = std::fabs(to_float(value, op)) > kEqualEpsilon;
     const bool b = std::fabs(to_float(comparison(), op)) > kEqualEpsilon;
@@ -143,18 +178,18 @@ Numeric Interpreter::parse_expression() {
 // ---- parameter level -------------------------------------------------------------------------------------
 // After a complete operand the look for an operator is raw (peek_raw): as in POV-Ray, a directive or macro call
 // there runs only once the value is finished — e.g. the next `#declare` after a value without ';' (§1 item 6).
-Numeric Interpreter::parse_additive() {
+Numeric ExpressionParser::parse_additive() {
   if (Numeric n; run_expression_program(false, n)) return n;
   return parse_additive_rest(parse_multiplicative());
 }
 
-Numeric Interpreter::parse_additive_after(Numeric first_operand) {
+Numeric ExpressionParser::parse_additive_after(Numeric first_operand) {
   return parse_additive_rest(parse_multiplicative_rest(parse_postfix(first_operand)));
 }
 
-Numeric Interpreter::parse_additive_rest(Numeric value) {
+Numeric ExpressionParser::parse_additive_rest(Numeric value) {
   while (true) {
-    const Ahead op = raw_ahead();   // no Token made: most operands are followed by no operator
+    const auto op = raw_ahead();   // no Token made: most operands are followed by no operator
     const bool plus = op.is("+");
     if (!plus && !op.is("-")) return value;
     skip_ahead();
@@ -163,11 +198,11 @@ Numeric Interpreter::parse_additive_rest(Numeric value) {
   }
 }
 
-Numeric Interpreter::parse_multiplicative() { return parse_multiplicative_rest(parse_unary()); }
+Numeric ExpressionParser::parse_multiplicative() { return parse_multiplicative_rest(parse_unary()); }
 
-Numeric Interpreter::parse_multiplicative_rest(Numeric value) {
+Numeric ExpressionParser::parse_multiplicative_rest(Numeric value) {
   while (true) {
-    const Ahead look = raw_ahead();
+    const auto look = raw_ahead();
     const bool times = look.is("*");
     if (!times && !look.is("/")) return value;
     if (times) {
@@ -185,11 +220,11 @@ Numeric Interpreter::parse_multiplicative_rest(Numeric value) {
   }
 }
 
-Numeric Interpreter::parse_unary() {
+Numeric ExpressionParser::parse_unary() {
   if (Numeric n; fast_operand(n)) return n;
   // A parenthesis from the kept tokens, as parse_primary takes it, without making its Token: what a macro body
   // such as `(A + B * 0.001)` starts with (its expression program cannot end at the body's #end).
-  if (!options_.max_tokens && nesting_room() && plain_symbol(plain_ahead(), '(')) {
+  if (!token_limit_ && nesting_room() && plain_symbol(plain_ahead(), '(')) {
     consume_plain();
     const NestingGuard guard(*this, NestingGuard::RoomChecked{});
     Numeric n = parse_expression();
@@ -214,7 +249,7 @@ Numeric Interpreter::parse_unary() {
 }
 
 // .x .y .z .u .v .t .red .green .blue .filter .transmit .gray (§5 item 7).
-Numeric Interpreter::parse_postfix(Numeric value) {
+Numeric ExpressionParser::parse_postfix(Numeric value) {
   while (true) {
     if (!raw_ahead().is(".")) return value;
     next();
@@ -236,7 +271,7 @@ Numeric Interpreter::parse_postfix(Numeric value) {
   }
 }
 
-Numeric Interpreter::parse_vector_literal(const Token& open) {
+Numeric ExpressionParser::parse_vector_literal(const Token& open) {
   Numeric n;
   n.terms = 0;
   do {
@@ -274,7 +309,7 @@ double srgb_to_working(double encoded, double gamma) {
 
 // rgb, rgbf, rgbt, rgbft: the expression after the keyword is a full expression promoted to the stated count
 // (§5 "Colours"), then placed in the five colour channels.
-Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
+Numeric ExpressionParser::parse_colour_keyword_form(const Token& keyword) {
   const bool srgb = keyword.text.starts_with("srgb");
   const std::string_view k = srgb ? keyword.text.substr(1) : keyword.text;   // srgbf → the rgbf layout
   Token start = peek();
@@ -287,7 +322,7 @@ Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
   Numeric c;
   c.terms = 5;
   c.colour = true;
-  const double gamma = scene_.settings.assumed_gamma.value_or(1.0);
+  const double gamma = assumed_gamma().value_or(1.0);
   for (int i = 0; i < 3; ++i) c.v[i] = srgb ? srgb_to_working(e.v[i], gamma) : e.v[i];
   if (k == "rgbf") c.v[3] = e.v[3];
   if (k == "rgbt") c.v[4] = e.v[3];
@@ -296,7 +331,7 @@ Numeric Interpreter::parse_colour_keyword_form(const Token& keyword) {
 }
 
 
-bool Interpreter::starts_colour(const Token& t) const {
+bool ExpressionParser::starts_colour(const Token& t) const {
   if (t.kind != TokenKind::identifier) return false;
   static const std::string_view words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "red", "green",
                                            "blue", "filter", "transmit", "srgb", "srgbf", "srgbt", "srgbft"};
@@ -309,7 +344,7 @@ bool Interpreter::starts_colour(const Token& t) const {
 
 // Parse_Colour: [color|colour] then rgb… form, colour id or expression, then overrides red/green/blue/
 // filter/transmit. A bare expression fills all five channels (`color 0.5` sets f and t too, §5).
-Colour Interpreter::parse_colour() {
+Colour ExpressionParser::parse_colour() {
   Numeric c;
   c.terms = 5;
   c.colour = true;
@@ -348,18 +383,18 @@ Colour Interpreter::parse_colour() {
   return c.stored().as_colour();
 }
 
-bool Interpreter::string_ahead() {
+bool ExpressionParser::string_ahead() {
   const LexedToken* k = plain_ahead();
   if (!k) return starts_string(peek());
   if (k->kind() != TokenKind::identifier) return k->kind() == TokenKind::string;
   // starts_string() of the token it would make, from its NameId (asked before every comparison operand).
   if (is_string_function(text_of(*k))) return true;
-  if (symbols_.is_reserved(k->payload)) return false;
-  const Value* v = symbols_.find(k->payload);
+  if (symbol_table().is_reserved(k->payload)) return false;
+  const Value* v = symbol_table().find(k->payload);
   return v && std::holds_alternative<std::string>(*v);
 }
 
-bool Interpreter::starts_string(const Token& t) const {
+bool ExpressionParser::starts_string(const Token& t) const {
   if (t.kind == TokenKind::string) return true;
   if (t.kind != TokenKind::identifier) return false;
   if (is_string_function(t.text)) return true;
@@ -384,7 +419,7 @@ std::string format_str(double value, int width, int precision) {
 }
 }  // namespace
 
-std::string Interpreter::parse_string() {
+std::string ExpressionParser::parse_string() {
   Token t = next();
   const NestingGuard guard(*this, t);   // concat(concat(…)), strupr(strlwr(…)) nest without an expression level
   if (t.kind == TokenKind::string) return string_value(t, file_of(t.loc), true);

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "parser/expressions/int_cast.hpp"
+#include "parser/expressions/expression_parser.hpp"
 #include "parser/interpreter.hpp"
 #include "runtime/noise.hpp"
 #include "parser/lexing/reserved_words.hpp"
@@ -102,7 +103,7 @@ std::string domain_error(std::string_view name, FloatDomain d) {
 }
 }  // namespace
 
-CallArguments Interpreter::parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args) {
+CallArguments ExpressionParser::parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args) {
   // Not expect(): its message would be built on every call of every built-in function. A plain '(' or ')' ahead is
   // taken where it stands, without making its Token (what next() would return, unchanged).
   if (plain_symbol(plain_ahead(), '(')) consume_plain();
@@ -130,7 +131,7 @@ CallArguments Interpreter::parse_call_arguments(const Token& name, std::size_t m
   return args;
 }
 
-bool Interpreter::is_float_function(std::string_view name) { return float_functions().count(name) > 0; }
+bool ExpressionParser::is_float_function(std::string_view name) { return float_functions().count(name) > 0; }
 
 const FloatFunction* find_float_function(std::string_view name) {
   const auto it = float_functions().find(name);
@@ -146,7 +147,7 @@ std::optional<double> quiet_float_call(const FloatFunction& f, const CallArgumen
   return value;
 }
 
-Numeric Interpreter::parse_function_call(const Token& name) {
+Numeric ExpressionParser::parse_function_call(const Token& name) {
   const std::string_view n = name.text;
   auto it = float_functions().find(n);
   if (it != float_functions().end()) {
@@ -260,7 +261,7 @@ Numeric Interpreter::parse_function_call(const Token& name) {
   fail_expected(name, "a number, vector or expression");
 }
 
-Numeric Interpreter::parse_primary(const Token& t) {
+Numeric ExpressionParser::parse_primary(const Token& t) {
   switch (t.kind) {
     case TokenKind::number: return Numeric::scalar(t.number);
     case TokenKind::symbol:
@@ -297,7 +298,7 @@ Numeric Interpreter::parse_primary(const Token& t) {
   if (w == "pi") return Numeric::scalar(M_PI);
   if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
   if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
-  if (w == "version") return Numeric::scalar(scene_.language_version / 100.0);
+  if (w == "version") return Numeric::scalar(language_version() / 100.0);
   if (w == "clock" || w == "clock_delta") return Numeric::scalar(0);
   if (w == "clock_on") return Numeric::scalar(0);
   // rgb… and color start Parse_Colour, so overrides apply here too (`rgb <1,0,0> filter 0.5`, §5).

@@ -14,15 +14,6 @@
 
 namespace povtrace::sdl {
 
-// Parse_UV_Vect: a float or a 2-D vector at the parameter level.
-std::pair<double, double> Interpreter::parse_uv_vector(std::string_view context) {
-  const Token start = peek();
-  const Numeric n = parse_additive();
-  if (n.terms > 2)
-    fail_at(start, "expected a 2-D vector " + std::string(context) + ", found a " + value_type_name(Value(n)));
-  return {n.v[0], n.terms == 1 ? n.v[0] : n.v[1]};
-}
-
 Object ObjectParser::parse_superellipsoid(const Token& keyword) {
   expect("{", " after 'superellipsoid'");
   if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
