@@ -4,8 +4,8 @@
 // (DirectiveRunner), and the statement parsers that fill the SceneDescription
 // (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
 //   lexing/token_stream.cpp      the TokenReader part (token_reader.hpp), the reader over TokenStream: next()
-//                                hands directives and macro calls to directives_; also fast_operand, the
-//                                expression parser's (S7)
+//                                hands directives and macro calls to directives_; also the ExpressionParser's
+//                                fast_operand, which inlines plain_ahead() and nesting_room() here
 //   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
 //   directives/macros.cpp        DirectiveRunner: macro calls
 //   expressions/expressions.cpp  float/vector/colour/string expressions, Parse_UV_Vect and Allow_Float, and
