@@ -9,9 +9,9 @@
 //   directives/directives.cpp    DirectiveRunner: #declare #local #undef #include #if… #while #for #macro #debug…
 //   directives/macros.cpp        DirectiveRunner: macro calls
 //   expressions/expressions.cpp  float/vector/colour/string expressions, Parse_UV_Vect and Allow_Float, and
-//   expressions/functions.cpp    the built-in functions: the ExpressionParser part (expression_parser.hpp); the
-//                                programs that replay expressions are the ExpressionPrograms part
-//                                (expression_programs.hpp)
+//   expressions/functions.cpp    the built-in functions: the ExpressionParser (expression_parser.hpp), the
+//                                Interpreter's empty base; the programs that replay expressions are the
+//                                ExpressionPrograms part (expression_programs.hpp)
 //   textures/                    textures, pigments, normals, image maps: the TextureParser part (texture_parser.hpp)
 //   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
 //                                ObjectParser part (object_parser.hpp)
@@ -57,7 +57,7 @@
 
 namespace povtrace::sdl {
 
-class Interpreter {
+class Interpreter : ExpressionParser {   // its empty base: the expression grammar (expression_parser.hpp)
  public:
   explicit Interpreter(const ParseOptions& options);
   SceneDescription run(std::unique_ptr<SourceFile> main_file);
@@ -69,8 +69,9 @@ class Interpreter {
   // The reader owns the token stream and the reader's state. It is the first data member: its address (and its
   // stream's) is the Interpreter's, so that the hot paths keep no second pointer around their calls into it
   // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The Interpreter's own code
-  // (expressions, scene statements) reads through the one-line forwarders below of the same names until S7 and S11
-  // move that code into parts, which reach the reader through ParserPart.
+  // (scene statements) reads through the one-line forwarders below of the same names until S11 moves that code
+  // into parts, which reach the reader through ParserPart. The ExpressionParser, an empty base, is at the same
+  // address, so the grammar reaches the reader with no load either.
   TokenReader reader_;
   using Frame = TokenStream::Frame;
   using Ahead = TokenReader::Ahead;
@@ -121,8 +122,11 @@ class Interpreter {
   void directive_version(const Token& at);
 
   // ---- expressions (expressions/expression_parser.hpp) ----
-  // The ExpressionParser (expressions_, declared below after the parts it reads): the Interpreter's own statements
-  // call it as expressions_.parse_float(…), the parts through ParserPart.
+  // The ExpressionParser is the Interpreter's empty base (so that it reaches the reader with no load): the
+  // Interpreter's own statements call it as expressions().parse_float(…), the parts through ParserPart. Its state,
+  // and the value parts it calls, are members below.
+  friend class ExpressionParser;
+  ExpressionParser& expressions() { return *this; }
 
   // ---- arrays (expressions/array_values.hpp) ----
   ArrayValues arrays_{*this, symbols_};
@@ -203,9 +207,11 @@ class Interpreter {
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
   FunctionValues functions_{*this, options_, symbols_, textures_, splines_};
-  // ---- expressions (expressions/expression_parser.hpp): after options_ and the value parts it calls ----
-  ExpressionParser expressions_{*this,   options_, programs_,  directives_,
-                                arrays_, object_queries_, functions_, splines_};
+  // ---- the ExpressionParser's state (expressions/expression_parser.hpp): after options_ ----
+  // ParseOptions::max_tokens set: next() counts every token, so the fast paths that read kept tokens are off. Read
+  // once (an options reference read per operand cost instructions on the parse benchmarks).
+  const bool token_limit_ = options_.max_tokens != 0;
+  std::vector<std::uint32_t> rand_streams_;   // seed() and rand(): POV-Ray's streams, by the number seed() returns
 };
 
 }  // namespace povtrace::sdl

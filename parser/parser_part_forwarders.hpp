@@ -2,6 +2,8 @@
 // the service today. Included at the end of interpreter.hpp, where the Interpreter is complete.
 #pragma once
 
+#include <type_traits>
+
 #include "parser/interpreter.hpp"
 #include "parser/parser_part.hpp"
 
@@ -49,21 +51,21 @@ inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) 
 }
 inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
 
-inline Numeric ParserPart::parse_expression() { return in_.expressions_.parse_expression(); }
-inline Numeric ParserPart::parse_additive() { return in_.expressions_.parse_additive(); }
+inline Numeric ParserPart::parse_expression() { return in_.expressions().parse_expression(); }
+inline Numeric ParserPart::parse_additive() { return in_.expressions().parse_additive(); }
 inline Numeric ParserPart::parse_additive_after(Numeric first_operand) {
-  return in_.expressions_.parse_additive_after(std::move(first_operand));
+  return in_.expressions().parse_additive_after(std::move(first_operand));
 }
-inline bool ParserPart::starts_string(const Token& t) const { return in_.expressions_.starts_string(t); }
-inline double ParserPart::parse_float() { return in_.expressions_.parse_float(); }
-inline double ParserPart::parse_float_full() { return in_.expressions_.parse_float_full(); }
-inline Vec3 ParserPart::parse_vector() { return in_.expressions_.parse_vector(); }
-inline Colour ParserPart::parse_colour() { return in_.expressions_.parse_colour(); }
-inline bool ParserPart::starts_colour(const Token& t) const { return in_.expressions_.starts_colour(t); }
-inline std::string ParserPart::parse_string() { return in_.expressions_.parse_string(); }
-inline double ParserPart::optional_float(double fallback) { return in_.expressions_.optional_float(fallback); }
+inline bool ParserPart::starts_string(const Token& t) const { return in_.expressions().starts_string(t); }
+inline double ParserPart::parse_float() { return in_.expressions().parse_float(); }
+inline double ParserPart::parse_float_full() { return in_.expressions().parse_float_full(); }
+inline Vec3 ParserPart::parse_vector() { return in_.expressions().parse_vector(); }
+inline Colour ParserPart::parse_colour() { return in_.expressions().parse_colour(); }
+inline bool ParserPart::starts_colour(const Token& t) const { return in_.expressions().starts_colour(t); }
+inline std::string ParserPart::parse_string() { return in_.expressions().parse_string(); }
+inline double ParserPart::optional_float(double fallback) { return in_.expressions().optional_float(fallback); }
 inline std::pair<double, double> ParserPart::parse_uv_vector(std::string_view context) {
-  return in_.expressions_.parse_uv_vector(context);
+  return in_.expressions().parse_uv_vector(context);
 }
 inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definition(const Token& keyword) {
   return in_.functions_.parse_definition(keyword);
@@ -104,5 +106,59 @@ inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_t
 inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
 inline void ParserPart::place_object(Object&& object, const SourceLoc& at) { in_.place_object(std::move(object), at); }
 inline void ParserPart::place_light(Light light, const SourceLoc& at) { in_.place_light(std::move(light), at); }
+
+// ---- the ExpressionParser's (expression_parser.hpp): the Interpreter is the class it is the base of ----
+// Empty, so that the base shares the Interpreter's address with the reader and in() costs nothing.
+static_assert(std::is_empty_v<ExpressionParser>, "the grammar's state is the Interpreter's");
+inline Interpreter& ExpressionParser::in() { return static_cast<Interpreter&>(*this); }
+inline const Interpreter& ExpressionParser::in() const { return static_cast<const Interpreter&>(*this); }
+inline TokenReader& ExpressionParser::reader() { return in().reader_; }
+inline const TokenReader& ExpressionParser::reader() const { return in().reader_; }
+inline ExpressionParser::NestingGuard::NestingGuard(ExpressionParser& part, const Token& at)
+    : TokenReader::NestingGuard(part.reader(), at) {}
+inline ExpressionParser::NestingGuard::NestingGuard(ExpressionParser& part, RoomChecked room)
+    : TokenReader::NestingGuard(part.reader(), room) {}
+
+inline Token ExpressionParser::next() { return reader().next(); }
+inline const Token& ExpressionParser::peek() { return reader().peek(); }
+inline void ExpressionParser::unget(const Token& t) { reader().unget(t); }
+inline Token ExpressionParser::expect(std::string_view symbol, std::string_view context) {
+  return reader().expect(symbol, context);
+}
+inline bool ExpressionParser::accept(std::string_view symbol) { return reader().accept(symbol); }
+inline const Value* ExpressionParser::lookup(const Token& t) const { return reader().lookup(t); }
+inline const Token& ExpressionParser::peek_raw() { return reader().peek_raw(); }
+inline bool ExpressionParser::reserved(const Token& t) const { return reader().reserved(t); }
+inline Token ExpressionParser::raw() { return reader().raw(); }
+inline const LexedToken* ExpressionParser::plain_ahead() { return reader().plain_ahead(); }
+inline void ExpressionParser::consume_plain() { reader().consume_plain(); }
+inline bool ExpressionParser::plain_symbol(const LexedToken* k, char c) const { return reader().plain_symbol(k, c); }
+inline void ExpressionParser::skip_expected(char symbol, std::string_view context) {
+  reader().skip_expected(symbol, context);
+}
+inline TokenReader::Ahead ExpressionParser::raw_ahead() { return reader().raw_ahead(); }
+inline void ExpressionParser::skip_ahead() { reader().skip_ahead(); }
+inline bool ExpressionParser::nesting_room() const { return reader().nesting_room(); }
+inline int ExpressionParser::nesting() const { return reader().nesting(); }
+inline TokenStream& ExpressionParser::token_stream() { return reader().stream(); }
+inline const TokenStream& ExpressionParser::token_stream() const { return reader().stream(); }
+inline const SymbolTable& ExpressionParser::symbol_table() const { return in().symbols_; }
+inline void ExpressionParser::fail(const SourceLoc& loc, const std::string& message) const { in().fail(loc, message); }
+inline void ExpressionParser::fail_at(const Token& t, const std::string& message) const { in().fail_at(t, message); }
+inline void ExpressionParser::fail_expected(const Token& t, std::string_view expected) const {
+  in().fail_expected(t, expected);
+}
+inline void ExpressionParser::fail_unsupported(const Token& t, std::string_view what) const {
+  in().fail_unsupported(t, what);
+}
+inline void ExpressionParser::warn(const SourceLoc& loc, const std::string& message) const { in().warn(loc, message); }
+inline void ExpressionParser::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
+                                                    std::string_view what) const {
+  in().refuse_if_unsupported(u, placed_at, what);
+}
+inline int ExpressionParser::language_version() const { return in().scene_.language_version; }
+inline const std::optional<double>& ExpressionParser::assumed_gamma() const {
+  return in().scene_.settings.assumed_gamma;
+}
 
 }  // namespace povtrace::sdl

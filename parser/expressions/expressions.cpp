@@ -138,7 +138,7 @@ std::string ExpressionParser::parse_datetime() {
 
 // One out-of-line call per expression: a find inline and a run out of line cost more (expression_programs.hpp).
 inline bool ExpressionParser::run_expression_program(bool full, Numeric& out) {
-  return programs_.run(full, out, nesting());
+  return in().programs_.run(full, out, nesting());
 }
 
 Numeric ExpressionParser::parse_expression() {
@@ -224,7 +224,7 @@ Numeric ExpressionParser::parse_unary() {
   if (Numeric n; fast_operand(n)) return n;
   // A parenthesis from the kept tokens, as parse_primary takes it, without making its Token: what a macro body
   // such as `(A + B * 0.001)` starts with (its expression program cannot end at the body's #end).
-  if (!token_limit_ && nesting_room() && plain_symbol(plain_ahead(), '(')) {
+  if (!in().token_limit_ && nesting_room() && plain_symbol(plain_ahead(), '(')) {
     consume_plain();
     const NestingGuard guard(*this, NestingGuard::RoomChecked{});
     Numeric n = parse_expression();

@@ -217,7 +217,7 @@ Numeric ExpressionParser::parse_function_call(const Token& name) {
     if (n == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
     if (n == "val") return Numeric::scalar(std::atof(s.c_str()));
     std::error_code ec;   // a name the file system rejects (too long, say) does not exist
-    return Numeric::scalar(directives_.find_include(s) || std::filesystem::exists(s, ec) ? 1.0 : 0.0);
+    return Numeric::scalar(in().directives_.find_include(s) || std::filesystem::exists(s, ec) ? 1.0 : 0.0);
   }
   if (n == "strcmp") {
     expect("(", "");
@@ -229,10 +229,10 @@ Numeric ExpressionParser::parse_function_call(const Token& name) {
   }
   if (n == "defined") {
     expect("(", " after 'defined'");
-    return Numeric::scalar(arrays_.parse_defined_identifier() ? 1.0 : 0.0);
+    return Numeric::scalar(in().arrays_.parse_defined_identifier() ? 1.0 : 0.0);
   }
-  if (n == "dimensions" || n == "dimension_size") return arrays_.parse_dimensions(name);
-  if (n == "inside" || n == "min_extent" || n == "max_extent") return object_queries_.parse_object_query(name);
+  if (n == "dimensions" || n == "dimension_size") return in().arrays_.parse_dimensions(name);
+  if (n == "inside" || n == "min_extent" || n == "max_extent") return in().object_queries_.parse_object_query(name);
   if (n == "now") {
     // Days since 2000-01-01 00:00 UTC (§5), with POV-Ray's microsecond resolution.
     const auto since_epoch = std::chrono::duration_cast<std::chrono::microseconds>(
@@ -240,20 +240,20 @@ Numeric ExpressionParser::parse_function_call(const Token& name) {
     constexpr double kY2kSeconds = 946684800.0;
     return Numeric::scalar((static_cast<double>(since_epoch.count()) * 1e-6 - kY2kSeconds) / 86400.0);
   }
-  if (n == "trace") return object_queries_.parse_trace(name);
+  if (n == "trace") return in().object_queries_.parse_trace(name);
   if (n == "seed") {
     Args a = parse_call_arguments(name, 1, 1);
-    rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));
-    return Numeric::scalar(static_cast<double>(rand_streams_.size() - 1));
+    in().rand_streams_.push_back(static_cast<std::uint32_t>(saturating_cast<long long>(a[0])));
+    return Numeric::scalar(static_cast<double>(in().rand_streams_.size() - 1));
   }
   if (n == "rand") {
     Args a = parse_call_arguments(name, 1, 1);
     // Checked before the conversion: a negative, huge or NaN stream number does not convert to an index.
-    if (!(a[0] >= 0 && a[0] < static_cast<double>(rand_streams_.size())))
+    if (!(a[0] >= 0 && a[0] < static_cast<double>(in().rand_streams_.size())))
       fail_at(name, "rand() of a stream that seed() did not create");
     const auto index = static_cast<std::size_t>(a[0]);
     // POV-Ray's generator (§5 "Random numbers"): a 32-bit LCG, result scaled to [0,1].
-    std::uint32_t& s = rand_streams_[index];
+    std::uint32_t& s = in().rand_streams_[index];
     s = s * 1812433253u + 12345u;
     return Numeric::scalar(static_cast<double>(s) / 4294967295.0);
   }
@@ -283,8 +283,8 @@ Numeric ExpressionParser::parse_primary(const Token& t) {
     // the name of that feature.
     if (const auto* opaque = std::get_if<Boxed<OpaqueValue>>(v))
       refuse_if_unsupported((*opaque)->feature, t.loc, "expression");
-    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return functions_.call(t, *fn);
-    if (const auto* s = std::get_if<Boxed<SplineValue>>(v)) return splines_.call(t, *s);
+    if (const auto* fn = std::get_if<std::shared_ptr<const FunctionValue>>(v)) return in().functions_.call(t, *fn);
+    if (const auto* s = std::get_if<Boxed<SplineValue>>(v)) return in().splines_.call(t, *s);
     if (!std::holds_alternative<Numeric>(*v))
       fail_at(t, "expected a number, vector or colour, found the " + value_type_name(*v) + " identifier '" +
                      std::string(w) + "'");

@@ -383,7 +383,7 @@ bool TokenReader::nesting_room() const {
 // the parse_declares benchmark.
 bool ExpressionParser::fast_operand(Numeric& out) {
   // The token limit is counted by next() alone; a component selector (.x) goes through parse_postfix.
-  if (token_limit_ || !nesting_room()) return false;
+  if (in().token_limit_ || !nesting_room()) return false;
   const LexedToken* k = plain_ahead();
   if (!k) return false;
   const Frame& f = token_stream().frame();

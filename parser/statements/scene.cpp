@@ -44,7 +44,7 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
 }
 
 void Interpreter::directive_version(const Token& at) {
-  const double v = expressions_.parse_float();
+  const double v = expressions().parse_float();
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
   if (peek_raw().is(";")) next();
@@ -102,20 +102,20 @@ void Interpreter::parse_global_settings(const Token& keyword) {
     if (t.is("}")) return;
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
     if (k == "assumed_gamma") {
-      scene_.settings.assumed_gamma = expressions_.parse_float();
+      scene_.settings.assumed_gamma = expressions().parse_float();
       if (*scene_.settings.assumed_gamma <= 0) fail_at(t, "assumed_gamma must be positive");
     } else if (k == "ambient_light") {
-      Colour c = expressions_.parse_colour();
+      Colour c = expressions().parse_colour();
       scene_.settings.ambient_light = Colour{c.r, c.g, c.b, 0, 0};
     } else if (k == "max_trace_level") {
       // Clamped to 1…256 (pipeline §4 "Recursion limits").
-      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(expressions_.parse_float()), 1, 256);
+      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(expressions().parse_float()), 1, 256);
     } else if (k == "adc_bailout") {
-      scene_.settings.adc_bailout = expressions_.parse_float();
+      scene_.settings.adc_bailout = expressions().parse_float();
     } else if (k == "noise_generator") {
       // 1 (original), 2 (range-corrected) or 3 (Perlin's); POV-Ray truncates the value and refuses the rest.
       const Token value_at = peek();
-      const double g = std::trunc(expressions_.parse_float());
+      const double g = std::trunc(expressions().parse_float());
       if (!(g >= 1 && g <= 3)) fail_at(value_at, "Value for noise_generator in global_settings must be 1, 2, or 3.");
       scene_.settings.noise_generator = static_cast<int>(g);
     } else if (k == "charset") {
@@ -127,14 +127,14 @@ void Interpreter::parse_global_settings(const Token& keyword) {
     } else if (k == "number_of_waves") {
       // POV-Ray truncates it and makes a value below 1 into 1 with a warning.
       const Token value_at = peek();
-      const double n = std::trunc(expressions_.parse_float());
+      const double n = std::trunc(expressions().parse_float());
       if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
       scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
       if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
     } else if (k == "hf_gray_16") {
       // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
       // option there).
-      expressions_.optional_float(1.0);
+      expressions().optional_float(1.0);
       warn(t.loc, "In POV-Ray 3.7 and later 'hf_gray_16' has to be specified as an option on the command-line; "
                   "the 'hf_gray_16' setting here is ignored (as in POV-Ray).");
     } else if (!k.empty() && is_reserved_word(k)) {
@@ -148,7 +148,7 @@ void Interpreter::parse_global_settings(const Token& keyword) {
 void Interpreter::parse_background(const Token& keyword) {
   (void)keyword;
   expect("{", " after 'background'");
-  scene_.background = expressions_.parse_colour();
+  scene_.background = expressions().parse_colour();
   expect("}", " after the background colour");
 }
 
@@ -207,17 +207,17 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   // and none of the forms below would take them.
   if (first.kind == TokenKind::number || first.kind == TokenKind::symbol) {
     unget(first);
-    return Value(expressions_.parse_additive().stored());
+    return Value(expressions().parse_additive().stored());
   }
   // ('lemon' is no reserved word in 3.7, yet try_parse_item takes it as a shape.)
   if (first.kind == TokenKind::identifier && (first.element || !reserved(first)) && first.text != "lemon")
     if (const Value* v = lookup(first); v && std::holds_alternative<Numeric>(*v)) {
       unget(first);
-      return Value(expressions_.parse_additive().stored());
+      return Value(expressions().parse_additive().stored());
     }
-  if (expressions_.starts_string(first)) {
+  if (expressions().starts_string(first)) {
     unget(first);
-    return expressions_.parse_string();
+    return expressions().parse_string();
   }
   const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
   if (k == "texture") {
@@ -259,7 +259,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
   if (auto item = objects_.try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
   // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
   // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions_.starts_colour(first)) {
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions().starts_colour(first)) {
     Token after = peek_raw();
     if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
       UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
@@ -270,7 +270,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
       return Value(OpaqueValue{std::string(k), feature});
     }
   }
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions_.starts_colour(first)) {
+  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions().starts_colour(first)) {
     static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
                                                    "no", "on", "off", "version", "clock", "clock_on",
                                                    "clock_delta", "now"};
@@ -280,7 +280,7 @@ std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
     if (!is_value_word && !after.is("(")) return std::nullopt;
   }
   unget(first);
-  return Value(expressions_.parse_additive().stored());
+  return Value(expressions().parse_additive().stored());
 }
 
 namespace {
