@@ -52,6 +52,8 @@
 #include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
+#include "parser/statements/unsupported_features.hpp"
+#include "parser/statements/value_reader.hpp"
 #include "parser/objects/object_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
@@ -153,28 +155,11 @@ class Interpreter {
   // scanners, which read the kept tokens straight from the source text.
   ObjectParser objects_{*this, textures_, camera_lights_, reader_.stream(), directives_};
 
-  // ---- features parsed but not rendered yet (unsupported.cpp) ----
-  UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
-  void skip_balanced(const Token& open);
-  bool continues_arguments(const Token& t);
-  void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
-  static void taint(Unsupported& slot, const Unsupported& feature) {
-    if (!slot && feature) slot = feature;   // the first one found is the one reported
-  }
-
   // ---- scene (scene.cpp) ----
   void parse_statement(const Token& t);
   void parse_global_settings(const Token& keyword);
   void parse_background(const Token& keyword);
   void parse_default(const Token& keyword);
-  std::optional<Value> try_parse_rvalue(const Token& first);
-  // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
-  // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
-  bool numeric_ahead();
-  // Runs the macro calls that start a value (`#declare S = Add(S, I);`) as next() would, so that a numeric body
-  // is then read by numeric_ahead()'s path: next() would hand its first token over as a Token, which keeps the
-  // expression from running as a compiled program.
-  void call_macros_ahead();
   void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
   void add_light(Light light);
@@ -186,7 +171,7 @@ class Interpreter {
   SymbolTable symbols_;
   // The directives and macro calls, with their control stack (directive_runner.hpp). Built here, where the directive
   // words it interns were interned before.
-  DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_};
+  DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_, values_};
   // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
   Diagnostics diagnostics_{options_, reader_.stream(), symbols_};
   ExpressionPrograms programs_{options_, reader_.stream(), symbols_, directives_};   // of replayed expressions (S6)
@@ -206,6 +191,11 @@ class Interpreter {
   // ---- expressions (expressions/expression_parser.hpp): after options_ and the value parts it calls ----
   ExpressionParser expressions_{*this,   options_, programs_,  directives_,
                                 arrays_, object_queries_, functions_, splines_};
+  // ---- right-hand values (statements/value_reader.hpp): after the parts it calls ----
+  ValueReader values_{*this,    options_,  directives_, expressions_, textures_,
+                      camera_lights_, objects_, arrays_,  splines_,    functions_};
+  // ---- features parsed but not rendered yet (statements/unsupported_features.hpp) ----
+  UnsupportedFeatures unsupported_{*this};
 };
 
 }  // namespace povtrace::sdl

@@ -35,6 +35,10 @@ inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
 }
 inline auto ParserPart::raw_ahead() { return in_.reader_.raw_ahead(); }
 inline void ParserPart::skip_ahead() { in_.reader_.skip_ahead(); }
+inline const LexedToken& ParserPart::lexed(FileTokens& tokens, std::size_t index) {
+  return in_.reader_.lexed(tokens, index);
+}
+inline std::string_view ParserPart::text_of(const LexedToken& k) const { return in_.reader_.text_of(k); }
 inline Token ParserPart::raw() { return in_.reader_.raw(); }
 inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.reader_.ahead_is(symbol); }
 inline Token ParserPart::pop_pushed_back() { return in_.reader_.pop_pushed_back(); }
@@ -69,7 +73,7 @@ inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definitio
   return in_.functions_.parse_definition(keyword);
 }
 inline std::uint64_t* ParserPart::function_budget() { return in_.functions_.budget(); }
-inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
+inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.values_.try_parse_rvalue(first); }
 inline bool ParserPart::nesting_room() const { return in_.reader_.nesting_room(); }
 inline int ParserPart::nesting() const { return in_.reader_.nesting(); }
 inline TokenStream& ParserPart::token_stream() const { return in_.reader_.stream(); }
@@ -84,14 +88,16 @@ inline const NotesPool& ParserPart::notes_pool() const { return in_.notes_pool_;
 inline ObjectExtents ParserPart::extents() const { return in_.extents(); }
 
 inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
-  return in_.skip_unsupported(keyword, what);
+  return in_.unsupported_.skip_unsupported(keyword, what);
 }
-inline void ParserPart::skip_balanced(const Token& open) { in_.skip_balanced(open); }
+inline void ParserPart::skip_balanced(const Token& open) { in_.unsupported_.skip_balanced(open); }
 inline void ParserPart::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
                                               std::string_view what) const {
-  in_.refuse_if_unsupported(u, placed_at, what);
+  in_.unsupported_.refuse_if_unsupported(u, placed_at, what);
 }
-inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) { Interpreter::taint(slot, feature); }
+inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) {
+  UnsupportedFeatures::taint(slot, feature);
+}
 
 inline const Texture& ParserPart::default_texture() const { return in_.default_texture(); }
 inline int ParserPart::language_version() const { return in_.scene_.language_version; }

@@ -8,8 +8,8 @@
 
 namespace povtrace::sdl {
 
-inline bool DirectiveRunner::numeric_ahead() { return in_.numeric_ahead(); }
-inline void DirectiveRunner::call_macros_ahead() { in_.call_macros_ahead(); }
+inline bool DirectiveRunner::numeric_ahead() { return values_.numeric_ahead(); }
+inline void DirectiveRunner::call_macros_ahead() { values_.call_macros_ahead(); }
 inline bool DirectiveRunner::parse_defined_identifier() { return in_.arrays_.parse_defined_identifier(); }
 inline auto DirectiveRunner::parse_element_reference(const Token& name) {
   return in_.arrays_.parse_element_reference(name);

@@ -57,7 +57,7 @@ void Interpreter::parse_statement(const Token& t) {
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "camera") {
     scene_.camera = camera_lights_.parse_camera(t);
-    refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
+    unsupported_.refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
     camera_seen_ = true;
     return;
   }
@@ -70,7 +70,7 @@ void Interpreter::parse_statement(const Token& t) {
   if (k == "sky_sphere") {
     if (scene_.sky_sphere) warn(t.loc, "only one sky_sphere is used: this one replaces the earlier one");
     SkySphere sky = textures_.parse_sky_sphere(t);
-    refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
+    unsupported_.refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
     scene_.sky_sphere = std::move(sky);
     return;
   }
@@ -171,116 +171,11 @@ void Interpreter::parse_default(const Token& keyword) {
     else if (t.is("normal")) {
       layer.normal =
           std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
-      refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
+      unsupported_.refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
     } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
     else fail_expected(t, "texture, pigment, normal or finish in #default { }");
   }
-}
-
-bool Interpreter::numeric_ahead() {
-  const LexedToken* k = plain_ahead();
-  if (!k) return false;
-  if (k->kind() == TokenKind::number || k->kind() == TokenKind::symbol) return true;
-  if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
-  const Value* v = symbols_.find(k->payload);
-  return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
-}
-
-void Interpreter::call_macros_ahead() {
-  // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
-  // limit (next() counts), no deprecated names (their warnings come from next()).
-  while (!reader_.stream().has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
-    const Frame& f = reader_.stream().frame();
-    const LexedToken& k = lexed(*f.tokens, f.index);
-    if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
-    const Value* v = symbols_.find(k.payload);
-    if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
-    const Token name = raw();   // what next() reads first, with the cancel check counted
-    const NestingGuard guard(*this, name);
-    directives_.call_macro(name);
-  }
-}
-
-std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
-  // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
-  // and none of the forms below would take them.
-  if (first.kind == TokenKind::number || first.kind == TokenKind::symbol) {
-    unget(first);
-    return Value(expressions_.parse_additive().stored());
-  }
-  // ('lemon' is no reserved word in 3.7, yet try_parse_item takes it as a shape.)
-  if (first.kind == TokenKind::identifier && (first.element || !reserved(first)) && first.text != "lemon")
-    if (const Value* v = lookup(first); v && std::holds_alternative<Numeric>(*v)) {
-      unget(first);
-      return Value(expressions_.parse_additive().stored());
-    }
-  if (expressions_.starts_string(first)) {
-    unget(first);
-    return expressions_.parse_string();
-  }
-  const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
-  if (k == "texture") {
-    auto tex = textures_.parse_texture_block(first);
-    // Several texture blocks in a row declare a layered texture.
-    while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
-      Token more = next();
-      auto top = textures_.parse_texture_block(more);
-      textures_.refuse_layering(more, tex.get(), top->patterned());
-      auto layered = std::make_shared<Texture>(*tex);
-      for (const auto& l : top->layers) layered->layers.push_back(l);
-      tex = std::move(layered);
-    }
-    return Value(tex);
-  }
-  if (k == "pigment") return Value(textures_.parse_pigment_block(first, default_texture().layers.back().pigment));
-  if (k == "finish") return Value(textures_.parse_finish_block(first, default_texture().layers.back().finish));
-  if (k == "normal") return Value(textures_.parse_normal_block(first, textures_.starting_normal(nullptr)));
-  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(textures_.parse_blend_map(first));
-  if (k == "texture_map") return Value(textures_.parse_texture_map(first, false));
-  if (k == "interior") return Value(textures_.parse_interior_block(first, Interior{}));
-  if (k == "camera") return Value(camera_lights_.parse_camera(first));
-  if (k == "sky_sphere") return Value(textures_.parse_sky_sphere(first));
-  if (k == "transform") return Value(textures_.parse_transform_block(first));
-  if (k == "material") {
-    Object holder;
-    objects_.parse_material_block(first, holder);
-    if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
-    return Value(MaterialValue{holder.texture, holder.interior});
-  }
-  if (k == "array") return arrays_.parse_array_declaration(first);
-  if (auto s = splines_.try_parse_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
-  if (auto f = functions_.try_parse_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
-  if (const Value* v = lookup(first);
-      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
-    if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
-    return *v;
-  }
-  if (auto item = objects_.try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
-  // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
-  // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions_.starts_colour(first)) {
-    Token after = peek_raw();
-    if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
-      UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
-      while (true) {   // raw look: a directive after the value runs only once it is stored (§1 item 6)
-        if (Token g = peek_raw(); !(g.is("{") || g.is("[") || g.is("("))) break;
-        skip_balanced(next());
-      }
-      return Value(OpaqueValue{std::string(k), feature});
-    }
-  }
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions_.starts_colour(first)) {
-    static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
-                                                   "no", "on", "off", "version", "clock", "clock_on",
-                                                   "clock_delta", "now"};
-    bool is_value_word = false;
-    for (auto w : value_words) is_value_word = is_value_word || k == w;
-    Token after = peek();
-    if (!is_value_word && !after.is("(")) return std::nullopt;
-  }
-  unget(first);
-  return Value(expressions_.parse_additive().stored());
 }
 
 namespace {
@@ -325,8 +220,8 @@ void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
 }  // namespace
 
 void Interpreter::place_light(Light light, const SourceLoc& at) {
-  refuse_if_unsupported(light.unsupported, at, "light_source");
-  for (Object& shown : light.looks_like) refuse_if_unsupported(first_unsupported(shown), at, "light_source");
+  unsupported_.refuse_if_unsupported(light.unsupported, at, "light_source");
+  for (Object& shown : light.looks_like) unsupported_.refuse_if_unsupported(first_unsupported(shown), at, "light_source");
   add_light(std::move(light));
 }
 
@@ -429,7 +324,7 @@ const Normal* first_untyped_normal(const Object& o) {
 }  // namespace
 
 void Interpreter::place_object(Object&& object, const SourceLoc& at) {
-  refuse_if_unsupported(first_unsupported(object), at, "object");
+  unsupported_.refuse_if_unsupported(first_unsupported(object), at, "object");
   objects_.remove_unnecessary_bounds(object);
   settle_deferred_texture_transforms(object, notes_pool_);
   post_process(object);
