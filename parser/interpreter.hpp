@@ -17,6 +17,9 @@
 //                                ObjectParser part (object_parser.hpp)
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
 //   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+//   statements/values.cpp        right-hand values (#declare's): the ValueReader part (value_reader.hpp)
+//   statements/unsupported.cpp   features parsed but not rendered: the UnsupportedFeatures part
+//                                (unsupported_features.hpp)
 //   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
 //   expressions/function_parser.cpp user-defined functions: the FunctionValues part (function_values.hpp)
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs

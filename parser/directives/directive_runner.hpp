@@ -24,8 +24,8 @@
 // fail_expected, warn, RawOperatorLook, parse_float(_full), parse_additive, parse_expression, parse_string, starts_string,
 // try_parse_rvalue, language_version). The services only it uses go through the private inline forwarders of
 // directive_services.hpp: to the ArrayValues part (parse_defined_identifier, parse_element_reference,
-// store_element, directive_declare_element), to the FunctionValues part (check_function_redeclaration) and to
-// the Interpreter (numeric_ahead, call_macros_ahead, parse_default, directive_version). The token stream's kept tokens and frames, the symbols, the diagnostics' fail(loc) and the options it
+// store_element, directive_declare_element), to the FunctionValues part (check_function_redeclaration), to the
+// ValueReader it holds (numeric_ahead, call_macros_ahead) and to the Interpreter (parse_default, directive_version). The token stream's kept tokens and frames, the symbols, the diagnostics' fail(loc) and the options it
 // holds directly.
 #pragma once
 
