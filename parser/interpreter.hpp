@@ -1,8 +1,9 @@
-// The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
-// owns the token reader (TokenReader, with the token stream: a stack of source frames), the diagnostics
-// (Diagnostics), the symbol tables, the directives with their control-flow stack and the macro calls
-// (DirectiveRunner), and the statement parsers that fill the SceneDescription
-// (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
+// The SDL interpreter, one parse's session: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md
+// §1), so this class owns every part of the parser (docs/parser-split-plan.md) — the token reader (TokenReader,
+// with the token stream: a stack of source frames), the diagnostics (Diagnostics), the symbol tables, the
+// directives with their control-flow stack and the macro calls (DirectiveRunner), the expression and value parts,
+// and the statement parsers that fill the SceneDescription (SceneStatements) — builds them in order and runs the
+// parse (run). The parts reach each other through ParserPart. They are implemented by area:
 //   lexing/token_stream.cpp      the TokenReader part (token_reader.hpp), the reader over TokenStream: next()
 //                                hands directives and macro calls to directives_; also the ExpressionParser's
 //                                fast_operand, which inlines plain_ahead() and nesting_room() here
@@ -16,7 +17,9 @@
 //   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
 //                                ObjectParser part (object_parser.hpp)
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
-//   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+//   statements/scene.cpp         top-level statements, global_settings, background, #default, #version's effect,
+//                                placing objects and lights, the parse's loop: the SceneStatements part
+//                                (scene_statements.hpp); also the entry points parse_scene and parse_scene_text
 //   statements/values.cpp        right-hand values (#declare's): the ValueReader part (value_reader.hpp)
 //   statements/unsupported.cpp   features parsed but not rendered: the UnsupportedFeatures part
 //                                (unsupported_features.hpp)
@@ -55,6 +58,7 @@
 #include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
+#include "parser/statements/scene_statements.hpp"
 #include "parser/statements/unsupported_features.hpp"
 #include "parser/statements/value_reader.hpp"
 #include "parser/objects/object_parser.hpp"
@@ -65,7 +69,7 @@ namespace povtrace::sdl {
 class Interpreter {
  public:
   explicit Interpreter(const ParseOptions& options);
-  SceneDescription run(std::unique_ptr<SourceFile> main_file);
+  SceneDescription run(std::unique_ptr<SourceFile> main_file) { return statements_.run(std::move(main_file)); }
   // `name` held in the parse's file names (the SceneDescription keeps them: its locations point to them).
   FileName file_name(std::string_view name) { return reader_.stream().file_name(name); }
 
@@ -73,61 +77,14 @@ class Interpreter {
   // ---- token reader (lexing/token_reader.hpp) ----
   // The reader owns the token stream and the reader's state. It is the first data member: its address (and its
   // stream's) is the Interpreter's, so that the hot paths keep no second pointer around their calls into it
-  // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The Interpreter's own code
-  // (expressions, scene statements) reads through the one-line forwarders below of the same names until S7 and S11
-  // move that code into parts, which reach the reader through ParserPart.
+  // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The parts reach it through
+  // ParserPart.
   TokenReader reader_;
-  using Frame = TokenStream::Frame;
-  using Ahead = TokenReader::Ahead;
-  Token raw() { return reader_.raw(); }
-  const LexedToken& lexed(FileTokens& tokens, std::size_t index) { return reader_.lexed(tokens, index); }
-  Token make_token(const FileTokens& tokens, const LexedToken& t) const { return reader_.make_token(tokens, t); }
-  bool reserved(const Token& t) const { return reader_.reserved(t); }
-  Token next() { return reader_.next(); }
-  const Token& peek() { return reader_.peek(); }
-  const Token& peek_raw() { return reader_.peek_raw(); }
-  Ahead raw_ahead() { return reader_.raw_ahead(); }
-  const LexedToken* plain_ahead() { return reader_.plain_ahead(); }
-  void consume_plain() { reader_.consume_plain(); }
-  void skip_ahead() { reader_.skip_ahead(); }
-  std::string_view text_of(const LexedToken& k) const { return reader_.text_of(k); }
-  bool plain_symbol(const LexedToken* k, char c) const { return reader_.plain_symbol(k, c); }
-  void skip_expected(char symbol, std::string_view context) { reader_.skip_expected(symbol, context); }
-  bool nesting_room() const { return reader_.nesting_room(); }
-  void unget(const Token& t) { reader_.unget(t); }
-  Token expect(std::string_view symbol, std::string_view context) { return reader_.expect(symbol, context); }
-  bool accept(std::string_view symbol) { return reader_.accept(symbol); }
-  const Value* lookup(const Token& t) const { return reader_.lookup(t); }
-  // The reader's NestingGuard taken by the Interpreter's own code (expressions, scene).
-  struct NestingGuard : TokenReader::NestingGuard {
-    using RoomChecked = TokenReader::NestingGuard::RoomChecked;
-    NestingGuard(Interpreter& in, const Token& at) : TokenReader::NestingGuard(in.reader_, at) {}
-    NestingGuard(Interpreter& in, RoomChecked room) : TokenReader::NestingGuard(in.reader_, room) {}
-  };
-  [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
-  [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
-  // The scene's noise generator in force now (POV-Ray's: 1 before #version 3.5, 2 from then on, unless
-  // global_settings set it), which functions evaluated during the parse read.
-  int noise_generator() const {
-    return scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
-  }
-  [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
-  [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
-  void warn(const SourceLoc& loc, const std::string& message) const;
-  std::string reached_from() const { return reader_.stream().reached_from(); }
-  std::string describe(const Token& t) const;
-  const SourceFile& file_of(const SourceLoc& loc) const { return reader_.stream().file_of(loc); }
-  bool is_macro_call(const Token& t) const;
 
   // ---- directives (directive_runner.hpp) ----
   // The directives and macro calls are the DirectiveRunner's (directives_); it reads through the services below
-  // (directive_services.hpp forwards to them). #version's effect is the scene's: it stays here (scene.cpp).
+  // (directive_services.hpp forwards to them). #version's effect and #default are the SceneStatements'.
   friend class DirectiveRunner;
-  void directive_version(const Token& at);
-
-  // ---- expressions (expressions/expression_parser.hpp) ----
-  // The ExpressionParser (expressions_, declared below after the parts it reads): the Interpreter's own statements
-  // call it as expressions_.parse_float(…), the parts through ParserPart.
 
   // ---- arrays (expressions/array_values.hpp) ----
   ArrayValues arrays_{*this, symbols_};
@@ -135,7 +92,7 @@ class Interpreter {
   // ---- bounding boxes (extents/object_extents.hpp) ----
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
   ObjectExtents extents() const {
-    return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
+    return ObjectExtents(options_.object_geometry.get(), statements_.noise_generator(), notes_pool_);
   }
 
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
@@ -145,7 +102,6 @@ class Interpreter {
 
   // ---- textures (textures/texture_parser.hpp) ----
   TextureParser textures_{*this};
-  const Texture& default_texture() const { return default_texture_; }
 
   // ---- spline values (expressions/spline_values.hpp) ----
   SplineValues splines_{*this};
@@ -158,35 +114,18 @@ class Interpreter {
   // scanners, which read the kept tokens straight from the source text.
   ObjectParser objects_{*this, textures_, camera_lights_, reader_.stream(), directives_};
 
-  // ---- scene (scene.cpp) ----
-  void parse_statement(const Token& t);
-  void parse_global_settings(const Token& keyword);
-  void parse_background(const Token& keyword);
-  void parse_default(const Token& keyword);
-  void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
-  void place_light(Light light, const SourceLoc& at);
-  void add_light(Light light);
-  void post_process(Object& object);
-  void placed(Object& object);   // the last step before the object joins scene_.objects
-
   const ParseOptions& options_;
   NotesPool notes_pool_;   // where the objects' notes are made (ObjectNotes); before the members holding objects
   SymbolTable symbols_;
   // The directives and macro calls, with their control stack (directive_runner.hpp). Built here, where the directive
   // words it interns were interned before.
   DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_, values_};
-  // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
+  // ParserPart's fail(), fail_at(), fail_expected(), fail_unsupported() and warn() go to it.
   Diagnostics diagnostics_{options_, reader_.stream(), symbols_};
   ExpressionPrograms programs_{options_, reader_.stream(), symbols_, directives_};   // of replayed expressions (S6)
-  SceneDescription scene_;
-  Texture default_texture_;
-  std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
-  bool camera_seen_ = false;
-  bool statement_seen_ = false;
-  // The scene's noise generator as functions see it when they run (POV-Ray's f_noise3d reads the scene's current
-  // setting): updated at #version, at global_settings and once more when the parse ends, so that functions
-  // evaluated while rendering see the final one.
-  bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
+  // ---- the scene statements and the scene they fill (statements/scene_statements.hpp) ----
+  SceneStatements statements_{*this,        options_,  symbols_, reader_,       directives_, expressions_,
+                              textures_, camera_lights_, objects_, unsupported_};
   // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----

@@ -43,15 +43,15 @@ inline Token ParserPart::raw() { return in_.reader_.raw(); }
 inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.reader_.ahead_is(symbol); }
 inline Token ParserPart::pop_pushed_back() { return in_.reader_.pop_pushed_back(); }
 
-inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
-inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
+inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.diagnostics_.fail(loc, message); }
+inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.diagnostics_.fail_at(t, message); }
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
-  in_.fail_expected(t, expected);
+  in_.diagnostics_.fail_expected(t, expected);
 }
 inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) const {
-  in_.fail_unsupported(t, what);
+  in_.diagnostics_.fail_unsupported(t, what);
 }
-inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
+inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.diagnostics_.warn(loc, message); }
 
 inline Numeric ParserPart::parse_expression() { return in_.expressions_.parse_expression(); }
 inline Numeric ParserPart::parse_additive() { return in_.expressions_.parse_additive(); }
@@ -99,16 +99,20 @@ inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) {
   UnsupportedFeatures::taint(slot, feature);
 }
 
-inline const Texture& ParserPart::default_texture() const { return in_.default_texture(); }
-inline int ParserPart::language_version() const { return in_.scene_.language_version; }
-inline bool ParserPart::version_directive_seen() const { return in_.version_directive_seen_; }
-inline const std::optional<double>& ParserPart::assumed_gamma() const { return in_.scene_.settings.assumed_gamma; }
+inline const Texture& ParserPart::default_texture() const { return in_.statements_.default_texture(); }
+inline int ParserPart::language_version() const { return in_.statements_.language_version(); }
+inline bool ParserPart::version_directive_seen() const { return in_.statements_.version_directive_seen(); }
+inline const std::optional<double>& ParserPart::assumed_gamma() const { return in_.statements_.assumed_gamma(); }
 inline const std::vector<std::filesystem::path>& ParserPart::library_paths() const {
   return in_.options_.library_paths;
 }
 inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
-inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
-inline void ParserPart::place_object(Object&& object, const SourceLoc& at) { in_.place_object(std::move(object), at); }
-inline void ParserPart::place_light(Light light, const SourceLoc& at) { in_.place_light(std::move(light), at); }
+inline int ParserPart::noise_generator() const { return in_.statements_.noise_generator(); }
+inline void ParserPart::place_object(Object&& object, const SourceLoc& at) {
+  in_.statements_.place_object(std::move(object), at);
+}
+inline void ParserPart::place_light(Light light, const SourceLoc& at) {
+  in_.statements_.place_light(std::move(light), at);
+}
 
 }  // namespace povtrace::sdl

@@ -24,7 +24,7 @@ inline void DirectiveRunner::directive_declare_element(const Token& name, bool l
 inline void DirectiveRunner::check_function_redeclaration(const Token& name, bool local, const Value& value) {
   in_.functions_.check_redeclaration(name, local, value);
 }
-inline void DirectiveRunner::parse_default(const Token& keyword) { in_.parse_default(keyword); }
-inline void DirectiveRunner::directive_version(const Token& at) { in_.directive_version(at); }
+inline void DirectiveRunner::parse_default(const Token& keyword) { in_.statements_.parse_default(keyword); }
+inline void DirectiveRunner::directive_version(const Token& at) { in_.statements_.directive_version(at); }
 
 }  // namespace povtrace::sdl

@@ -6,16 +6,17 @@
 #include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
+#include "parser/statements/scene_statements.hpp"
 #include "parser/objects/object_transform.hpp"
 
 namespace povtrace::sdl {
 
 Interpreter::Interpreter(const ParseOptions& options)
-    : reader_(options, symbols_, directives_, arrays_, diagnostics_, directives_), options_(options) {
-  default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
-}
+    : reader_(options, symbols_, directives_, arrays_, diagnostics_, directives_), options_(options) {}
 
-SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
+std::string SceneStatements::reached_from() const { return reader_.stream().reached_from(); }
+
+SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
   reader_.stream().open_main(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
@@ -43,7 +44,7 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
   return std::move(scene_);
 }
 
-void Interpreter::directive_version(const Token& at) {
+void SceneStatements::directive_version(const Token& at) {
   const double v = expressions_.parse_float();
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
@@ -52,7 +53,7 @@ void Interpreter::directive_version(const Token& at) {
   (void)at;
 }
 
-void Interpreter::parse_statement(const Token& t) {
+void SceneStatements::parse_statement(const Token& t) {
   statement_seen_ = true;
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "camera") {
@@ -94,7 +95,7 @@ void Interpreter::parse_statement(const Token& t) {
   fail_expected(t, "an object, light_source, camera, background, global_settings or a directive");
 }
 
-void Interpreter::parse_global_settings(const Token& keyword) {
+void SceneStatements::parse_global_settings(const Token& keyword) {
   (void)keyword;
   expect("{", " after 'global_settings'");
   while (true) {
@@ -145,7 +146,7 @@ void Interpreter::parse_global_settings(const Token& keyword) {
   }
 }
 
-void Interpreter::parse_background(const Token& keyword) {
+void SceneStatements::parse_background(const Token& keyword) {
   (void)keyword;
   expect("{", " after 'background'");
   scene_.background = expressions_.parse_colour();
@@ -153,7 +154,7 @@ void Interpreter::parse_background(const Token& keyword) {
 }
 
 // #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
-void Interpreter::parse_default(const Token& keyword) {
+void SceneStatements::parse_default(const Token& keyword) {
   (void)keyword;
   expect("{", " after #default");
   while (true) {
@@ -209,7 +210,7 @@ Unsupported first_unsupported(const Object& o) {
 
 // A placed object is edited no more: transforms deferred for textures that no longer ignore them (edited since)
 // are applied; those deferred for textures that ignore them go with the notes when the object is placed
-// (Interpreter::placed). Light sources' looks_like objects are settled when the lights are added.
+// (SceneStatements::placed). Light sources' looks_like objects are settled when the lights are added.
 void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
   if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o, pool);
   if (auto* csg = std::get_if<Csg>(&o.shape))
@@ -219,16 +220,16 @@ void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
 }
 }  // namespace
 
-void Interpreter::place_light(Light light, const SourceLoc& at) {
+void SceneStatements::place_light(Light light, const SourceLoc& at) {
   unsupported_.refuse_if_unsupported(light.unsupported, at, "light_source");
   for (Object& shown : light.looks_like) unsupported_.refuse_if_unsupported(first_unsupported(shown), at, "light_source");
   add_light(std::move(light));
 }
 
 // A light joins the scene's lights; its looks_like object joins the objects.
-void Interpreter::add_light(Light light) {
+void SceneStatements::add_light(Light light) {
   for (Object& shown : light.looks_like) {
-    settle_deferred_texture_transforms(shown, notes_pool_);
+    settle_deferred_texture_transforms(shown, notes_pool());
     post_process(shown);
     set_placed_boxes(shown, extents());
     placed(shown);
@@ -240,7 +241,7 @@ void Interpreter::add_light(Light light) {
 
 // An object joining the scene's objects is edited, moved and queried no more and its box is made: the parser's notes
 // on it go (ParseOptions::placing sees them last).
-void Interpreter::placed(Object& object) {
+void SceneStatements::placed(Object& object) {
   if (options_.placing) options_.placing(object);
   clear_notes(object);
 }
@@ -249,7 +250,7 @@ void Interpreter::placed(Object& object) {
 // texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow,
 // no_image, no_reflection and no_radiosity are forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
 // current #default texture.
-void Interpreter::post_process(Object& object) {
+void SceneStatements::post_process(Object& object) {
   // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
   // layer's `ior` when given, and its `refraction` always.
   if (object.texture && !object.texture->layers.empty()) {
@@ -323,10 +324,10 @@ const Normal* first_untyped_normal(const Object& o) {
 }
 }  // namespace
 
-void Interpreter::place_object(Object&& object, const SourceLoc& at) {
+void SceneStatements::place_object(Object&& object, const SourceLoc& at) {
   unsupported_.refuse_if_unsupported(first_unsupported(object), at, "object");
   objects_.remove_unnecessary_bounds(object);
-  settle_deferred_texture_transforms(object, notes_pool_);
+  settle_deferred_texture_transforms(object, notes_pool());
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)
