@@ -1,8 +1,9 @@
-// The SDL interpreter: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md §1), so this class
-// owns the token reader (TokenReader, with the token stream: a stack of source frames), the diagnostics
-// (Diagnostics), the symbol tables, the directives with their control-flow stack and the macro calls
-// (DirectiveRunner), and the statement parsers that fill the SceneDescription
-// (docs/parser-split-plan.md splits it further). Its member functions are implemented by area:
+// The SDL interpreter, one parse's session: POV-Ray parses and evaluates in one pass (povray-sdl-and-geometry.md
+// §1), so this class owns every part of the parser (docs/parser-split-plan.md) — the token reader (TokenReader,
+// with the token stream: a stack of source frames), the diagnostics (Diagnostics), the symbol tables, the
+// directives with their control-flow stack and the macro calls (DirectiveRunner), the expression and value parts,
+// and the statement parsers that fill the SceneDescription (SceneStatements) — builds them in order and runs the
+// parse (run). The parts reach each other through ParserPart. They are implemented by area:
 //   lexing/token_stream.cpp      the TokenReader part (token_reader.hpp), the reader over TokenStream: next()
 //                                hands directives and macro calls to directives_; also the ExpressionParser's
 //                                fast_operand, which inlines plain_ahead() and nesting_room() here
@@ -16,7 +17,12 @@
 //   objects/                     shapes, CSG, meshes, object modifiers and transforms, text and its fonts: the
 //                                ObjectParser part (object_parser.hpp)
 //   statements/camera_lights.cpp camera and light sources: the CameraLightParser part (camera_light_parser.hpp)
-//   statements/scene.cpp         top-level statements, global_settings, background, post-processing, entry points
+//   statements/scene.cpp         top-level statements, global_settings, background, #default, #version's effect,
+//                                placing objects and lights, the parse's loop: the SceneStatements part
+//                                (scene_statements.hpp); also the entry points parse_scene and parse_scene_text
+//   statements/values.cpp        right-hand values (#declare's): the ValueReader part (value_reader.hpp)
+//   statements/unsupported.cpp   features parsed but not rendered: the UnsupportedFeatures part
+//                                (unsupported_features.hpp)
 //   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
 //   expressions/function_parser.cpp user-defined functions: the FunctionValues part (function_values.hpp)
 //   directives/file_io.cpp       DirectiveRunner: #fopen #read #write #fclose, confined to the scene's and working dirs
@@ -52,6 +58,9 @@
 #include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
+#include "parser/statements/scene_statements.hpp"
+#include "parser/statements/unsupported_features.hpp"
+#include "parser/statements/value_reader.hpp"
 #include "parser/objects/object_parser.hpp"
 #include "parser/textures/texture_parser.hpp"
 
@@ -60,7 +69,7 @@ namespace povtrace::sdl {
 class Interpreter : ExpressionParser {   // its empty base: the expression grammar (expression_parser.hpp)
  public:
   explicit Interpreter(const ParseOptions& options);
-  SceneDescription run(std::unique_ptr<SourceFile> main_file);
+  SceneDescription run(std::unique_ptr<SourceFile> main_file) { return statements_.run(std::move(main_file)); }
   // `name` held in the parse's file names (the SceneDescription keeps them: its locations point to them).
   FileName file_name(std::string_view name) { return reader_.stream().file_name(name); }
 
@@ -68,63 +77,19 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
   // ---- token reader (lexing/token_reader.hpp) ----
   // The reader owns the token stream and the reader's state. It is the first data member: its address (and its
   // stream's) is the Interpreter's, so that the hot paths keep no second pointer around their calls into it
-  // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The Interpreter's own code
-  // (scene statements) reads through the one-line forwarders below of the same names until S11 moves that code
-  // into parts, which reach the reader through ParserPart. The ExpressionParser, an empty base, is at the same
-  // address, so the grammar reaches the reader with no load either.
+  // (measured: 0.4-1.2% more instructions in the parse benchmarks otherwise). The parts reach it through
+  // ParserPart. The ExpressionParser, an empty base, is at the same address, so the grammar reaches the reader
+  // with no load either.
   TokenReader reader_;
-  using Frame = TokenStream::Frame;
-  using Ahead = TokenReader::Ahead;
-  Token raw() { return reader_.raw(); }
-  const LexedToken& lexed(FileTokens& tokens, std::size_t index) { return reader_.lexed(tokens, index); }
-  Token make_token(const FileTokens& tokens, const LexedToken& t) const { return reader_.make_token(tokens, t); }
-  bool reserved(const Token& t) const { return reader_.reserved(t); }
-  Token next() { return reader_.next(); }
-  const Token& peek() { return reader_.peek(); }
-  const Token& peek_raw() { return reader_.peek_raw(); }
-  Ahead raw_ahead() { return reader_.raw_ahead(); }
-  const LexedToken* plain_ahead() { return reader_.plain_ahead(); }
-  void consume_plain() { reader_.consume_plain(); }
-  void skip_ahead() { reader_.skip_ahead(); }
-  std::string_view text_of(const LexedToken& k) const { return reader_.text_of(k); }
-  bool plain_symbol(const LexedToken* k, char c) const { return reader_.plain_symbol(k, c); }
-  void skip_expected(char symbol, std::string_view context) { reader_.skip_expected(symbol, context); }
-  bool nesting_room() const { return reader_.nesting_room(); }
-  void unget(const Token& t) { reader_.unget(t); }
-  Token expect(std::string_view symbol, std::string_view context) { return reader_.expect(symbol, context); }
-  bool accept(std::string_view symbol) { return reader_.accept(symbol); }
-  const Value* lookup(const Token& t) const { return reader_.lookup(t); }
-  // The reader's NestingGuard taken by the Interpreter's own code (expressions, scene).
-  struct NestingGuard : TokenReader::NestingGuard {
-    using RoomChecked = TokenReader::NestingGuard::RoomChecked;
-    NestingGuard(Interpreter& in, const Token& at) : TokenReader::NestingGuard(in.reader_, at) {}
-    NestingGuard(Interpreter& in, RoomChecked room) : TokenReader::NestingGuard(in.reader_, room) {}
-  };
-  [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
-  [[noreturn]] void fail_at(const Token& t, const std::string& message) const;
-  // The scene's noise generator in force now (POV-Ray's: 1 before #version 3.5, 2 from then on, unless
-  // global_settings set it), which functions evaluated during the parse read.
-  int noise_generator() const {
-    return scene_.settings.noise_generator.value_or(scene_.language_version < 350 ? 1 : 2);
-  }
-  [[noreturn]] void fail_expected(const Token& t, std::string_view expected) const;
-  [[noreturn]] void fail_unsupported(const Token& t, std::string_view what) const;
-  void warn(const SourceLoc& loc, const std::string& message) const;
-  std::string reached_from() const { return reader_.stream().reached_from(); }
-  std::string describe(const Token& t) const;
-  const SourceFile& file_of(const SourceLoc& loc) const { return reader_.stream().file_of(loc); }
-  bool is_macro_call(const Token& t) const;
 
   // ---- directives (directive_runner.hpp) ----
   // The directives and macro calls are the DirectiveRunner's (directives_); it reads through the services below
-  // (directive_services.hpp forwards to them). #version's effect is the scene's: it stays here (scene.cpp).
+  // (directive_services.hpp forwards to them). #version's effect and #default are the SceneStatements'.
   friend class DirectiveRunner;
-  void directive_version(const Token& at);
-
   // ---- expressions (expressions/expression_parser.hpp) ----
-  // The ExpressionParser is the Interpreter's empty base (so that it reaches the reader with no load): the
-  // Interpreter's own statements call it as expressions().parse_float(…), the parts through ParserPart. Its state,
-  // and the value parts it calls, are members below.
+  // The ExpressionParser is the Interpreter's empty base (so that it reaches the reader with no load): the parts
+  // call it through ParserPart or hold it as expressions(). Its state, and the value parts it calls, are members
+  // below.
   friend class ExpressionParser;
   ExpressionParser& expressions() { return *this; }
 
@@ -134,7 +99,7 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
   // ---- bounding boxes (extents/object_extents.hpp) ----
   // POV-Ray's bounding boxes of objects as they are made and modified (object_extents.cpp).
   ObjectExtents extents() const {
-    return ObjectExtents(options_.object_geometry.get(), noise_generator(), notes_pool_);
+    return ObjectExtents(options_.object_geometry.get(), statements_.noise_generator(), notes_pool_);
   }
 
   // ---- the parser's components (parser_part.hpp): they reach the services above through ParserPart ----
@@ -144,7 +109,6 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
 
   // ---- textures (textures/texture_parser.hpp) ----
   TextureParser textures_{*this};
-  const Texture& default_texture() const { return default_texture_; }
 
   // ---- spline values (expressions/spline_values.hpp) ----
   SplineValues splines_{*this};
@@ -157,52 +121,18 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
   // scanners, which read the kept tokens straight from the source text.
   ObjectParser objects_{*this, textures_, camera_lights_, reader_.stream(), directives_};
 
-  // ---- features parsed but not rendered yet (unsupported.cpp) ----
-  UnsupportedFeature skip_unsupported(const Token& keyword, const std::string& what);
-  void skip_balanced(const Token& open);
-  bool continues_arguments(const Token& t);
-  void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
-  static void taint(Unsupported& slot, const Unsupported& feature) {
-    if (!slot && feature) slot = feature;   // the first one found is the one reported
-  }
-
-  // ---- scene (scene.cpp) ----
-  void parse_statement(const Token& t);
-  void parse_global_settings(const Token& keyword);
-  void parse_background(const Token& keyword);
-  void parse_default(const Token& keyword);
-  std::optional<Value> try_parse_rvalue(const Token& first);
-  // Whether a plain token ahead starts what try_parse_rvalue() reads as a numeric expression: a number, a
-  // symbol, or an identifier holding a number (the common right-hand sides, taken without making a Token).
-  bool numeric_ahead();
-  // Runs the macro calls that start a value (`#declare S = Add(S, I);`) as next() would, so that a numeric body
-  // is then read by numeric_ahead()'s path: next() would hand its first token over as a Token, which keeps the
-  // expression from running as a compiled program.
-  void call_macros_ahead();
-  void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
-  void place_light(Light light, const SourceLoc& at);
-  void add_light(Light light);
-  void post_process(Object& object);
-  void placed(Object& object);   // the last step before the object joins scene_.objects
-
   const ParseOptions& options_;
   NotesPool notes_pool_;   // where the objects' notes are made (ObjectNotes); before the members holding objects
   SymbolTable symbols_;
   // The directives and macro calls, with their control stack (directive_runner.hpp). Built here, where the directive
   // words it interns were interned before.
-  DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_};
-  // fail(), fail_at(), fail_expected(), fail_unsupported(), warn() and describe() forward to it.
+  DirectiveRunner directives_{*this, options_, reader_.stream(), symbols_, diagnostics_, values_};
+  // ParserPart's fail(), fail_at(), fail_expected(), fail_unsupported() and warn() go to it.
   Diagnostics diagnostics_{options_, reader_.stream(), symbols_};
   ExpressionPrograms programs_{options_, reader_.stream(), symbols_, directives_};   // of replayed expressions (S6)
-  SceneDescription scene_;
-  Texture default_texture_;
-  std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
-  bool camera_seen_ = false;
-  bool statement_seen_ = false;
-  // The scene's noise generator as functions see it when they run (POV-Ray's f_noise3d reads the scene's current
-  // setting): updated at #version, at global_settings and once more when the parse ends, so that functions
-  // evaluated while rendering see the final one.
-  bool version_directive_seen_ = false;   // POV-Ray's languageVersionSet: any #version so far
+  // ---- the scene statements and the scene they fill (statements/scene_statements.hpp) ----
+  SceneStatements statements_{*this,        options_,  symbols_, reader_,       directives_, expressions(),
+                              textures_, camera_lights_, objects_, unsupported_};
   // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----
@@ -212,6 +142,11 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
   // once (an options reference read per operand cost instructions on the parse benchmarks).
   const bool token_limit_ = options_.max_tokens != 0;
   std::vector<std::uint32_t> rand_streams_;   // seed() and rand(): POV-Ray's streams, by the number seed() returns
+  // ---- right-hand values (statements/value_reader.hpp): after the parts it calls ----
+  ValueReader values_{*this,    options_,  directives_, expressions(), textures_,
+                      camera_lights_, objects_, arrays_,  splines_,    functions_};
+  // ---- features parsed but not rendered yet (statements/unsupported_features.hpp) ----
+  UnsupportedFeatures unsupported_{*this};
 };
 
 }  // namespace povtrace::sdl

@@ -85,6 +85,8 @@ class ParserPart {
   inline const LexedToken* plain_ahead();
   inline void consume_plain();
   inline bool plain_symbol(const LexedToken* k, char c) const;
+  inline std::string_view text_of(const LexedToken& k) const;   // a kept token's text
+  inline const LexedToken& lexed(FileTokens& tokens, std::size_t index);   // token `index` of a file
   inline void skip_expected(char symbol, std::string_view context);   // expect() without making its Token
   inline std::string expect_identifier_raw(std::string_view context);
   inline auto raw_ahead();   // the reader's Ahead: kind and text of what peek_raw() would return

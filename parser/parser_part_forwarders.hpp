@@ -37,19 +37,29 @@ inline std::string ParserPart::expect_identifier_raw(std::string_view context) {
 }
 inline auto ParserPart::raw_ahead() { return in_.reader_.raw_ahead(); }
 inline void ParserPart::skip_ahead() { in_.reader_.skip_ahead(); }
+inline const LexedToken& ParserPart::lexed(FileTokens& tokens, std::size_t index) {
+  return in_.reader_.lexed(tokens, index);
+}
+inline std::string_view ParserPart::text_of(const LexedToken& k) const { return in_.reader_.text_of(k); }
 inline Token ParserPart::raw() { return in_.reader_.raw(); }
 inline bool ParserPart::ahead_is(std::string_view symbol) { return in_.reader_.ahead_is(symbol); }
 inline Token ParserPart::pop_pushed_back() { return in_.reader_.pop_pushed_back(); }
 
-inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const { in_.fail(loc, message); }
-inline void ParserPart::fail_at(const Token& t, const std::string& message) const { in_.fail_at(t, message); }
+inline void ParserPart::fail(const SourceLoc& loc, const std::string& message) const {
+  in_.diagnostics_.fail(loc, message);
+}
+inline void ParserPart::fail_at(const Token& t, const std::string& message) const {
+  in_.diagnostics_.fail_at(t, message);
+}
 inline void ParserPart::fail_expected(const Token& t, std::string_view expected) const {
-  in_.fail_expected(t, expected);
+  in_.diagnostics_.fail_expected(t, expected);
 }
 inline void ParserPart::fail_unsupported(const Token& t, std::string_view what) const {
-  in_.fail_unsupported(t, what);
+  in_.diagnostics_.fail_unsupported(t, what);
 }
-inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const { in_.warn(loc, message); }
+inline void ParserPart::warn(const SourceLoc& loc, const std::string& message) const {
+  in_.diagnostics_.warn(loc, message);
+}
 
 inline Numeric ParserPart::parse_expression() { return in_.expressions().parse_expression(); }
 inline Numeric ParserPart::parse_additive() { return in_.expressions().parse_additive(); }
@@ -71,7 +81,9 @@ inline std::shared_ptr<const FunctionValue> ParserPart::parse_function_definitio
   return in_.functions_.parse_definition(keyword);
 }
 inline std::uint64_t* ParserPart::function_budget() { return in_.functions_.budget(); }
-inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) { return in_.try_parse_rvalue(first); }
+inline std::optional<Value> ParserPart::try_parse_rvalue(const Token& first) {
+  return in_.values_.try_parse_rvalue(first);
+}
 inline bool ParserPart::nesting_room() const { return in_.reader_.nesting_room(); }
 inline int ParserPart::nesting() const { return in_.reader_.nesting(); }
 inline TokenStream& ParserPart::token_stream() const { return in_.reader_.stream(); }
@@ -86,26 +98,32 @@ inline const NotesPool& ParserPart::notes_pool() const { return in_.notes_pool_;
 inline ObjectExtents ParserPart::extents() const { return in_.extents(); }
 
 inline UnsupportedFeature ParserPart::skip_unsupported(const Token& keyword, const std::string& what) {
-  return in_.skip_unsupported(keyword, what);
+  return in_.unsupported_.skip_unsupported(keyword, what);
 }
-inline void ParserPart::skip_balanced(const Token& open) { in_.skip_balanced(open); }
+inline void ParserPart::skip_balanced(const Token& open) { in_.unsupported_.skip_balanced(open); }
 inline void ParserPart::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
                                               std::string_view what) const {
-  in_.refuse_if_unsupported(u, placed_at, what);
+  in_.unsupported_.refuse_if_unsupported(u, placed_at, what);
 }
-inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) { Interpreter::taint(slot, feature); }
+inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) {
+  UnsupportedFeatures::taint(slot, feature);
+}
 
-inline const Texture& ParserPart::default_texture() const { return in_.default_texture(); }
-inline int ParserPart::language_version() const { return in_.scene_.language_version; }
-inline bool ParserPart::version_directive_seen() const { return in_.version_directive_seen_; }
-inline const std::optional<double>& ParserPart::assumed_gamma() const { return in_.scene_.settings.assumed_gamma; }
+inline const Texture& ParserPart::default_texture() const { return in_.statements_.default_texture(); }
+inline int ParserPart::language_version() const { return in_.statements_.language_version(); }
+inline bool ParserPart::version_directive_seen() const { return in_.statements_.version_directive_seen(); }
+inline const std::optional<double>& ParserPart::assumed_gamma() const { return in_.statements_.assumed_gamma(); }
 inline const std::vector<std::filesystem::path>& ParserPart::library_paths() const {
   return in_.options_.library_paths;
 }
 inline bool ParserPart::povray_tolerances() const { return in_.options_.povray_tolerances; }
-inline int ParserPart::noise_generator() const { return in_.noise_generator(); }
-inline void ParserPart::place_object(Object&& object, const SourceLoc& at) { in_.place_object(std::move(object), at); }
-inline void ParserPart::place_light(Light light, const SourceLoc& at) { in_.place_light(std::move(light), at); }
+inline int ParserPart::noise_generator() const { return in_.statements_.noise_generator(); }
+inline void ParserPart::place_object(Object&& object, const SourceLoc& at) {
+  in_.statements_.place_object(std::move(object), at);
+}
+inline void ParserPart::place_light(Light light, const SourceLoc& at) {
+  in_.statements_.place_light(std::move(light), at);
+}
 
 // ---- the ExpressionParser's (expression_parser.hpp): the Interpreter is the class it is the base of ----
 // Empty, so that the base shares the Interpreter's address with the reader and in() costs nothing.
@@ -143,22 +161,28 @@ inline int ExpressionParser::nesting() const { return reader().nesting(); }
 inline TokenStream& ExpressionParser::token_stream() { return reader().stream(); }
 inline const TokenStream& ExpressionParser::token_stream() const { return reader().stream(); }
 inline const SymbolTable& ExpressionParser::symbol_table() const { return in().symbols_; }
-inline void ExpressionParser::fail(const SourceLoc& loc, const std::string& message) const { in().fail(loc, message); }
-inline void ExpressionParser::fail_at(const Token& t, const std::string& message) const { in().fail_at(t, message); }
+inline void ExpressionParser::fail(const SourceLoc& loc, const std::string& message) const {
+  in().diagnostics_.fail(loc, message);
+}
+inline void ExpressionParser::fail_at(const Token& t, const std::string& message) const {
+  in().diagnostics_.fail_at(t, message);
+}
 inline void ExpressionParser::fail_expected(const Token& t, std::string_view expected) const {
-  in().fail_expected(t, expected);
+  in().diagnostics_.fail_expected(t, expected);
 }
 inline void ExpressionParser::fail_unsupported(const Token& t, std::string_view what) const {
-  in().fail_unsupported(t, what);
+  in().diagnostics_.fail_unsupported(t, what);
 }
-inline void ExpressionParser::warn(const SourceLoc& loc, const std::string& message) const { in().warn(loc, message); }
+inline void ExpressionParser::warn(const SourceLoc& loc, const std::string& message) const {
+  in().diagnostics_.warn(loc, message);
+}
 inline void ExpressionParser::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
                                                     std::string_view what) const {
-  in().refuse_if_unsupported(u, placed_at, what);
+  in().unsupported_.refuse_if_unsupported(u, placed_at, what);
 }
-inline int ExpressionParser::language_version() const { return in().scene_.language_version; }
+inline int ExpressionParser::language_version() const { return in().statements_.language_version(); }
 inline const std::optional<double>& ExpressionParser::assumed_gamma() const {
-  return in().scene_.settings.assumed_gamma;
+  return in().statements_.assumed_gamma();
 }
 
 }  // namespace povtrace::sdl

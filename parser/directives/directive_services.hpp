@@ -8,8 +8,8 @@
 
 namespace povtrace::sdl {
 
-inline bool DirectiveRunner::numeric_ahead() { return in_.numeric_ahead(); }
-inline void DirectiveRunner::call_macros_ahead() { in_.call_macros_ahead(); }
+inline bool DirectiveRunner::numeric_ahead() { return values_.numeric_ahead(); }
+inline void DirectiveRunner::call_macros_ahead() { values_.call_macros_ahead(); }
 inline bool DirectiveRunner::parse_defined_identifier() { return in_.arrays_.parse_defined_identifier(); }
 inline auto DirectiveRunner::parse_element_reference(const Token& name) {
   return in_.arrays_.parse_element_reference(name);
@@ -24,7 +24,7 @@ inline void DirectiveRunner::directive_declare_element(const Token& name, bool l
 inline void DirectiveRunner::check_function_redeclaration(const Token& name, bool local, const Value& value) {
   in_.functions_.check_redeclaration(name, local, value);
 }
-inline void DirectiveRunner::parse_default(const Token& keyword) { in_.parse_default(keyword); }
-inline void DirectiveRunner::directive_version(const Token& at) { in_.directive_version(at); }
+inline void DirectiveRunner::parse_default(const Token& keyword) { in_.statements_.parse_default(keyword); }
+inline void DirectiveRunner::directive_version(const Token& at) { in_.statements_.directive_version(at); }
 
 }  // namespace povtrace::sdl

@@ -37,7 +37,10 @@ constexpr int kProgramStack = 8;
 
 ExpressionPrograms::ExpressionPrograms(const ParseOptions& options, TokenStream& stream, const SymbolTable& symbols,
                                        const DirectiveRunner& directives)
-    : enabled_(options.expression_programs && !options.max_tokens), stream_(stream), symbols_(symbols), directives_(directives) {}
+    : enabled_(options.expression_programs && !options.max_tokens),
+      stream_(stream),
+      symbols_(symbols),
+      directives_(directives) {}
 
 // Reads the grammar of parse_expression … parse_primary once more over the kept tokens, emitting the operations
 // in the order the parse would compute them. It looks at tokens only, never at values.

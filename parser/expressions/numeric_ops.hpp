@@ -1,6 +1,7 @@
 // The arithmetic of SDL values that both expression engines compute with — the recursive descent
 // (expressions.cpp) and the expression programs (expression_programs.cpp) — so that the two cannot differ:
-// comparisons with POV-Ray's tolerance and the promotion of floats and shorter vectors (povray-sdl-and-geometry.md §5).
+// comparisons with POV-Ray's tolerance and the promotion of floats and shorter vectors
+// (povray-sdl-and-geometry.md §5).
 #pragma once
 
 #include <algorithm>

@@ -196,11 +196,6 @@ TokenReader::NestingGuard::NestingGuard(TokenReader& in, const Token& at) : in_(
   }
 }
 
-bool Interpreter::is_macro_call(const Token& t) const {
-  const Value* v = lookup(t);
-  return v && std::holds_alternative<Boxed<MacroDefinition>>(*v);
-}
-
 const Value* TokenReader::lookup(const Token& t) const { return sdl::lookup(symbols_, t); }
 
 Token TokenReader::next() {
@@ -464,19 +459,6 @@ std::string TokenStream::reached_from() const {
   }
   return out;
 }
-
-// The diagnostics (diagnostics.cpp), forwarded out of line as their bodies were here: the call sites compile as
-// before.
-void Interpreter::fail(const SourceLoc& loc, const std::string& message) const { diagnostics_.fail(loc, message); }
-void Interpreter::fail_at(const Token& t, const std::string& message) const { diagnostics_.fail_at(t, message); }
-void Interpreter::fail_expected(const Token& t, std::string_view expected) const {
-  diagnostics_.fail_expected(t, expected);
-}
-void Interpreter::fail_unsupported(const Token& t, std::string_view what) const {
-  diagnostics_.fail_unsupported(t, what);
-}
-void Interpreter::warn(const SourceLoc& loc, const std::string& message) const { diagnostics_.warn(loc, message); }
-std::string Interpreter::describe(const Token& t) const { return diagnostics_.describe(t); }
 
 void TokenStream::seek(Position p) {
   frames_.resize(p.frame + 1);

@@ -6,16 +6,17 @@
 #include "parser/extents/placed_boxes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/lexing/reserved_words.hpp"
+#include "parser/statements/scene_statements.hpp"
 #include "parser/objects/object_transform.hpp"
 
 namespace povtrace::sdl {
 
 Interpreter::Interpreter(const ParseOptions& options)
-    : reader_(options, symbols_, directives_, arrays_, diagnostics_, directives_), options_(options) {
-  default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
-}
+    : reader_(options, symbols_, directives_, arrays_, diagnostics_, directives_), options_(options) {}
 
-SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
+std::string SceneStatements::reached_from() const { return reader_.stream().reached_from(); }
+
+SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
   reader_.stream().open_main(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
   const std::pair<const char*, double> predeclared[] = {
@@ -43,8 +44,8 @@ SceneDescription Interpreter::run(std::unique_ptr<SourceFile> main_file) {
   return std::move(scene_);
 }
 
-void Interpreter::directive_version(const Token& at) {
-  const double v = expressions().parse_float();
+void SceneStatements::directive_version(const Token& at) {
+  const double v = expressions_.parse_float();
   scene_.language_version = static_cast<int>(std::lround(v * 100.0));
   version_directive_seen_ = true;
   if (peek_raw().is(";")) next();
@@ -52,12 +53,12 @@ void Interpreter::directive_version(const Token& at) {
   (void)at;
 }
 
-void Interpreter::parse_statement(const Token& t) {
+void SceneStatements::parse_statement(const Token& t) {
   statement_seen_ = true;
   const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
   if (k == "camera") {
     scene_.camera = camera_lights_.parse_camera(t);
-    refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
+    unsupported_.refuse_if_unsupported(scene_.camera.unsupported, t.loc, "camera");
     camera_seen_ = true;
     return;
   }
@@ -70,7 +71,7 @@ void Interpreter::parse_statement(const Token& t) {
   if (k == "sky_sphere") {
     if (scene_.sky_sphere) warn(t.loc, "only one sky_sphere is used: this one replaces the earlier one");
     SkySphere sky = textures_.parse_sky_sphere(t);
-    refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
+    unsupported_.refuse_if_unsupported(sky.unsupported, t.loc, "sky_sphere");
     scene_.sky_sphere = std::move(sky);
     return;
   }
@@ -94,7 +95,7 @@ void Interpreter::parse_statement(const Token& t) {
   fail_expected(t, "an object, light_source, camera, background, global_settings or a directive");
 }
 
-void Interpreter::parse_global_settings(const Token& keyword) {
+void SceneStatements::parse_global_settings(const Token& keyword) {
   (void)keyword;
   expect("{", " after 'global_settings'");
   while (true) {
@@ -102,20 +103,20 @@ void Interpreter::parse_global_settings(const Token& keyword) {
     if (t.is("}")) return;
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
     if (k == "assumed_gamma") {
-      scene_.settings.assumed_gamma = expressions().parse_float();
+      scene_.settings.assumed_gamma = expressions_.parse_float();
       if (*scene_.settings.assumed_gamma <= 0) fail_at(t, "assumed_gamma must be positive");
     } else if (k == "ambient_light") {
-      Colour c = expressions().parse_colour();
+      Colour c = expressions_.parse_colour();
       scene_.settings.ambient_light = Colour{c.r, c.g, c.b, 0, 0};
     } else if (k == "max_trace_level") {
       // Clamped to 1…256 (pipeline §4 "Recursion limits").
-      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(expressions().parse_float()), 1, 256);
+      scene_.settings.max_trace_level = std::clamp(saturating_cast<int>(expressions_.parse_float()), 1, 256);
     } else if (k == "adc_bailout") {
-      scene_.settings.adc_bailout = expressions().parse_float();
+      scene_.settings.adc_bailout = expressions_.parse_float();
     } else if (k == "noise_generator") {
       // 1 (original), 2 (range-corrected) or 3 (Perlin's); POV-Ray truncates the value and refuses the rest.
       const Token value_at = peek();
-      const double g = std::trunc(expressions().parse_float());
+      const double g = std::trunc(expressions_.parse_float());
       if (!(g >= 1 && g <= 3)) fail_at(value_at, "Value for noise_generator in global_settings must be 1, 2, or 3.");
       scene_.settings.noise_generator = static_cast<int>(g);
     } else if (k == "charset") {
@@ -127,14 +128,14 @@ void Interpreter::parse_global_settings(const Token& keyword) {
     } else if (k == "number_of_waves") {
       // POV-Ray truncates it and makes a value below 1 into 1 with a warning.
       const Token value_at = peek();
-      const double n = std::trunc(expressions().parse_float());
+      const double n = std::trunc(expressions_.parse_float());
       if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
       scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
       if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
     } else if (k == "hf_gray_16") {
       // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
       // option there).
-      expressions().optional_float(1.0);
+      expressions_.optional_float(1.0);
       warn(t.loc, "In POV-Ray 3.7 and later 'hf_gray_16' has to be specified as an option on the command-line; "
                   "the 'hf_gray_16' setting here is ignored (as in POV-Ray).");
     } else if (!k.empty() && is_reserved_word(k)) {
@@ -145,15 +146,15 @@ void Interpreter::parse_global_settings(const Token& keyword) {
   }
 }
 
-void Interpreter::parse_background(const Token& keyword) {
+void SceneStatements::parse_background(const Token& keyword) {
   (void)keyword;
   expect("{", " after 'background'");
-  scene_.background = expressions().parse_colour();
+  scene_.background = expressions_.parse_colour();
   expect("}", " after the background colour");
 }
 
 // #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
-void Interpreter::parse_default(const Token& keyword) {
+void SceneStatements::parse_default(const Token& keyword) {
   (void)keyword;
   expect("{", " after #default");
   while (true) {
@@ -171,116 +172,11 @@ void Interpreter::parse_default(const Token& keyword) {
     else if (t.is("normal")) {
       layer.normal =
           std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
-      refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
+      unsupported_.refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
     } else if (t.is("camera") || t.is("radiosity"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
     else fail_expected(t, "texture, pigment, normal or finish in #default { }");
   }
-}
-
-bool Interpreter::numeric_ahead() {
-  const LexedToken* k = plain_ahead();
-  if (!k) return false;
-  if (k->kind() == TokenKind::number || k->kind() == TokenKind::symbol) return true;
-  if (k->kind() != TokenKind::identifier || symbols_.is_reserved(k->payload)) return false;
-  const Value* v = symbols_.find(k->payload);
-  return v && std::holds_alternative<Numeric>(*v) && text_of(*k) != "lemon";
-}
-
-void Interpreter::call_macros_ahead() {
-  // The conditions of plain_ahead(), under which next() takes the same steps: no token pushed back, no token
-  // limit (next() counts), no deprecated names (their warnings come from next()).
-  while (!reader_.stream().has_pushed_back() && !options_.max_tokens && !symbols_.any_deprecated()) {
-    const Frame& f = reader_.stream().frame();
-    const LexedToken& k = lexed(*f.tokens, f.index);
-    if (k.kind() != TokenKind::identifier || symbols_.is_reserved(k.payload)) return;
-    const Value* v = symbols_.find(k.payload);
-    if (!v || !std::holds_alternative<Boxed<MacroDefinition>>(*v)) return;
-    const Token name = raw();   // what next() reads first, with the cancel check counted
-    const NestingGuard guard(*this, name);
-    directives_.call_macro(name);
-  }
-}
-
-std::optional<Value> Interpreter::try_parse_rvalue(const Token& first) {
-  // The common values first: a number, an operator or parenthesis, or a numeric identifier start an expression,
-  // and none of the forms below would take them.
-  if (first.kind == TokenKind::number || first.kind == TokenKind::symbol) {
-    unget(first);
-    return Value(expressions().parse_additive().stored());
-  }
-  // ('lemon' is no reserved word in 3.7, yet try_parse_item takes it as a shape.)
-  if (first.kind == TokenKind::identifier && (first.element || !reserved(first)) && first.text != "lemon")
-    if (const Value* v = lookup(first); v && std::holds_alternative<Numeric>(*v)) {
-      unget(first);
-      return Value(expressions().parse_additive().stored());
-    }
-  if (expressions().starts_string(first)) {
-    unget(first);
-    return expressions().parse_string();
-  }
-  const std::string_view k = first.kind == TokenKind::identifier ? first.text : std::string_view();
-  if (k == "texture") {
-    auto tex = textures_.parse_texture_block(first);
-    // Several texture blocks in a row declare a layered texture.
-    while (peek_raw().is("texture")) {   // raw: a following directive runs after this #declare
-      Token more = next();
-      auto top = textures_.parse_texture_block(more);
-      textures_.refuse_layering(more, tex.get(), top->patterned());
-      auto layered = std::make_shared<Texture>(*tex);
-      for (const auto& l : top->layers) layered->layers.push_back(l);
-      tex = std::move(layered);
-    }
-    return Value(tex);
-  }
-  if (k == "pigment") return Value(textures_.parse_pigment_block(first, default_texture().layers.back().pigment));
-  if (k == "finish") return Value(textures_.parse_finish_block(first, default_texture().layers.back().finish));
-  if (k == "normal") return Value(textures_.parse_normal_block(first, textures_.starting_normal(nullptr)));
-  if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(textures_.parse_blend_map(first));
-  if (k == "texture_map") return Value(textures_.parse_texture_map(first, false));
-  if (k == "interior") return Value(textures_.parse_interior_block(first, Interior{}));
-  if (k == "camera") return Value(camera_lights_.parse_camera(first));
-  if (k == "sky_sphere") return Value(textures_.parse_sky_sphere(first));
-  if (k == "transform") return Value(textures_.parse_transform_block(first));
-  if (k == "material") {
-    Object holder;
-    objects_.parse_material_block(first, holder);
-    if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
-    return Value(MaterialValue{holder.texture, holder.interior});
-  }
-  if (k == "array") return arrays_.parse_array_declaration(first);
-  if (auto s = splines_.try_parse_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression
-  if (auto f = functions_.try_parse_rvalue(first)) return f;   // function { … }, or a call F(…) in an expression
-  if (const Value* v = lookup(first);
-      v && !std::holds_alternative<Numeric>(*v) && !std::holds_alternative<Boxed<MacroDefinition>>(*v)) {
-    if (const auto* a = std::get_if<std::shared_ptr<ArrayValue>>(v)) return Value((*a)->deep_copy());  // a value
-    return *v;
-  }
-  if (auto item = objects_.try_parse_item(first)) return Value(std::make_shared<const SceneItem>(std::move(*item)));
-  // Any other block value (color_map, normal, media, fog, sky_sphere, …): parsed
-  // structurally and kept as an opaque value that is refused by name if it ever reaches the scene.
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions().starts_colour(first)) {
-    Token after = peek_raw();
-    if (after.is("{") || after.is("[") || (after.is("(") && (k == "function" || k == "spline"))) {
-      UnsupportedFeature feature{"'" + std::string(k) + "'", first.loc};
-      while (true) {   // raw look: a directive after the value runs only once it is stored (§1 item 6)
-        if (Token g = peek_raw(); !(g.is("{") || g.is("[") || g.is("("))) break;
-        skip_balanced(next());
-      }
-      return Value(OpaqueValue{std::string(k), feature});
-    }
-  }
-  if (first.kind == TokenKind::identifier && is_reserved_word(k) && !expressions().starts_colour(first)) {
-    static const std::string_view value_words[] = {"x", "y", "z", "t", "u", "v", "pi", "true", "false", "yes",
-                                                   "no", "on", "off", "version", "clock", "clock_on",
-                                                   "clock_delta", "now"};
-    bool is_value_word = false;
-    for (auto w : value_words) is_value_word = is_value_word || k == w;
-    Token after = peek();
-    if (!is_value_word && !after.is("(")) return std::nullopt;
-  }
-  unget(first);
-  return Value(expressions().parse_additive().stored());
 }
 
 namespace {
@@ -314,7 +210,7 @@ Unsupported first_unsupported(const Object& o) {
 
 // A placed object is edited no more: transforms deferred for textures that no longer ignore them (edited since)
 // are applied; those deferred for textures that ignore them go with the notes when the object is placed
-// (Interpreter::placed). Light sources' looks_like objects are settled when the lights are added.
+// (SceneStatements::placed). Light sources' looks_like objects are settled when the lights are added.
 void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
   if (o.texture && !texture_ignores_transforms(*o.texture)) apply_deferred_texture_transforms(o, pool);
   if (auto* csg = std::get_if<Csg>(&o.shape))
@@ -324,16 +220,16 @@ void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
 }
 }  // namespace
 
-void Interpreter::place_light(Light light, const SourceLoc& at) {
-  refuse_if_unsupported(light.unsupported, at, "light_source");
-  for (Object& shown : light.looks_like) refuse_if_unsupported(first_unsupported(shown), at, "light_source");
+void SceneStatements::place_light(Light light, const SourceLoc& at) {
+  unsupported_.refuse_if_unsupported(light.unsupported, at, "light_source");
+  for (Object& shown : light.looks_like) unsupported_.refuse_if_unsupported(first_unsupported(shown), at, "light_source");
   add_light(std::move(light));
 }
 
 // A light joins the scene's lights; its looks_like object joins the objects.
-void Interpreter::add_light(Light light) {
+void SceneStatements::add_light(Light light) {
   for (Object& shown : light.looks_like) {
-    settle_deferred_texture_transforms(shown, notes_pool_);
+    settle_deferred_texture_transforms(shown, notes_pool());
     post_process(shown);
     set_placed_boxes(shown, extents());
     placed(shown);
@@ -345,7 +241,7 @@ void Interpreter::add_light(Light light) {
 
 // An object joining the scene's objects is edited, moved and queried no more and its box is made: the parser's notes
 // on it go (ParseOptions::placing sees them last).
-void Interpreter::placed(Object& object) {
+void SceneStatements::placed(Object& object) {
   if (options_.placing) options_.placing(object);
   clear_notes(object);
 }
@@ -354,7 +250,7 @@ void Interpreter::placed(Object& object) {
 // texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow,
 // no_image, no_reflection and no_radiosity are forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
 // current #default texture.
-void Interpreter::post_process(Object& object) {
+void SceneStatements::post_process(Object& object) {
   // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
   // layer's `ior` when given, and its `refraction` always.
   if (object.texture && !object.texture->layers.empty()) {
@@ -428,10 +324,10 @@ const Normal* first_untyped_normal(const Object& o) {
 }
 }  // namespace
 
-void Interpreter::place_object(Object&& object, const SourceLoc& at) {
-  refuse_if_unsupported(first_unsupported(object), at, "object");
+void SceneStatements::place_object(Object&& object, const SourceLoc& at) {
+  unsupported_.refuse_if_unsupported(first_unsupported(object), at, "object");
   objects_.remove_unnecessary_bounds(object);
-  settle_deferred_texture_transforms(object, notes_pool_);
+  settle_deferred_texture_transforms(object, notes_pool());
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)

@@ -4,6 +4,7 @@
 // directives and macro calls inside still executed as POV-Ray would — and the value it belongs to is tainted with
 // an UnsupportedFeature naming it. Placing a tainted value in the scene is the error (refuse_if_unsupported).
 #include "parser/interpreter.hpp"
+#include "parser/statements/unsupported_features.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
 namespace povtrace::sdl {
@@ -22,7 +23,7 @@ bool is_value_word(std::string_view w) {
 std::string_view closer_of(std::string_view open) { return open == "{" ? "}" : open == "(" ? ")" : "]"; }
 }  // namespace
 
-void Interpreter::skip_balanced(const Token& open) {
+void UnsupportedFeatures::skip_balanced(const Token& open) {
   std::vector<std::string_view> expected{closer_of(open.text)};
   while (!expected.empty()) {
     Token t = next();
@@ -39,7 +40,7 @@ void Interpreter::skip_balanced(const Token& open) {
 }
 
 // Whether `t` still belongs to the arguments of the item being skipped.
-bool Interpreter::continues_arguments(const Token& t) {
+bool UnsupportedFeatures::continues_arguments(const Token& t) {
   // A closer that was not opened while skipping ends the enclosing construct (a pigment_map entry's ']').
   if (t.kind == TokenKind::end_of_input || t.is("}") || t.is("]") || t.is(")")) return false;
   if (t.kind != TokenKind::identifier || !is_reserved_word(t.text) || is_value_word(t.text)) return true;
@@ -49,7 +50,7 @@ bool Interpreter::continues_arguments(const Token& t) {
 
 // An item is either `keyword { … }` (the block is the whole item) or `keyword arguments…`, the arguments running
 // to the next keyword that starts an item, a ';' or the enclosing '}'.
-UnsupportedFeature Interpreter::skip_unsupported(const Token& keyword, const std::string& what) {
+UnsupportedFeature UnsupportedFeatures::skip_unsupported(const Token& keyword, const std::string& what) {
   Token first = next();
   if (first.is("{")) {
     skip_balanced(first);
@@ -64,8 +65,8 @@ UnsupportedFeature Interpreter::skip_unsupported(const Token& keyword, const std
   return UnsupportedFeature{what, keyword.loc};
 }
 
-void Interpreter::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
-                                        std::string_view what) const {
+void UnsupportedFeatures::refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at,
+                                                std::string_view what) const {
   if (!u) return;
   std::string message = "unsupported: " + u->name + " is a POV-Ray feature that povtrace does not render yet";
   if (u->loc.line != placed_at.line || u->loc.file != placed_at.file || u->loc.column != placed_at.column)
