@@ -1,9 +1,9 @@
 // The base of the parser's components (docs/parser-split-plan.md §2): a part holds the Interpreter and reaches the
 // services it needs — the token reader, diagnostics, the expression parser, the statements' language settings —
 // through the protected one-line forwarders below, so that a part's bodies read as they did in the Interpreter
-// (`next()`, `expect(…)`, `fail_at(…)`, `parse_float()`, `NestingGuard guard(*this, keyword)`). The token reader
-// and diagnostics are not components yet (steps S5, S3): the forwarders go to the Interpreter for now and will be
-// retargeted at them without the parts' call sites changing; the expression parser's go to the ExpressionParser.
+// (`next()`, `expect(…)`, `fail_at(…)`, `parse_float()`, `NestingGuard guard(*this, keyword)`). Each forwarder goes
+// to the part that provides the service (the TokenReader, the Diagnostics, the ExpressionParser, SceneStatements…),
+// reached through the Interpreter that owns them all.
 //
 // Only the services a part uses are forwarded; each is a plain inline call (no virtual call), defined in
 // parser_part_forwarders.hpp once the Interpreter is complete (interpreter.hpp includes it at its end).
@@ -93,7 +93,7 @@ class ParserPart {
   inline void skip_ahead();
   using RawOperatorLook = PartRawOperatorLook<TokenReader>;
 
-  // ---- diagnostics (Diagnostics from S3) ----
+  // ---- diagnostics (Diagnostics) ----
   [[noreturn]] inline void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] inline void fail_at(const Token& t, const std::string& message) const;
   [[noreturn]] inline void fail_expected(const Token& t, std::string_view expected) const;
@@ -118,10 +118,10 @@ class ParserPart {
   // The fuzzer's bound on function work (ParseOptions::max_tokens), shared by every function evaluated during the
   // parse (FunctionValues::budget): height_field { function } evaluates one over its grid. Null without a limit.
   inline std::uint64_t* function_budget();
-  // A right-hand value: a number, string, array, object, function… (the ValueReader's from S11).
+  // A right-hand value: a number, string, array, object, function… (the ValueReader's).
   inline std::optional<Value> try_parse_rvalue(const Token& first);
-  // The reader's nesting level and room, which only the expressions' fast paths and their programs ask (the
-  // Interpreter's NestingGuard count; the TokenReader's from S5).
+  // The reader's nesting level and room (the TokenReader's NestingGuard count), which only the expressions' fast
+  // paths and their programs ask.
   inline bool nesting_room() const;
   inline int nesting() const;
   // The token stream and the symbols as the expressions' fast paths read them (kept tokens, NameIds): reached
@@ -129,7 +129,7 @@ class ParserPart {
   inline TokenStream& token_stream() const;
   inline const SymbolTable& symbol_table() const;
 
-  // ---- objects (ObjectParser from S10) ----
+  // ---- objects (ObjectParser) ----
   inline std::optional<SceneItem> try_parse_item(const Token& t);
   inline void parse_object_modifiers(Object& object);
   inline void apply_transform(Object& object, const Matrix& m, TransformKind kind = TransformKind::other);
@@ -145,7 +145,7 @@ class ParserPart {
   inline void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
   static inline void taint(Unsupported& slot, const Unsupported& feature);   // keeps the first one found
 
-  // ---- the scene's settings so far (SceneStatements from S11) ----
+  // ---- the scene's settings so far (SceneStatements) ----
   inline const Texture& default_texture() const;   // the #default texture
   // What POV-Ray's image gamma handling reads: the language version (round(100 · #version), 370 when no #version
   // was seen), whether any #version was seen (languageVersionSet) and global_settings' assumed_gamma.

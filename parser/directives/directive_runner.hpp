@@ -170,7 +170,7 @@ class DirectiveRunner final : public TokenStream::IncludeExit, ParserPart {
   }
   // ---- file I/O (file_io.cpp) ----
   // (Not a UserFiles part of its own: it has no state — the open files are symbol values — and reads through the
-  // same services as the directives, whose forwarders a second class would repeat until S5's ParserPart.)
+  // same services as the directives.)
   void directive_fopen(const Token& at);
   void directive_fclose(const Token& at);
   void directive_read(const Token& at);
@@ -203,8 +203,8 @@ class DirectiveRunner final : public TokenStream::IncludeExit, ParserPart {
   void parse_default(const Token& keyword);
   void directive_version(const Token& at);
 
-  // The Interpreter again (ParserPart keeps its own private): for the services above, until the value reader is a
-  // part of its own (S11).
+  // The Interpreter again (ParserPart keeps its own private): for the forwarders above to the parts only the
+  // directives call (directive_services.hpp).
   Interpreter& in_;
   // The right-hand values (statements/value_reader.hpp), held here: #declare's numeric path calls it twice per
   // directive, and a reference of its own costs no address computed from the Interpreter's (measured: 4 M of
