@@ -569,6 +569,7 @@ string_view extension_of(image::FileFormat format) {
     case image::FileFormat::png: return ".png";
     case image::FileFormat::exr: return ".exr";
     case image::FileFormat::ppm: return ".ppm";
+    default: break;
   }
   return ".png";
 }

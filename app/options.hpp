@@ -21,6 +21,28 @@ struct UsageError : std::runtime_error {
 
 enum class LightingModel { povray, textbook };
 
+// +KI +KF +KFI +KFF +KC +SF +EF +STP and +K (Initial_Clock … Frame_Step, Clock): POV-Ray 3.7's animation
+// settings as written; app/animation.hpp turns them into the frames to render. Unset values take POV-Ray's
+// defaults there (initial frame 1, final frame 1, clocks 0 and 1, step 1).
+struct AnimationOptions {
+  std::optional<int> initial_frame;           // +KFI / Initial_Frame
+  std::optional<int> final_frame;             // +KFF / Final_Frame
+  std::optional<double> initial_clock;        // +KI / Initial_Clock
+  std::optional<double> final_clock;          // +KF / Final_Clock
+  bool cyclic = false;                        // +KC / Cyclic_Animation
+  std::optional<double> subset_start;         // +SF / Subset_Start_Frame: a frame number, or a fraction in (0,1)
+  std::optional<double> subset_end;           // +EF / Subset_End_Frame
+  int frame_step = 1;                         // +STP / Frame_Step
+  std::optional<double> clock;                // +K / Clock: the clock of a single (non-animated) render
+};
+
+// +SR +ER +SC +EC (Start_Row, End_Row, Start_Column, End_Column) as written: a value in [0,1) (start) or [0,1]
+// (end) is a fraction of the image, otherwise a 1-based pixel (POV-Ray 3.7 view.cpp); resolved against the
+// image size when the render starts.
+struct RegionOptions {
+  std::optional<double> start_row, end_row, start_column, end_column;
+};
+
 struct RenderOptions {
   std::filesystem::path input;                  // +I / Input_File_Name / the positional .pov argument
   std::optional<std::filesystem::path> output;  // +O / Output_File_Name; default: input stem + extension, in cwd
@@ -42,6 +64,10 @@ struct RenderOptions {
   std::optional<image::FileFormat> format;      // +F<type> / Output_File_Type; else from output extension; else PNG
   int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)
   bool exr_full_float = false;                  // --format=exr32 (POV-Ray's own EXR, +FE, is half float)
+  bool grayscale = false;                       // Grayscale_Output / +FNG
+  int compression = 100;                        // Compression: JPEG quality
+  std::optional<double> file_gamma;             // File_Gamma (nullopt: sRGB)
+  image::Dither dither = image::Dither::none;   // +TH / Dither, Dither_Method
   bool write_file = true;                       // +F / -F / Output_To_File: -F renders without writing a file
   int threads = 0;                              // +WT<n> / --threads; 0 = all cores
   std::vector<std::pair<std::string, double>> declares;  // Declare=NAME=VALUE, in order
@@ -52,6 +78,9 @@ struct RenderOptions {
   bool vs_povray = false;                       // --vs-povray
   LightingModel lighting = LightingModel::povray;  // --lighting=povray|textbook
   bool help = false;                            // --help / -h
+  AnimationOptions animation;
+  RegionOptions region;
+  bool continue_trace = false;                  // +C / Continue_Trace
 };
 
 // Parses argv (argv[0] is skipped). `.ini` arguments (also `file.ini[Section]`) are read in place, in order,

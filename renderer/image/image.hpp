@@ -35,12 +35,20 @@ struct Image {
   const float* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
-enum class FileFormat { png, exr, ppm };
+// POV-Ray 3.7's +F types: N png, E exr, P ppm, T tga, C tga_rle (compressed TGA), J jpeg, B bmp, H hdr (Radiance).
+enum class FileFormat { png, exr, ppm, tga, tga_rle, jpeg, bmp, hdr };
+
+// Dither_Method (+TH): POV-Ray 3.7's B2 B3 B4 (ordered), D1 D2 (error diffusion), FS (Floyd-Steinberg).
+enum class Dither { none, bayer2, bayer3, bayer4, diffusion1d, diffusion2d, floyd_steinberg };
 
 struct EncodeOptions {
   FileFormat format = FileFormat::png;
-  int bits_per_channel = 8;     // PNG and PPM: 8 or 16
+  int bits_per_channel = 8;     // PNG and PPM: 8 or 16 (POV-Ray's Bits_Per_Color)
   bool exr_full_float = false;  // EXR: 32-bit float instead of POV-Ray's half
+  bool grayscale = false;       // Grayscale_Output / +F…G (PNG and PPM)
+  int jpeg_quality = 100;       // Compression (JPEG quality 0-100)
+  std::optional<double> file_gamma;  // File_Gamma: a power; nullopt = sRGB (POV-Ray 3.7's default)
+  Dither dither = Dither::none; // Dither / Dither_Method
 };
 
 // The format named by a file's extension (.png, .exr, .ppm; case-insensitive), if any.

@@ -51,6 +51,7 @@ void write_format(const Image& image, const fs::path& file, const EncodeOptions&
       return;
     case FileFormat::png: write_png(image, file, options.bits_per_channel); return;
     case FileFormat::ppm: write_ppm(image, file, options.bits_per_channel); return;
+    default: throw ImageError("this output format's writer is not built yet");  // issue 18, step 6 (in progress)
   }
 }
 
@@ -75,6 +76,7 @@ Image read_format(const fs::path& path, FileFormat format) {
     case FileFormat::exr: return read_exr(path);
     case FileFormat::png: return read_png(path);
     case FileFormat::ppm: return read_ppm(path);
+    default: break;
   }
   throw ImageError("unknown file format");
 }
