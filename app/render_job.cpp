@@ -26,7 +26,8 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 ParseOptions parse_options_from(const RenderOptions& o) {
   ParseOptions p;
   p.library_paths = o.library_paths;
-  p.declares = o.declares;
+  // POV-Ray's parser reads each Declare= as printed with six significant digits (animation.hpp, declared_value).
+  for (const auto& [name, value] : o.declares) p.declares.emplace_back(name, declared_value(value));
   p.image_width = o.width;
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
@@ -99,9 +100,27 @@ std::string stats_json(const RenderOptions& o, const JobResult& r) {
 }
 
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
+  // POV-Ray parses the scene anew for every frame (its #fopen files, rand streams and #declares start over).
+  const FramePlan plan = plan_frames(options.animation);
+  JobResult r;
+  for (long long i = 0; i < plan.count(); ++i) {
+    const Frame frame = plan.at(i);
+    if (plan.animated)
+      std::fprintf(stderr, "povtrace: frame %lld (%lld of %lld), clock %g\n", frame.number, i + 1, plan.count(),
+                   frame.clock.value_or(0.0));
+    r = render_frame(options, plan, frame, interrupted);
+    r.frames = i + 1;
+    if (r.exit_status != 0) break;
+  }
+  return r;
+}
+
+JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                       const std::atomic<bool>& interrupted) {
   JobResult r;
   const auto start = Clock::now();
   ParseOptions parse_options = parse_options_from(options);
+  set_frame_values(plan, frame, parse_options);
   parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
   const SceneDescription description = parse_scene(options.input, parse_options);
   r.times.parse_s = seconds_since(start);
@@ -131,7 +150,7 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 
   const auto write_start = Clock::now();
   if (options.write_file) {
-    r.output = resolved_output_path(options);
+    r.output = frame_output_path(resolved_output_path(options), plan, frame.number);
     image::write_image(rendered.image, r.output, resolved_encoding(options));
   }
   r.times.write_s = seconds_since(write_start);

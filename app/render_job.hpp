@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "app/animation.hpp"
 #include "app/options.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/tracer.hpp"
@@ -22,11 +23,17 @@ struct JobResult {
   RenderTimes times;
   render::RayCounts rays;
   std::filesystem::path output;
+  long long frames = 0;               // frames rendered (1 for a still)
 };
 
-// Parses, builds, renders and writes per `options`. Throws ParseError / ImageError; returns exit status 1
-// (and writes nothing) when interrupted.
+// Parses, builds, renders and writes per `options`: one image, or every frame of an animation (one file each,
+// numbered as POV-Ray numbers them). Throws ParseError / ImageError; returns exit status 1 when interrupted
+// (the frame being rendered is not written; frames already finished stay). The result is the last frame's.
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted);
+
+// One frame of `plan` (the whole job for a still).
+JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                       const std::atomic<bool>& interrupted);
 
 // Renders with povtrace and with `povray` (same options, EXR), prints both times and the comparison, and writes
 // `<stem>_vs_povray.png` (povtrace | POV-Ray | heat map). Exit 0 within the image thresholds, 1 outside.

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,12 @@ struct ParseOptions {
   // is appended by parse_scene when it exists and is not listed already.
   std::vector<std::filesystem::path> library_paths;
   std::vector<std::pair<std::string, double>> declares;   // Declare=NAME=VALUE
+  // The animation's values for this frame (POV-Ray 3.7's front end declares them for every parse: all 0 when
+  // nothing is animated). `clock` is +K's value or the frame's clock; `clock_on` is true exactly when it is set.
+  std::optional<double> clock;
+  struct FrameValues {
+    double clock_delta = 0, final_clock = 0, final_frame = 0, frame_number = 0, initial_clock = 0, initial_frame = 0;
+  } frame;
   int image_width = 800;
   int image_height = 600;
   bool output_alpha = false;

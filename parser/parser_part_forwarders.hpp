@@ -181,6 +181,7 @@ inline void ExpressionParser::refuse_if_unsupported(const Unsupported& u, const 
   in().unsupported_.refuse_if_unsupported(u, placed_at, what);
 }
 inline int ExpressionParser::language_version() const { return in().statements_.language_version(); }
+inline const ParseOptions& ExpressionParser::parse_options() const { return in().options_; }
 inline const std::optional<double>& ExpressionParser::assumed_gamma() const {
   return in().statements_.assumed_gamma();
 }

@@ -106,6 +106,7 @@ class ExpressionParser {
   inline void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
   // The scene's settings so far, which the image functions' gamma handling reads.
   inline int language_version() const;
+  inline const ParseOptions& parse_options() const;
   inline const std::optional<double>& assumed_gamma() const;
 
   Numeric parse_multiplicative();

@@ -349,7 +349,7 @@ int FunctionParser::parse_operand() {
   if (is_reserved_word(w)) {
     if (w == "x" || w == "y" || w == "z" || w == "u" || w == "v") return variable(t);
     if (w == "pi") return constant(M_PI, t.loc);
-    if (w == "clock") return constant(0, t.loc);   // as `clock` in expressions: no animation
+    if (w == "clock") return constant(in_.clock(), t.loc);   // the frame's clock, as in SDL expressions
     if (const BuiltinInfo* b = find_builtin(w)) return parse_builtin(t, *b);
     if (w == "internal")
       in_.fail_at(t, "'internal(N)' must be the whole body of a function: function { internal(N) }");

@@ -22,6 +22,8 @@ class TextureParser;
 
 class FunctionValues : ParserPart {
  public:
+  // `clock` inside a function body is the frame's clock, a constant (POV-Ray's fnsyntax.cpp).
+  double clock() const { return options_.clock.value_or(0.0); }
   FunctionValues(Interpreter& in, const ParseOptions& options, SymbolTable& symbols, TextureParser& textures,
                  SplineValues& splines)
       : ParserPart(in), options_(options), symbols_(symbols), textures_(textures), splines_(splines) {}

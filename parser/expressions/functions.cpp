@@ -299,8 +299,9 @@ Numeric ExpressionParser::parse_primary(const Token& t) {
   if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
   if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
   if (w == "version") return Numeric::scalar(language_version() / 100.0);
-  if (w == "clock" || w == "clock_delta") return Numeric::scalar(0);
-  if (w == "clock_on") return Numeric::scalar(0);
+  // `clock` and `clock_on` are keywords (clock_delta is a declared identifier): POV-Ray's express.cpp.
+  if (w == "clock") return Numeric::scalar(parse_options().clock.value_or(0.0));
+  if (w == "clock_on") return Numeric::scalar(parse_options().clock ? 1.0 : 0.0);
   // rgb… and color start Parse_Colour, so overrides apply here too (`rgb <1,0,0> filter 0.5`, §5).
   if (w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w.starts_with("srgb") || w == "color" ||
       w == "colour") {

@@ -19,9 +19,12 @@ std::string SceneStatements::reached_from() const { return reader_.stream().reac
 SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
   reader_.stream().open_main(std::move(main_file));
   // Identifiers the front end predeclares as ordinary globals (§3), then the INI/command-line Declare=s.
+  const ParseOptions::FrameValues& f = options_.frame;
   const std::pair<const char*, double> predeclared[] = {
-      {"image_width", options_.image_width}, {"image_height", options_.image_height}, {"clock_delta", 0},
-      {"final_clock", 0}, {"final_frame", 0}, {"frame_number", 0}, {"initial_clock", 0}, {"initial_frame", 0}};
+      {"image_width", options_.image_width}, {"image_height", options_.image_height},
+      {"clock_delta", f.clock_delta},        {"final_clock", f.final_clock},
+      {"final_frame", f.final_frame},        {"frame_number", f.frame_number},
+      {"initial_clock", f.initial_clock},    {"initial_frame", f.initial_frame}};
   for (const auto& [name, value] : predeclared) symbols_.declare(name, Numeric::scalar(value));
   for (const auto& [name, value] : options_.declares) symbols_.declare(name, Numeric::scalar(value));
 

@@ -31,6 +31,11 @@ std::string format_name(const std::optional<FileFormat>& f) {
     case FileFormat::png: return "png";
     case FileFormat::exr: return "exr";
     case FileFormat::ppm: return "ppm";
+    case FileFormat::tga: return "tga";
+    case FileFormat::tga_rle: return "tga_rle";
+    case FileFormat::jpeg: return "jpeg";
+    case FileFormat::bmp: return "bmp";
+    case FileFormat::hdr: return "hdr";
   }
   return "?";
 }
