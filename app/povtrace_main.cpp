@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   using namespace povtrace;
   app::RenderOptions options;
   try {
-    options = app::parse_command_line(argc, argv);
+    const app::IniEnvironment environment = app::process_environment();
+    options = app::parse_command_line(argc, argv, &environment);
   } catch (const app::UsageError& e) {
     std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";
     return 2;
@@ -30,6 +31,15 @@ int main(int argc, char** argv) {
     std::cout << app::usage_text();
     return 0;
   }
+  if (options.version) {
+    std::cout << app::version_text();
+    return 0;
+  }
+  if (options.print != app::RenderOptions::Print::nothing) {
+    std::cout << (options.print == app::RenderOptions::Print::man_page ? app::man_page() : app::switch_table_markdown());
+    return 0;
+  }
+  for (const std::string& w : options.warnings) std::cerr << "povtrace: warning: " << w << "\n";
   if (options.input.empty()) {
     std::cerr << "povtrace: no scene file given\nTry 'povtrace --help'.\n";
     return 2;
