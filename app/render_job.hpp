@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "app/messages.hpp"
 #include "app/options.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/tracer.hpp"
@@ -25,8 +26,11 @@ struct JobResult {
 };
 
 // Parses, builds, renders and writes per `options`. Throws ParseError / ImageError; returns exit status 1
-// (and writes nothing) when interrupted.
-JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted);
+// (and writes nothing) when interrupted. Text goes to `messages` (main's, with the +G streams); without them,
+// to a Messages opened from options.streams. Runs Pre_Scene_Command before the parse and Post_Scene_Command
+// after the image is written (app/shellouts.hpp). Input "-" reads the scene from standard input.
+JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted,
+                     Messages* messages = nullptr);
 
 // Renders with povtrace and with `povray` (same options, EXR), prints both times and the comparison, and writes
 // `<stem>_vs_povray.png` (povtrace | POV-Ray | heat map). Exit 0 within the image thresholds, 1 outside.
