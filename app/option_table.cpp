@@ -58,8 +58,12 @@ void sw_display(RenderOptions& o, bool on, string_view v, string_view w) {
 
 void sw_input(RenderOptions& o, bool, string_view v, string_view w) { set_input(o, v, w); }
 void sw_library(RenderOptions& o, bool, string_view v, string_view w) { add_library(o, v, w); }
-void set_header(RenderOptions& o, string_view v, string_view c) { o.include_header = non_empty(v, c, "file name"); }
-void sw_header(RenderOptions& o, bool, string_view v, string_view w) { set_header(o, v, w); }
+void sw_header(RenderOptions& o, bool, string_view v, string_view w) { o.include_header = non_empty(v, w, "file name"); }
+// In an INI file an empty value means none (POV-Ray's own Create_Ini writes `Include_Header=`).
+void set_header(RenderOptions& o, string_view v, string_view) {
+  if (v.empty()) o.include_header.reset();
+  else o.include_header = std::string(v);
+}
 void include_ini(RenderOptions& o, string_view v, string_view c) {
   const std::string name = non_empty(v, c, "file name");
   const std::optional<IniReference> ref = as_ini_reference(name);
@@ -77,6 +81,11 @@ void sw_version(RenderOptions& o, bool, string_view v, string_view w) { set_vers
 // ---- Output -----------------------------------------------------------------------------------------
 
 void sw_output(RenderOptions& o, bool, string_view v, string_view w) { set_output(o, v, w); }
+// Output_File_Name= (empty, as POV-Ray's Create_Ini writes it): the default name.
+void set_output_ini(RenderOptions& o, string_view v, string_view c) {
+  if (v.empty()) o.output.reset();
+  else set_output(o, v, c);
+}
 void sw_width(RenderOptions& o, bool, string_view v, string_view w) { set_width(o, v, w); }
 void sw_height(RenderOptions& o, bool, string_view v, string_view w) { set_height(o, v, w); }
 
@@ -380,7 +389,7 @@ constexpr OptionRow kRows[] = {
     // Output
     {"W", "Width", sw_width, set_width, implemented, Warn::never, "image width"},
     {"H", "Height", sw_height, set_height, implemented, Warn::never, "image height"},
-    {"O", "Output_File_Name", sw_output, set_output, implemented, Warn::never,
+    {"O", "Output_File_Name", sw_output, set_output_ini, implemented, Warn::never,
      "output file or folder/; +O- keeps \"-\" (standard output)"},
     {"F", "Output_To_File", sw_file, set_write_file, implemented, Warn::never,
      "+F[type][bits|g] writes a file, -F none"},
