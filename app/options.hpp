@@ -43,6 +43,32 @@ struct RegionOptions {
   std::optional<double> start_row, end_row, start_column, end_column;
 };
 
+// +G streams (POV-Ray 3.7's text streams): each goes to the console (stderr) and/or a file.
+//   debug = #debug text; warning = parser and povtrace warnings; fatal = errors; render and statistics =
+//   povtrace's summary lines. +GA / All_Console sets every console flag; All_File receives every stream.
+struct MessageStream {
+  bool console = true;
+  std::optional<std::filesystem::path> file;
+};
+
+struct MessageStreams {
+  MessageStream debug, fatal, render, statistics, warning;
+  std::optional<std::filesystem::path> all_file;  // +GA<file> / All_File
+  bool append = false;                            // +GP / Append_File: append to the files instead of replacing
+};
+
+// Pre/Post_Scene_Command, Pre/Post_Frame_Command, User_Abort_Command, Fatal_Error_Command and their *_Return
+// keys (app/shellouts.hpp runs them, only with --allow-shellout).
+struct ShellCommand {
+  std::string command;   // empty: none
+  char action = 'i';     // *_Return: i ignore, s skip frame, a skip all, q quit, u user abort, f fatal error
+  bool negate = false;   // '-' or '!' before the action: act on exit status 0 instead of non-zero
+};
+
+struct ShellCommands {
+  ShellCommand pre_scene, post_scene, pre_frame, post_frame, user_abort, fatal_error;
+};
+
 struct RenderOptions {
   std::filesystem::path input;                  // +I / Input_File_Name / the positional .pov argument
   std::optional<std::filesystem::path> output;  // +O / Output_File_Name; default: input stem + extension, in cwd
@@ -55,6 +81,7 @@ struct RenderOptions {
   bool jitter = true;                           // +J / -J / Jitter (POV-Ray's default is on)
   double jitter_amount = 1.0;                   // +J0.5 / Jitter_Amount (clipped to 0…1)
   double antialias_gamma = 2.5;                 // +AG / Antialias_Gamma
+  bool antialias_gamma_srgb = false;            // Antialias_Gamma=sRGB (antialias_gamma is then 2.2)
   bool output_alpha = false;                    // +UA / Output_Alpha
   bool povray_tolerances = false;               // --povray-tolerances: no rescaling of tiny or huge scenes
   // --no-specialise[=NAME,…]: the general paths instead of the specialised ones (same image, slower)
@@ -67,7 +94,8 @@ struct RenderOptions {
   bool grayscale = false;                       // Grayscale_Output / +FNG
   int compression = 100;                        // Compression: JPEG quality
   std::optional<double> file_gamma;             // File_Gamma (nullopt: sRGB)
-  image::Dither dither = image::Dither::none;   // +TH / Dither, Dither_Method
+  image::Dither dither = image::Dither::none;   // +TH / Dither, Dither_Method: the method in use, or none
+  image::Dither dither_method = image::Dither::floyd_steinberg;  // Dither_Method (POV-Ray's default FS)
   bool write_file = true;                       // +F / -F / Output_To_File: -F renders without writing a file
   int threads = 0;                              // +WT<n> / --threads; 0 = all cores
   std::vector<std::pair<std::string, double>> declares;  // Declare=NAME=VALUE, in order
@@ -81,12 +109,44 @@ struct RenderOptions {
   AnimationOptions animation;
   RegionOptions region;
   bool continue_trace = false;                  // +C / Continue_Trace
+  int quality = 9;                              // +Q / Quality: 0-9 (10, 11 clipped to 9 as POV-Ray)
+  std::vector<std::pair<std::string, std::string>> string_declares;  // Declare=NAME="text", in order
+  std::optional<std::filesystem::path> include_header;  // +HI / Include_Header: read before the scene
+  std::optional<double> language_version;       // +MV / Version: the #version the parse starts with
+  int warning_level = 9;                        // +WL / Warning_Level: 0-4 silence the parser's warnings
+  MessageStreams streams;                       // +GA +GD +GF +GR +GS +GW +GP and the *_Console/*_File keys
+  std::optional<std::filesystem::path> create_ini;  // +GI / Create_Ini: write the resolved settings here
+  ShellCommands shell_commands;                 // *_Command / *_Return
+  bool allow_shellout = false;                  // --allow-shellout: run the shell commands
+  bool version = false;                         // --version
+  enum class Print { nothing, switch_table, man_page };
+  Print print = Print::nothing;                 // --switch-table, --man-page (build time): print and exit
+  // One line per POV-Ray setting that povtrace accepts but does not act on (each key once), and other notes
+  // for the user; main prints them to the warning stream.
+  std::vector<std::string> warnings;
 };
+
+// Where povray.ini is looked for (POV-Ray 3.7 on unix): $POVINI, ./povray.ini, $HOME/.povray/3.7/povray.ini,
+// the system file, $HOME/.povrayrc. Passed in so that tests stay hermetic; main passes the real one.
+struct IniEnvironment {
+  std::optional<std::string> povini;   // $POVINI
+  std::optional<std::string> home;     // $HOME
+  std::filesystem::path system_ini = "/etc/povray/3.7/povray.ini";
+  std::filesystem::path working_directory = ".";
+};
+
+// The process's own environment ($POVINI, $HOME).
+IniEnvironment process_environment();
 
 // Parses argv (argv[0] is skipped). `.ini` arguments (also `file.ini[Section]`) are read in place, in order,
 // relative to the current directory; `Key=Value` arguments are .ini settings, as in POV-Ray; `--` ends the
 // options. A missing scene is not an error here (main decides). Throws UsageError naming the offending option.
-RenderOptions parse_command_line(int argc, const char* const* argv);
+// With `environment`, the first povray.ini found (see IniEnvironment) is read before the arguments, unless an
+// argument is --no-povray-ini; without it (tests) none is read.
+RenderOptions parse_command_line(int argc, const char* const* argv, const IniEnvironment* environment = nullptr);
+
+// The povray.ini that `environment` selects, if any exists.
+std::optional<std::filesystem::path> find_povray_ini(const IniEnvironment& environment);
 
 // Applies one .ini file's keys to `options` (POV-Ray's INI syntax: Key=Value, ';' comments, [sections] ignored
 // except that only the unnamed/first section is read, as POV-Ray does without a section selector).
@@ -107,5 +167,18 @@ image::EncodeOptions resolved_encoding(const RenderOptions& options);
 
 // The text printed by --help.
 std::string usage_text();
+
+// The text printed by --version.
+std::string version_text();
+
+// Every POV-Ray 3.7 switch and INI key with what povtrace does with it, one Markdown table row each
+// (docs/switches.md, the man page).
+std::string switch_table_markdown();
+
+// The man page (roff), generated from the same table at build time.
+std::string man_page();
+
+// The resolved settings as an INI file (+GI / Create_Ini) that reads back to the same options.
+std::string ini_text(const RenderOptions& options);
 
 }  // namespace povtrace::app

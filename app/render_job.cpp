@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "app/shellouts.hpp"
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
 #include "renderer/object_geometry.hpp"
@@ -28,6 +30,10 @@ ParseOptions parse_options_from(const RenderOptions& o) {
   p.library_paths = o.library_paths;
   // POV-Ray's parser reads each Declare= as printed with six significant digits (animation.hpp, declared_value).
   for (const auto& [name, value] : o.declares) p.declares.emplace_back(name, declared_value(value));
+  p.string_declares = o.string_declares;
+  p.include_header = o.include_header;
+  if (o.language_version) p.initial_language_version = static_cast<int>(std::lround(*o.language_version * 100.0));
+  p.warning_level = o.warning_level;
   p.image_width = o.width;
   p.image_height = o.height;
   p.output_alpha = o.output_alpha;
@@ -57,8 +63,9 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
 
 // A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
 // terminal, a line per quarter otherwise (logs stay short).
-std::function<void(double)> progress_reporter(Clock::time_point start) {
+std::function<void(double)> progress_reporter(Clock::time_point start, Messages& messages) {
   const bool tty = isatty(STDERR_FILENO) != 0;
+  if (!messages.console(Stream::render)) return [](double) {};
   auto last_quarter = std::make_shared<int>(0);
   return [=](double done) {
     const double elapsed = seconds_since(start);
@@ -75,14 +82,24 @@ std::function<void(double)> progress_reporter(Clock::time_point start) {
   };
 }
 
-void print_summary(const RenderOptions& o, const JobResult& r) {
-  std::fprintf(stderr,
+void print_summary(const RenderOptions& o, const JobResult& r, Messages& messages) {
+  char line[1024];
+  std::snprintf(line, sizeof line,
                "povtrace: %dx%d, rays: %llu camera, %llu shadow, %llu secondary; parse %.3f s, build %.3f s, "
                "render %.3f s, total %.3f s%s%s\n",
                o.width, o.height, static_cast<unsigned long long>(r.rays.camera),
                static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.secondary),
                r.times.parse_s, r.times.build_s, r.times.render_s, r.times.total_s,
                r.output.empty() ? "" : " -> ", r.output.string().c_str());
+  messages.write(Stream::statistics, line);
+}
+
+// The scene's text: the file, or standard input for "-" (+I-).
+SceneDescription parse_input(const RenderOptions& options, const ParseOptions& parse_options) {
+  if (options.input != "-") return parse_scene(options.input, parse_options);
+  std::ostringstream text;
+  text << std::cin.rdbuf();
+  return parse_scene_text(text.str(), "<stdin>", parse_options);
 }
 }  // namespace
 
@@ -99,51 +116,102 @@ std::string stats_json(const RenderOptions& o, const JobResult& r) {
   return j.str();
 }
 
-JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
+namespace {
+// The % codes' values for one frame of the job.
+ShellContext frame_context(const RenderOptions& options, const std::string& output, const Frame& frame) {
+  ShellContext c = ShellOuts::context_for(options, output);
+  c.frame = static_cast<int>(frame.number);
+  c.clock = frame.clock.value_or(0.0);
+  return c;
+}
+
+// What a shell-out's action means for the job, as POV-Ray's *_Return actions: a fatal error throws, an abort
+// or quit ends the job (exit 1 for the abort), a skip is left to the caller.
+bool ends_job(ShellAction action, const char* key, JobResult& r) {
+  if (action == ShellAction::fatal_error) throw std::runtime_error(std::string(key) + " failed (its *_Return is f)");
+  if (action == ShellAction::user_abort) r.exit_status = 1;
+  return action == ShellAction::user_abort || action == ShellAction::quit || action == ShellAction::skip_all;
+}
+}  // namespace
+
+JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted, Messages* messages_in) {
+  std::optional<Messages> own_messages;
+  if (messages_in == nullptr) own_messages.emplace(options.streams);
+  Messages& messages = messages_in != nullptr ? *messages_in : *own_messages;
+  JobResult r;
+  ShellOuts shellouts(options, [&](const std::string& w) { messages.write(Stream::warning, "povtrace: warning: " + w); });
+  const std::string planned_output = options.write_file ? resolved_output_path(options).string() : std::string();
+  const ShellAction before = shellouts.run(ShellEvent::pre_scene, ShellOuts::context_for(options, planned_output));
+  if (before == ShellAction::fatal_error) throw std::runtime_error("Pre_Scene_Command failed (Pre_Scene_Return=f)");
+  if (before != ShellAction::proceed) {
+    messages.write(Stream::render, "povtrace: Pre_Scene_Command asked to stop; nothing rendered");
+    r.exit_status = before == ShellAction::user_abort ? 1 : 0;
+    return r;
+  }
   // POV-Ray parses the scene anew for every frame (its #fopen files, rand streams and #declares start over).
   const FramePlan plan = plan_frames(options.animation);
-  JobResult r;
+  long long rendered = 0;
   for (long long i = 0; i < plan.count(); ++i) {
     const Frame frame = plan.at(i);
-    if (plan.animated)
-      std::fprintf(stderr, "povtrace: frame %lld (%lld of %lld), clock %g\n", frame.number, i + 1, plan.count(),
-                   frame.clock.value_or(0.0));
-    r = render_frame(options, plan, frame, interrupted);
-    r.frames = i + 1;
-    if (r.exit_status != 0) break;
+    const std::string frame_output =
+        options.write_file ? frame_output_path(resolved_output_path(options), plan, frame.number).string() : "";
+    const ShellAction pre = shellouts.run(ShellEvent::pre_frame, frame_context(options, frame_output, frame));
+    if (ends_job(pre, "Pre_Frame_Command", r)) break;
+    if (pre == ShellAction::skip_frame) continue;
+    if (plan.animated) {
+      std::ostringstream note;
+      note << "povtrace: frame " << frame.number << " (" << i + 1 << " of " << plan.count() << "), clock "
+           << frame.clock.value_or(0.0);
+      messages.write(Stream::render, note.str());
+    }
+    r = render_frame(options, plan, frame, interrupted, messages);
+    r.frames = ++rendered;
+    if (r.exit_status != 0) return r;
+    const ShellAction post = shellouts.run(ShellEvent::post_frame, frame_context(options, r.output.string(), frame));
+    if (ends_job(post, "Post_Frame_Command", r)) break;
   }
+  if (r.exit_status != 0) return r;
+  const ShellAction after = shellouts.run(ShellEvent::post_scene, ShellOuts::context_for(options, r.output.string()));
+  if (after == ShellAction::fatal_error) throw std::runtime_error("Post_Scene_Command failed (Post_Scene_Return=f)");
+  if (after == ShellAction::user_abort) r.exit_status = 1;
   return r;
 }
 
 JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
-                       const std::atomic<bool>& interrupted) {
+                       const std::atomic<bool>& interrupted, Messages& messages) {
   JobResult r;
   const auto start = Clock::now();
   ParseOptions parse_options = parse_options_from(options);
   set_frame_values(plan, frame, parse_options);
   parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
-  const SceneDescription description = parse_scene(options.input, parse_options);
+  parse_options.classified_sink = [&](ParseOptions::MessageKind kind, const std::string& text) {
+    messages.write(kind == ParseOptions::MessageKind::debug ? Stream::debug : Stream::warning, text);
+  };
+  const SceneDescription description = parse_input(options, parse_options);
   r.times.parse_s = seconds_since(start);
 
   const auto build_start = Clock::now();
   const render::RenderScene scene =
       render::build_render_scene(description, {options.output_alpha, options.povray_tolerances, options.specialise});
   r.times.build_s = seconds_since(build_start);
-  if (scene.scale != 1.0 && options.verbose)
-    std::cerr << "povtrace: the scene is rendered rescaled by " << scene.scale
-              << " (its size is far from POV-Ray's tolerances; --povray-tolerances keeps it as written)\n";
-  for (const auto& w : scene.warnings) std::cerr << "povtrace: warning: " << w << "\n";
+  if (scene.scale != 1.0 && options.verbose) {
+    std::ostringstream note;
+    note << "povtrace: the scene is rendered rescaled by " << scene.scale
+         << " (its size is far from POV-Ray's tolerances; --povray-tolerances keeps it as written)";
+    messages.write(Stream::render, note.str());
+  }
+  for (const auto& w : scene.warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
 
   const auto render_start = Clock::now();
   render::RenderSettings settings = render_settings_from(options);
-  settings.progress = progress_reporter(render_start);
+  settings.progress = progress_reporter(render_start, messages);
   settings.cancel = &interrupted;
   render::RenderResult rendered = render::render(scene, settings);
   r.times.render_s = seconds_since(render_start);
-  if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO)) std::cerr << "\n";
+  if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO) && messages.console(Stream::render)) std::cerr << "\n";
   r.rays = rendered.rays;
   if (rendered.cancelled) {
-    std::cerr << "povtrace: interrupted; no image written (an existing output file is left as it was)\n";
+    messages.write(Stream::render, "povtrace: interrupted; no image written (an existing output file is left as it was)");
     r.exit_status = 1;
     return r;
   }
@@ -156,7 +224,7 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   r.times.write_s = seconds_since(write_start);
   r.times.total_s = seconds_since(start);
   r.image = std::move(rendered.image);
-  print_summary(options, r);
+  print_summary(options, r, messages);
   if (options.stats_json) {
     std::ofstream out(*options.stats_json);
     out << stats_json(options, r);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/animation.hpp"
+#include "app/messages.hpp"
 #include "app/options.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/tracer.hpp"
@@ -27,13 +28,17 @@ struct JobResult {
 };
 
 // Parses, builds, renders and writes per `options`: one image, or every frame of an animation (one file each,
-// numbered as POV-Ray numbers them). Throws ParseError / ImageError; returns exit status 1 when interrupted
-// (the frame being rendered is not written; frames already finished stay). The result is the last frame's.
-JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted);
+// numbered as POV-Ray numbers them, the scene parsed anew per frame). Throws ParseError / ImageError; returns
+// exit status 1 when interrupted (the frame being rendered is not written; frames already finished stay).
+// The result is the last frame's. Text goes to `messages` (main's, with the +G streams); without them, to a
+// Messages opened from options.streams. Runs Pre_/Post_Scene_Command around the job and Pre_/Post_Frame_Command
+// around each frame (app/shellouts.hpp). Input "-" reads the scene from standard input.
+JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted,
+                     Messages* messages = nullptr);
 
 // One frame of `plan` (the whole job for a still).
 JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
-                       const std::atomic<bool>& interrupted);
+                       const std::atomic<bool>& interrupted, Messages& messages);
 
 // Renders with povtrace and with `povray` (same options, EXR), prints both times and the comparison, and writes
 // `<stem>_vs_povray.png` (povtrace | POV-Ray | heat map). Exit 0 within the image thresholds, 1 outside.

@@ -33,11 +33,23 @@ struct ParseOptions {
   struct FrameValues {
     double clock_delta = 0, final_clock = 0, final_frame = 0, frame_number = 0, initial_clock = 0, initial_frame = 0;
   } frame;
+  std::vector<std::pair<std::string, std::string>> string_declares;   // Declare=NAME="text" (after the floats)
+  // +HI / Include_Header: a file read as if #included before the scene's first token (found like an #include).
+  std::optional<std::filesystem::path> include_header;
+  // +MV / Version: the language version (round(100 · v)) the parse starts with; a #version changes it as usual.
+  std::optional<int> initial_language_version;
+  // +WL / Warning_Level (0-9): below 5 the parser's warnings and #warning are not reported (POV-Ray's
+  // MessageFactory drops every warning below level 5).
+  int warning_level = 9;
   int image_width = 800;
   int image_height = 600;
   bool output_alpha = false;
   // Receives #debug/#warning text and parser warnings (already formatted). Default: stderr.
   std::function<void(const std::string&)> message_sink;
+  // When set, receives the same text with its kind instead (povtrace's +GD/+GW streams): #debug text, or a
+  // warning (#warning and the parser's own).
+  enum class MessageKind { debug, warning };
+  std::function<void(MessageKind, const std::string&)> classified_sink;
   // Stop with a ParseError after reading this many tokens (0: no limit). POV-Ray runs a runaway #while forever,
   // and so does povtrace by default; the fuzzer (fuzz/) needs every input to end.
   std::uint64_t max_tokens = 0;

@@ -495,7 +495,12 @@ void DirectiveRunner::directive_message(const Token& at, const std::string& kind
   const std::string text = parse_string();
   if (kind == "error") fail_at(at, "#error: " + text);
   std::string out = kind == "warning" ? format_diagnostic(at.loc, "warning", text, {}) : text;
-  if (options_.message_sink) options_.message_sink(out); else std::cerr << out << (kind == "warning" ? "\n" : "");
+  if (kind == "warning" && options_.warning_level < 5) return;
+  if (options_.classified_sink)
+    options_.classified_sink(kind == "warning" ? ParseOptions::MessageKind::warning : ParseOptions::MessageKind::debug,
+                             out);
+  else if (options_.message_sink) options_.message_sink(out);
+  else std::cerr << out << (kind == "warning" ? "\n" : "");
 }
 
 void DirectiveRunner::leaving_include(std::size_t frame, const SourceFile& file) {

@@ -32,9 +32,12 @@ void Diagnostics::fail_unsupported(const Token& t, std::string_view what) const 
 }
 
 void Diagnostics::warn(const SourceLoc& loc, const std::string& message) const {
+  if (options_.warning_level < 5) return;
   std::string text = format_diagnostic(loc, "warning", message, stream_.file_of(loc).line_text(loc.line));
   if (const std::string chain = stream_.reached_from(); !chain.empty()) text += "\n" + chain;
-  if (options_.message_sink) options_.message_sink(text); else std::cerr << text << "\n";
+  if (options_.classified_sink) options_.classified_sink(ParseOptions::MessageKind::warning, text);
+  else if (options_.message_sink) options_.message_sink(text);
+  else std::cerr << text << "\n";
 }
 
 }  // namespace povtrace::sdl

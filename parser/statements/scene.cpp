@@ -27,6 +27,9 @@ SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
       {"initial_clock", f.initial_clock},    {"initial_frame", f.initial_frame}};
   for (const auto& [name, value] : predeclared) symbols_.declare(name, Numeric::scalar(value));
   for (const auto& [name, value] : options_.declares) symbols_.declare(name, Numeric::scalar(value));
+  for (const auto& [name, value] : options_.string_declares) symbols_.declare(name, Value(value));
+  if (options_.initial_language_version) scene_.language_version = *options_.initial_language_version;
+  if (options_.include_header) open_include_header(*options_.include_header);
 
   try {
     while (true) {
@@ -45,6 +48,20 @@ SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
   directives_.check_closed_at_end();
   scene_.file_names = reader_.stream().file_names();
   return std::move(scene_);
+}
+
+// +HI: the header is read as an #include at the scene's first position, so its errors name the header's own
+// file and line, and "included from" names the scene.
+void SceneStatements::open_include_header(const std::filesystem::path& header) {
+  const std::optional<std::filesystem::path> found = directives_.find_include(header.string());
+  Token at;
+  at.kind = TokenKind::identifier;
+  at.loc = SourceLoc{reader_.stream().frame().file->name, 1, 1};
+  if (!found) {
+    throw ParseError(at.loc, "cannot find the Include_Header file \"" + header.string() + "\"");
+  }
+  reader_.stream().push_file(*found, at, TokenStream::Frame::Kind::include);
+  symbols_.push_scope();   // the include's #local scope, closed when the header ends (leaving_include)
 }
 
 void SceneStatements::directive_version(const Token& at) {

@@ -51,6 +51,7 @@ class SceneStatements : ParserPart {
   SceneDescription run(std::unique_ptr<SourceFile> main_file);
   void parse_default(const Token& keyword);
   void directive_version(const Token& at);
+  void open_include_header(const std::filesystem::path& header);
   void place_object(Object&& object, const SourceLoc& at);   // finished in place, then moved into the scene once
   void place_light(Light light, const SourceLoc& at);
 

@@ -206,7 +206,8 @@ INSTANTIATE_TEST_SUITE_P(FileType, ParsesTo, ::testing::Values(
     ParseCase{{"+FN16", "+FN"}, [](RenderOptions& o) { o.format = FileFormat::png, o.bits_per_channel = 16; }},
     ParseCase{{"+FN16", "+FP"}, [](RenderOptions& o) { o.format = FileFormat::ppm, o.bits_per_channel = 16; }},
     ParseCase{{"+FE"}, [](RenderOptions& o) { o.format = FileFormat::exr; }},
-    ParseCase{{"+fe16"}, [](RenderOptions& o) { o.format = FileFormat::exr; }},
+    // As povray, the bits after +FE set Bits_Per_Color (EXR ignores them).
+    ParseCase{{"+fe16"}, [](RenderOptions& o) { o.format = FileFormat::exr, o.bits_per_channel = 16; }},
     ParseCase{{"+FP"}, [](RenderOptions& o) { o.format = FileFormat::ppm; }},
     ParseCase{{"+FP16"}, [](RenderOptions& o) { o.format = FileFormat::ppm, o.bits_per_channel = 16; }},
     ParseCase{{"-F"}, [](RenderOptions& o) { o.write_file = false; }},
@@ -327,8 +328,8 @@ INSTANTIATE_TEST_SUITE_P(Numbers, Rejects, ::testing::Values(
     ErrorCase{{"--jitter=x"}, {"--jitter=x:"}}));
 
 INSTANTIATE_TEST_SUITE_P(Unknown, Rejects, ::testing::Values(
-    ErrorCase{{"+Q9"}, {"unknown option '+Q9'"}},
-    ErrorCase{{"-MV3.7"}, {"unknown option '-MV3.7'"}},
+    ErrorCase{{"+Z9"}, {"unknown option '+Z9'"}},
+    ErrorCase{{"-MX3.7"}, {"unknown option '-MX3.7'"}},
     ErrorCase{{"--xyz"}, {"unknown option '--xyz'"}},
     ErrorCase{{"--xyz=3"}, {"unknown option '--xyz=3'"}},
     ErrorCase{{"--Width=3"}, {"unknown option '--Width=3'"}},
@@ -352,8 +353,9 @@ INSTANTIATE_TEST_SUITE_P(Values, Rejects, ::testing::Values(
     ErrorCase{{"--output"}, {"--output", "needs a value"}},
     ErrorCase{{"--stats="}, {"--stats=:", "missing"}},
     ErrorCase{{"+FX"}, {"+FX:", "'X'"}},
-    ErrorCase{{"+FT"}, {"+FT:"}},
-    ErrorCase{{"+FN12"}, {"+FN12:", "8 or 16"}},
+    ErrorCase{{"+FTx"}, {"+FTx:"}},
+    ErrorCase{{"+FJg"}, {"+FJg:", "PNG and PPM only"}},
+    ErrorCase{{"+FN1x"}, {"+FN1x:"}},
     ErrorCase{{"+FN16x"}, {"+FN16x:"}},
     ErrorCase{{"+FEx"}, {"+FEx:"}},
     ErrorCase{{"--format=tga"}, {"--format=tga:", "'tga'"}},
@@ -510,10 +512,11 @@ INSTANTIATE_TEST_SUITE_P(Ini, IniErrors, ::testing::Values(
                  "e.ini:1: Antialias: expected on/off, true/false, yes/no or 1/0, got 'maybe'"},
     IniErrorCase{"Declare=N=abc\n", "e.ini:1: Declare: the value of N must be a number, got 'abc'"},
     IniErrorCase{"Output_File_Type=Q\n",
-                 "e.ini:1: Output_File_Type: unknown output file type 'Q' (N = PNG, E = EXR, P = PPM)"},
+                 "e.ini:1: Output_File_Type: unknown output file type 'Q' (N = PNG, E = EXR, P = PPM, T = TGA, "
+                 "C = compressed TGA, J = JPEG, B = BMP, H = Radiance HDR)"},
     IniErrorCase{"Width=16\nAntialias\n", "e.ini:2: expected Key=Value, got 'Antialias'"},
     IniErrorCase{"// not a comment\n", "e.ini:1: expected Key=Value, got '// not a comment'"},
-    IniErrorCase{"+W16 +Q9\n", "e.ini:1: unknown option '+Q9'"},
+    IniErrorCase{"+W16 +Z9\n", "e.ini:1: unknown option '+Z9'"},
     IniErrorCase{"+Wx\n", "e.ini:1: +Wx: expected a whole number from 1 to 65536, got 'x'"},
     IniErrorCase{"missing.ini\n", "cannot read .ini file 'missing.ini'"}));
 

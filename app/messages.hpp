@@ -1,0 +1,37 @@
+// povtrace's text output as POV-Ray's five streams (+GD +GF +GR +GS +GW, +GA, *_Console, *_File, +GP):
+// each line goes to stderr when its stream's console flag is on, and to the stream's file and All_File when
+// they are set. Files are opened once per run, replaced or (Append_File) appended to.
+#pragma once
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/options.hpp"
+
+namespace povtrace::app {
+
+enum class Stream { debug, fatal, render, statistics, warning };
+
+class Messages {
+ public:
+  // Console only, every stream on (what povtrace did before the streams existed).
+  Messages();
+  // Opens the files the options name; throws std::runtime_error naming a file that cannot be opened.
+  explicit Messages(const MessageStreams& streams);
+
+  // One message (a newline is added unless it ends in one; #debug text is written as it is).
+  void write(Stream stream, const std::string& text);
+  bool console(Stream stream) const;
+
+ private:
+  struct Target {
+    bool console = true;
+    std::shared_ptr<std::ofstream> file;
+  };
+  Target targets_[5];
+  std::shared_ptr<std::ofstream> all_file_;
+};
+
+}  // namespace povtrace::app
