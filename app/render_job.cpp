@@ -131,7 +131,10 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 
   const auto write_start = Clock::now();
   if (options.write_file) {
-    r.output = resolved_output_path(options);
+    // +O- (POV-Ray also takes "stdout"): the whole file goes to standard output; messages stay on stderr.
+    const bool to_stdout = options.output && (*options.output == image::standard_output_path ||
+                                              *options.output == "stdout");
+    r.output = to_stdout ? image::standard_output_path : resolved_output_path(options);
     image::write_image(rendered.image, r.output, resolved_encoding(options));
   }
   r.times.write_s = seconds_since(write_start);
