@@ -178,12 +178,13 @@ void apply_positional(const std::string& arg, RenderOptions& o, bool& scene_seen
 
 // ---- Output file ----------------------------------------------------------------------------------
 
+// POV-Ray's default extension for each output type (imageprocessing.cpp, GetOutputFilename).
 string_view extension_of(image::FileFormat format) {
   switch (format) {
     case image::FileFormat::png: return ".png";
     case image::FileFormat::exr: return ".exr";
     case image::FileFormat::ppm: return ".ppm";
-    case image::FileFormat::tga: return ".tga";
+    case image::FileFormat::tga:
     case image::FileFormat::tga_rle: return ".tga";
     case image::FileFormat::jpeg: return ".jpg";
     case image::FileFormat::bmp: return ".bmp";
@@ -309,10 +310,11 @@ image::EncodeOptions resolved_encoding(const RenderOptions& options) {
   if (encoding.format == image::FileFormat::exr) {
     encoding.exr_full_float = options.exr_full_float;
   } else {
-    encoding.bits_per_channel = options.bits_per_channel;
+    // POV-Ray clips Bits_Per_Color to 5-16 (imageprocessing.cpp).
+    encoding.bits_per_channel = std::clamp(options.bits_per_channel, 5, 16);
   }
   encoding.grayscale = options.grayscale;
-  encoding.jpeg_quality = options.compression;
+  encoding.jpeg_quality = options.compression;  // the JPEG writer maps 0 and 1 to 85, as POV-Ray
   encoding.file_gamma = options.file_gamma;
   encoding.dither = options.dither;
   return encoding;

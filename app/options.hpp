@@ -92,7 +92,7 @@ struct RenderOptions {
   int bits_per_channel = 8;                     // +FN16 / +FP16 / Bits_Per_Color (8 or 16; ignored for EXR)
   bool exr_full_float = false;                  // --format=exr32 (POV-Ray's own EXR, +FE, is half float)
   bool grayscale = false;                       // Grayscale_Output / +FNG
-  int compression = 100;                        // Compression: JPEG quality
+  int compression = 0;                          // Compression: JPEG quality (0 and 1 mean 85, as POV-Ray)
   std::optional<double> file_gamma;             // File_Gamma (nullopt: sRGB)
   image::Dither dither = image::Dither::none;   // +TH / Dither, Dither_Method: the method in use, or none
   image::Dither dither_method = image::Dither::floyd_steinberg;  // Dither_Method (POV-Ray's default FS)

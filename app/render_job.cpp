@@ -218,7 +218,11 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
 
   const auto write_start = Clock::now();
   if (options.write_file) {
-    r.output = frame_output_path(resolved_output_path(options), plan, frame.number);
+    // +O- (POV-Ray also takes "stdout"): the whole file goes to standard output; messages stay on stderr.
+    const bool to_stdout = options.output && (*options.output == image::standard_output_path ||
+                                              *options.output == "stdout");
+    r.output = to_stdout ? image::standard_output_path
+                         : frame_output_path(resolved_output_path(options), plan, frame.number);
     image::write_image(rendered.image, r.output, resolved_encoding(options));
   }
   r.times.write_s = seconds_since(write_start);

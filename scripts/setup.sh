@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config        # build
   tao-pegtl-dev                    # PEGTL lexer
-  libopenexr-dev libpng-dev        # image output
+  libopenexr-dev libpng-dev libjpeg62-turbo-dev  # image output
   libembree-dev                    # nearest triangle of large meshes
   libgtest-dev                     # unit tests
   povray povray-includes           # reference renders, standard include files, bench comparison

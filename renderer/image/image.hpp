@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -43,22 +44,35 @@ enum class Dither { none, bayer2, bayer3, bayer4, diffusion1d, diffusion2d, floy
 
 struct EncodeOptions {
   FileFormat format = FileFormat::png;
-  int bits_per_channel = 8;     // PNG and PPM: 8 or 16 (POV-Ray's Bits_Per_Color)
+  int bits_per_channel = 8;     // PNG and PPM: 5 to 16 (POV-Ray's Bits_Per_Color)
   bool exr_full_float = false;  // EXR: 32-bit float instead of POV-Ray's half
   bool grayscale = false;       // Grayscale_Output / +F…G (PNG and PPM)
-  int jpeg_quality = 100;       // Compression (JPEG quality 0-100)
+  int jpeg_quality = 0;         // Compression (JPEG quality; POV-Ray's default 0, like 1, means 85)
   std::optional<double> file_gamma;  // File_Gamma: a power; nullopt = sRGB (POV-Ray 3.7's default)
   Dither dither = Dither::none; // Dither / Dither_Method
 };
 
-// The format named by a file's extension (.png, .exr, .ppm; case-insensitive), if any.
+// The format named by a file's extension (.png, .exr, .ppm/.pgm, .tga, .bmp, .hdr, .jpg/.jpeg; case-insensitive),
+// if any. .tga names uncompressed Targa (POV-Ray names compressed Targa .tga too).
 std::optional<FileFormat> format_from_extension(const std::filesystem::path& path);
 
+// The output path meaning standard output (POV-Ray's +O-).
+inline const std::filesystem::path standard_output_path{"-"};
+
 // Writes `image` (linear) to `path`: to a temporary file in the same folder, then renamed over `path`, so a
-// failure never leaves a partial file and never destroys an existing one. Throws ImageError.
+// failure never leaves a partial file and never destroys an existing one. For `standard_output_path`, as
+// write_image_to(std::cout). Throws ImageError.
 void write_image(const Image& image, const std::filesystem::path& path, const EncodeOptions& options);
 
-// Reads an EXR (linear) or PNG/PPM (encoded) file. Throws ImageError for a missing or unreadable file.
+// Encodes the whole file in memory, then writes it to `out` at once: a failure writes nothing. Only the formats
+// POV-Ray writes to standard output (PNG, PPM, TGA, BMP, HDR); EXR and JPEG throw ImageError.
+void write_image_to(std::ostream& out, const Image& image, const EncodeOptions& options);
+
+// The whole file for `image` in any format but EXR. Throws ImageError.
+std::string encode_image(const Image& image, const EncodeOptions& options);
+
+// Reads an EXR or HDR (linear) or PNG/PPM/PGM/TGA/BMP/JPEG (encoded) file, recognised by its first bytes.
+// Throws ImageError for a missing or unreadable file.
 Image read_image(const std::filesystem::path& path);
 
 // sRGB transfer curve (IEC 61966-2-1), POV-Ray's default File_Gamma.

@@ -1,5 +1,6 @@
-// Format dispatch, the sRGB curve and linearisation. The format writers and readers live in exr_io, png_io and
-// ppm_io; write_image adds validation and the atomic replacement of the destination (atomic_file).
+// Format dispatch, the sRGB curve and linearisation. The format writers and readers live in exr_io, png_io,
+// ppm_io, tga_io, bmp_io, hdr_io and jpeg_io; write_image adds validation and the atomic replacement of the
+// destination (atomic_file), or writes the whole encoded file to standard output for the path "-".
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -7,13 +8,19 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <string>
 
 #include "renderer/image/atomic_file.hpp"
+#include "renderer/image/bmp_io.hpp"
+#include "renderer/image/encoded_file.hpp"
 #include "renderer/image/exr_io.hpp"
+#include "renderer/image/hdr_io.hpp"
 #include "renderer/image/image.hpp"
+#include "renderer/image/jpeg_io.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/image/ppm_io.hpp"
+#include "renderer/image/tga_io.hpp"
 
 namespace povtrace::image {
 namespace {
@@ -33,25 +40,52 @@ std::string lower(std::string text) {
   return text;
 }
 
+const char* format_name(FileFormat format) {
+  switch (format) {
+    case FileFormat::png: return "PNG";
+    case FileFormat::exr: return "EXR";
+    case FileFormat::ppm: return "binary PPM (P6)";
+    case FileFormat::tga: return "Targa";
+    case FileFormat::tga_rle: return "compressed Targa";
+    case FileFormat::jpeg: return "JPEG";
+    case FileFormat::bmp: return "BMP";
+    case FileFormat::hdr: return "Radiance HDR";
+  }
+  return "unknown";
+}
+
 void check_writable(const Image& image, const EncodeOptions& options) {
   if (image.width <= 0 || image.height <= 0) throw ImageError("the image is empty");
   if (image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw ImageError("the image's pixel buffer does not match its size");
   }
-  const bool integer_format = options.format != FileFormat::exr;
-  if (integer_format && options.bits_per_channel != 8 && options.bits_per_channel != 16) {
-    throw ImageError("PNG and PPM take 8 or 16 bits per channel, not " + std::to_string(options.bits_per_channel));
+  const bool variable_depth = options.format == FileFormat::png || options.format == FileFormat::ppm;
+  if (variable_depth && (options.bits_per_channel < 5 || options.bits_per_channel > 16)) {
+    throw ImageError("PNG and PPM take 5 to 16 bits per channel, not " + std::to_string(options.bits_per_channel));
   }
+  if (options.file_gamma && !(*options.file_gamma > 0.0)) throw ImageError("File_Gamma must be positive");
+}
+
+// POV-Ray writes only these formats to standard output (imageprocessing.cpp, GetOutputFilename).
+bool streamable(FileFormat format) {
+  switch (format) {
+    case FileFormat::hdr:
+    case FileFormat::png:
+    case FileFormat::tga:
+    case FileFormat::tga_rle:
+    case FileFormat::ppm:
+    case FileFormat::bmp: return true;
+    case FileFormat::exr:
+    case FileFormat::jpeg: return false;
+  }
+  return false;
 }
 
 void write_format(const Image& image, const fs::path& file, const EncodeOptions& options) {
-  switch (options.format) {
-    case FileFormat::exr:
-      write_exr(image.encoding == Encoding::linear ? image : to_linear(image), file, options.exr_full_float);
-      return;
-    case FileFormat::png: write_png(image, file, options.bits_per_channel); return;
-    case FileFormat::ppm: write_ppm(image, file, options.bits_per_channel); return;
-    default: throw ImageError("this output format's writer is not built yet");  // issue 18, step 6 (in progress)
+  if (options.format == FileFormat::exr) {
+    write_exr(image.encoding == Encoding::linear ? image : to_linear(image), file, options.exr_full_float);
+  } else {
+    write_bytes(file, encode_image(image, options));
   }
 }
 
@@ -67,7 +101,14 @@ std::optional<FileFormat> format_from_magic(const fs::path& path) {
   };
   if (starts_with({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return FileFormat::png;
   if (starts_with({0x76, 0x2f, 0x31, 0x01})) return FileFormat::exr;
-  if (starts_with({'P', '6'})) return FileFormat::ppm;
+  if (starts_with({'P', '6'}) || starts_with({'P', '5'})) return FileFormat::ppm;
+  if (starts_with({'B', 'M'})) return FileFormat::bmp;
+  if (starts_with({'#', '?'})) return FileFormat::hdr;
+  if (starts_with({0xff, 0xd8, 0xff})) return FileFormat::jpeg;
+  // Targa has no signature: an uncompressed or RLE true-colour/grey image type with no colour map.
+  if (in.gcount() >= 3 && head[1] == 0 && (head[2] == 2 || head[2] == 3 || head[2] == 10 || head[2] == 11)) {
+    return FileFormat::tga;
+  }
   return std::nullopt;
 }
 
@@ -76,7 +117,11 @@ Image read_format(const fs::path& path, FileFormat format) {
     case FileFormat::exr: return read_exr(path);
     case FileFormat::png: return read_png(path);
     case FileFormat::ppm: return read_ppm(path);
-    default: break;
+    case FileFormat::tga:
+    case FileFormat::tga_rle: return decode_tga(read_bytes(path));
+    case FileFormat::bmp: return decode_bmp(read_bytes(path));
+    case FileFormat::hdr: return decode_hdr(read_bytes(path));
+    case FileFormat::jpeg: return decode_jpeg(read_bytes(path));
   }
   throw ImageError("unknown file format");
 }
@@ -84,9 +129,8 @@ Image read_format(const fs::path& path, FileFormat format) {
 std::string unrecognised_message(const fs::path& path) {
   const std::string message = "cannot read '" + path.string() + "': ";
   const std::optional<FileFormat> named = format_from_extension(path);
-  if (!named) return message + "not a PNG, EXR or binary PPM (P6) file";
-  const char* names[] = {"PNG", "EXR", "binary PPM (P6)"};
-  return message + "not a valid " + names[static_cast<int>(*named)] + " file (unrecognised signature)";
+  if (!named) return message + "not a PNG, EXR, PPM, Targa, BMP, Radiance HDR or JPEG file";
+  return message + "not a valid " + format_name(*named) + " file (unrecognised signature)";
 }
 
 // Encoded premultiplied colour → linear premultiplied colour, one pixel.
@@ -103,11 +147,49 @@ std::optional<FileFormat> format_from_extension(const fs::path& path) {
   const std::string extension = lower(path.extension().string());
   if (extension == ".png") return FileFormat::png;
   if (extension == ".exr") return FileFormat::exr;
-  if (extension == ".ppm") return FileFormat::ppm;
+  if (extension == ".ppm" || extension == ".pgm") return FileFormat::ppm;
+  if (extension == ".tga") return FileFormat::tga;
+  if (extension == ".bmp") return FileFormat::bmp;
+  if (extension == ".hdr") return FileFormat::hdr;
+  if (extension == ".jpg" || extension == ".jpeg") return FileFormat::jpeg;
   return std::nullopt;
 }
 
+std::string encode_image(const Image& image, const EncodeOptions& options) {
+  check_writable(image, options);
+  switch (options.format) {
+    case FileFormat::png: return encode_png(image, options);
+    case FileFormat::ppm: return encode_ppm(image, options);
+    case FileFormat::tga: return encode_tga(image, options, false);
+    case FileFormat::tga_rle: return encode_tga(image, options, true);
+    case FileFormat::bmp: return encode_bmp(image, options);
+    case FileFormat::hdr: return encode_hdr(image, options);
+    case FileFormat::jpeg: return encode_jpeg(image, options);
+    case FileFormat::exr: break;
+  }
+  throw ImageError("EXR files are written to a path only");
+}
+
+void write_image_to(std::ostream& out, const Image& image, const EncodeOptions& options) {
+  if (!streamable(options.format)) {
+    throw ImageError(std::string("cannot write ") + format_name(options.format) +
+                     " to standard output (only PNG, PPM, Targa, BMP and Radiance HDR, as in POV-Ray)");
+  }
+  const std::string bytes = encode_image(image, options);  // all of it before any byte goes out
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.flush();
+  if (!out) throw ImageError("write error on standard output");
+}
+
 void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {
+  if (path == standard_output_path) {
+    try {
+      write_image_to(std::cout, image, options);
+    } catch (const ImageError& e) {
+      throw ImageError(std::string("cannot write the image to standard output: ") + e.what());
+    }
+    return;
+  }
   try {
     check_writable(image, options);
   } catch (const ImageError& e) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "renderer/image/display_encode.hpp"
+#include "renderer/image/encoded_file.hpp"
 #include "renderer/image/png_common.hpp"
 
 namespace povtrace::image {
@@ -23,7 +24,6 @@ using namespace png_detail;
 
 namespace fs = std::filesystem;
 
-constexpr png_fixed_point srgb_file_gamma = 45455;  // gAMA value for the sRGB curve, ×100000
 constexpr std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 1 GiB of floats: refuse larger files
 
 // ---- writing -------------------------------------------------------------------------------------------------
@@ -51,26 +51,55 @@ struct PngLayout {
   int bit_depth, color_type;
 };
 
-bool run_png_write(PngWriter& w, std::FILE* f, const PngLayout& layout, png_bytepp rows) {
+// The chunks POV-Ray 3.7 writes before the pixels (png.cpp), other than its tIME and tEXt metadata.
+struct PngChunks {
+  png_color_8 significant_bits{};  // sBIT: the requested Bits_Per_Color
+  double file_gamma = 0;           // gAMA: 1 / the curve's approximate decoding gamma
+  bool srgb = false;               // sRGB: only for the sRGB curve
+};
+
+void append_png_data(png_structp png, png_bytep data, png_size_t length) {
+  auto* out = static_cast<std::string*>(png_get_io_ptr(png));
+  try {
+    out->append(reinterpret_cast<const char*>(data), length);
+  } catch (const std::bad_alloc&) {
+    png_error(png, "out of memory");
+  }
+}
+
+void flush_png_data(png_structp) {}
+
+bool run_png_write(PngWriter& w, std::string* out, const PngLayout& layout, PngChunks& chunks, png_bytepp rows) {
   if (setjmp(png_jmpbuf(w.png))) return false;
-  png_init_io(w.png, f);
+  png_set_write_fn(w.png, out, append_png_data, flush_png_data);
   png_set_IHDR(w.png, w.info, layout.width, layout.height, layout.bit_depth, layout.color_type,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_gAMA_fixed(w.png, w.info, srgb_file_gamma);
-  png_set_sRGB(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_set_sBIT(w.png, w.info, &chunks.significant_bits);
+  png_set_gAMA(w.png, w.info, chunks.file_gamma);
+  if (chunks.srgb) png_set_sRGB(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_set_oFFs(w.png, w.info, 0, 0, PNG_OFFSET_PIXEL);
   png_write_info(w.png, w.info);
   png_write_image(w.png, rows);
   png_write_end(w.png, nullptr);
   return true;
 }
 
-// Samples as PNG bytes: one byte each at 8 bits, big-endian pairs at 16.
+// A `bits`-bit sample widened to the 8- or 16-bit container by left bit replication, as POV-Ray stores
+// Bits_Per_Color 5-7 and 9-15 (the sBIT chunk records the true depth).
+unsigned widen(unsigned sample, int bits) {
+  const int container = bits <= 8 ? 8 : 16;
+  if (bits == container) return sample;
+  return ((sample << (container - bits)) | (sample >> (2 * bits - container))) & ((1u << container) - 1u);
+}
+
+// Samples as PNG bytes: one byte each in an 8-bit container, big-endian pairs in a 16-bit one.
 std::vector<png_byte> to_png_bytes(const std::vector<std::uint16_t>& samples, int bits) {
   std::vector<png_byte> bytes;
-  bytes.reserve(samples.size() * (bits == 16 ? 2 : 1));
+  bytes.reserve(samples.size() * (bits > 8 ? 2 : 1));
   for (const std::uint16_t s : samples) {
-    if (bits == 16) bytes.push_back(static_cast<png_byte>(s >> 8));
-    bytes.push_back(static_cast<png_byte>(s & 0xff));
+    const unsigned wide = widen(s, bits);
+    if (bits > 8) bytes.push_back(static_cast<png_byte>(wide >> 8));
+    bytes.push_back(static_cast<png_byte>(wide & 0xff));
   }
   return bytes;
 }
@@ -80,6 +109,20 @@ std::vector<png_bytep> row_pointers(std::vector<png_byte>& bytes, std::size_t he
   const std::size_t stride = height == 0 ? 0 : bytes.size() / height;
   for (std::size_t y = 0; y < height; ++y) rows[y] = bytes.data() + y * stride;
   return rows;
+}
+
+PngChunks chunks_for(const SampleLayout& layout, int bits) {
+  PngChunks chunks;
+  const auto b = static_cast<png_byte>(bits);
+  if (layout.grey) {
+    chunks.significant_bits.gray = b;
+  } else {
+    chunks.significant_bits.red = chunks.significant_bits.green = chunks.significant_bits.blue = b;
+  }
+  if (layout.alpha) chunks.significant_bits.alpha = b;
+  chunks.file_gamma = 1.0f / layout.curve.approximate_decoding_gamma();
+  chunks.srgb = layout.curve.kind == TransferCurve::Kind::srgb;
+  return chunks;
 }
 
 // ---- reading -------------------------------------------------------------------------------------------------
@@ -134,21 +177,33 @@ void check_layout(const PngLayout& layout, int channels) {
 
 }  // namespace
 
-void write_png(const Image& image, const fs::path& file, int bits_per_channel) {
-  std::vector<png_byte> bytes = to_png_bytes(display_samples(image, bits_per_channel, image.has_alpha),
-                                             bits_per_channel);
+std::string encode_png(const Image& image, const EncodeOptions& options) {
+  // POV-Ray writes greyscale PNGs with 16 bits whatever Bits_Per_Color says.
+  const int bits = options.grayscale ? 16 : options.bits_per_channel;
+  SampleLayout layout;
+  layout.max_value = (1u << bits) - 1u;
+  layout.alpha = image.has_alpha;
+  layout.grey = options.grayscale;
+  layout.curve = TransferCurve::from_file_gamma(options.file_gamma);
+  layout.dither = options.dither;
+  std::vector<png_byte> bytes = to_png_bytes(encode_samples(image, layout), bits);
   std::vector<png_bytep> rows = row_pointers(bytes, static_cast<std::size_t>(image.height));
-  const PngLayout layout{static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
-                         bits_per_channel, image.has_alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB};
-  FilePtr f = open_file(file, "wb");
+  const int colour = layout.grey ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB;
+  const PngLayout png_layout{static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
+                             bits > 8 ? 16 : 8, colour | (layout.alpha ? PNG_COLOR_MASK_ALPHA : 0)};
+  PngChunks chunks = chunks_for(layout, bits);
+  std::string out;
   PngWriter writer;
-  if (!run_png_write(writer, f.get(), layout, rows.data())) {
+  if (!run_png_write(writer, &out, png_layout, chunks, rows.data())) {
     throw ImageError(std::string("libpng: ") + writer.error.text);
   }
-  if (std::fflush(f.get()) != 0 || std::ferror(f.get()) != 0) {
-    throw ImageError(std::string("write error: ") + std::strerror(errno));
-  }
-  if (std::fclose(f.release()) != 0) throw ImageError(std::string("write error on close: ") + std::strerror(errno));
+  return out;
+}
+
+void write_png(const Image& image, const fs::path& file, int bits_per_channel) {
+  EncodeOptions options;
+  options.bits_per_channel = bits_per_channel;
+  write_bytes(file, encode_png(image, options));
 }
 
 Image read_png(const fs::path& file) {

@@ -577,7 +577,9 @@ INSTANTIATE_TEST_SUITE_P(Output, ResolvesOutput, ::testing::Values(
     OutputCase{[](RenderOptions& o) { o.output = "out"; }, "out.png", FileFormat::png, 8, false},
     OutputCase{[](RenderOptions& o) { o.output = "out", o.format = FileFormat::exr; }, "out.exr", FileFormat::exr,
                8, false},
-    OutputCase{[](RenderOptions& o) { o.output = "out.tga"; }, "out.tga.png", FileFormat::png, 8, false},
+    OutputCase{[](RenderOptions& o) { o.output = "out.tga"; }, "out.tga", FileFormat::tga, 8, false},
+    OutputCase{[](RenderOptions& o) { o.output = "out.jpg"; }, "out.jpg", FileFormat::jpeg, 8, false},
+    OutputCase{[](RenderOptions& o) { o.output = "out.gif"; }, "out.gif.png", FileFormat::png, 8, false},
     OutputCase{[](RenderOptions& o) { o.output = "out.exr", o.format = FileFormat::png; }, "out.exr.png",
                FileFormat::png, 8, false},
     // A folder: trailing '/' (need not exist) or an existing folder gets the default name.

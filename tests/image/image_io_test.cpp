@@ -28,7 +28,13 @@ TEST(ImageIo, FormatFromExtension) {
   EXPECT_EQ(format_from_extension("B.PNG"), FileFormat::png);
   EXPECT_EQ(format_from_extension("x.Exr"), FileFormat::exr);
   EXPECT_EQ(format_from_extension("x.ppm"), FileFormat::ppm);
-  EXPECT_EQ(format_from_extension("x.jpg"), std::nullopt);
+  EXPECT_EQ(format_from_extension("x.pgm"), FileFormat::ppm);
+  EXPECT_EQ(format_from_extension("x.tga"), FileFormat::tga);  // POV-Ray's extension for +FT and +FC
+  EXPECT_EQ(format_from_extension("x.BMP"), FileFormat::bmp);
+  EXPECT_EQ(format_from_extension("x.hdr"), FileFormat::hdr);
+  EXPECT_EQ(format_from_extension("x.jpg"), FileFormat::jpeg);
+  EXPECT_EQ(format_from_extension("x.jpeg"), FileFormat::jpeg);
+  EXPECT_EQ(format_from_extension("x.gif"), std::nullopt);
   EXPECT_EQ(format_from_extension("png"), std::nullopt);
   EXPECT_EQ(format_from_extension("x.png.bak"), std::nullopt);
 }

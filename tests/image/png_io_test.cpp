@@ -155,12 +155,14 @@ TEST(PngIo, EncodedImageIsWrittenAsIs) {
   EXPECT_EQ(stored_samples(read, 0, 8), (Samples{128, 64, 255}));  // floor(0.5·255 + 0.5) = 128
 }
 
-TEST(PngIo, RejectsOtherBitDepths) {
+TEST(PngIo, RejectsBitDepthsOutsidePovRaysRange) {
   ScratchFolder folder;
   EncodeOptions options;
   options.format = FileFormat::png;
-  options.bits_per_channel = 12;
-  EXPECT_THROW(write_image(Image(1, 1), folder / "out.png", options), ImageError);
+  for (const int bits : {4, 17}) {
+    options.bits_per_channel = bits;
+    EXPECT_THROW(write_image(Image(1, 1), folder / "out.png", options), ImageError);
+  }
   EXPECT_TRUE(folder.entries().empty());
 }
 

@@ -120,7 +120,7 @@ TEST_F(Povdiff, BadInputExitsWithTwo) {
   EXPECT_EQ(run_povdiff(folder, a + " " + b + " --threshold 1/0").status, 2);
   EXPECT_EQ(run_povdiff(folder, a + " " + b + " --bogus 1").status, 2);
   EXPECT_EQ(run_povdiff(folder, a + " " + b + " --min-psnr").status, 2);
-  EXPECT_EQ(run_povdiff(folder, a + " " + b + " --diff out.jpg").status, 2);
+  EXPECT_EQ(run_povdiff(folder, a + " " + b + " --diff out.gif").status, 2);
 }
 
 TEST_F(Povdiff, HelpPrintsUsage) {
