@@ -81,6 +81,7 @@ struct RenderOptions {
   AnimationOptions animation;
   RegionOptions region;
   bool continue_trace = false;                  // +C / Continue_Trace
+  int quality = 9;                              // +Q<n> / Quality: render quality 0…9 (10 and 11 clipped to 9)
 };
 
 // Parses argv (argv[0] is skipped). `.ini` arguments (also `file.ini[Section]`) are read in place, in order,
