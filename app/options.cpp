@@ -170,8 +170,6 @@ void set_display(RenderOptions& o, string_view v, string_view c) { o.display = b
 void set_verbose(RenderOptions& o, string_view v, string_view c) { o.verbose = boolean(v, c); }
 void set_pause(RenderOptions& o, string_view v, string_view c) { o.pause = boolean(v, c); }
 void set_threads(RenderOptions& o, string_view v, string_view c) { o.threads = integer_in(v, c, 0, kMaxThreads); }
-// +Q<n> / Quality=<n>: POV-Ray accepts 0…11 and renders 10 and 11 as 9.
-void set_quality(RenderOptions& o, string_view v, string_view c) { o.quality = std::min(integer_in(v, c, 0, 11), 9); }
 void set_stats(RenderOptions& o, string_view v, string_view c) { o.stats_json = non_empty(v, c, "file name"); }
 
 void set_aa_gamma(RenderOptions& o, string_view v, string_view c) {
@@ -270,7 +268,6 @@ constexpr IniKey kIniKeys[] = {
     {"Verbose", set_verbose},
     {"Pause_When_Done", set_pause},
     {"Work_Threads", set_threads},
-    {"Quality", set_quality},
 };
 
 const IniKey* find_ini_key(string_view key) {
@@ -298,7 +295,6 @@ void switch_sampling(RenderOptions& o, bool, string_view v, string_view w) { set
 void switch_aa_gamma(RenderOptions& o, bool, string_view v, string_view w) { set_aa_gamma(o, v, w); }
 void switch_library(RenderOptions& o, bool, string_view v, string_view w) { add_library(o, v, w); }
 void switch_threads(RenderOptions& o, bool, string_view v, string_view w) { set_threads(o, v, w); }
-void switch_quality(RenderOptions& o, bool, string_view v, string_view w) { set_quality(o, v, w); }
 
 // +A, +A0.3, -A; povray also keeps the threshold of -A0.3 while turning antialiasing off.
 void switch_antialias(RenderOptions& o, bool on, string_view v, string_view w) {
@@ -353,7 +349,6 @@ constexpr SwitchSpec kSwitches[] = {
     {"W", switch_width},     {"UA", switch_alpha},    {"D", switch_display},   {"F", switch_file},
     {"H", switch_height},    {"I", switch_input},     {"J", switch_jitter},    {"L", switch_library},
     {"O", switch_output},    {"P", switch_pause},     {"R", switch_depth},     {"V", switch_verbose},
-    {"Q", switch_quality},
 };
 
 void apply_pov_switch(string_view written, RenderOptions& o) {
