@@ -58,6 +58,7 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
   s.antialias_gamma = o.antialias_gamma;
   s.output_alpha = o.output_alpha;
   s.shading = o.lighting == LightingModel::textbook ? render::ShadingModel::textbook : render::ShadingModel::povray;
+  s.quality = o.quality;
   return s;
 }
 
@@ -191,8 +192,9 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   r.times.parse_s = seconds_since(start);
 
   const auto build_start = Clock::now();
-  const render::RenderScene scene =
-      render::build_render_scene(description, {options.output_alpha, options.povray_tolerances, options.specialise});
+  const render::RenderScene scene = render::build_render_scene(
+      description, {options.output_alpha, options.povray_tolerances, options.specialise,
+                    render::Quality::quick_colours_at(options.quality)});
   r.times.build_s = seconds_since(build_start);
   if (scene.scale != 1.0 && options.verbose) {
     std::ostringstream note;
@@ -250,6 +252,7 @@ std::string povray_command(const RenderOptions& o, const std::filesystem::path& 
   else cmd << " -A";
   cmd << (o.jitter ? " +J" + std::to_string(o.jitter_amount) : std::string(" -J"));
   if (o.output_alpha) cmd << " +UA";
+  if (o.quality != 9) cmd << " +Q" << o.quality;
   for (const auto& l : o.library_paths) cmd << " " << quote("+L" + l.string());
   for (const auto& [name, value] : o.declares) {
     char number[32];

@@ -39,7 +39,7 @@ std::pair<double, double> jitter2d(double x, double y) {
 class BlockRenderer {
  public:
   BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out)
-      : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading) {}
+      : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading, Quality::at_level(s.quality)) {}
 
   void render_block(int x0, int y0, int w, int h) {
     tracer_.forget_shadow_cache();

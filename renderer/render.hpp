@@ -29,6 +29,8 @@ struct RenderSettings {
   bool output_alpha = false;
   ShadingModel shading = ShadingModel::povray;
   int block_size = 32;              // POV-Ray's Render_Block_Size; also method 1's comparison blocks
+  int quality = 9;                  // POV-Ray's +Q0…+Q9 (tracer.hpp Quality); quick colours (+Q0…+Q5) are applied
+                                    // when the scene is built (BuildOptions::quick_colours)
   std::function<void(double fraction_done)> progress;   // called from the calling thread
   const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
 };

@@ -19,12 +19,14 @@ namespace povtrace::render {
 
 namespace {
 Material make_material(const Texture& texture, const std::optional<Interior>& interior, bool uv_mapping,
-                       ImageCache& images) {
+                       ImageCache& images, bool quick_colours) {
   Material m;
   m.interior = interior.value_or(Interior{});
   m.texture = build_render_texture(texture, images);
-  // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3).
+  // Opaque if some layer's pigment has no filter/transmit anywhere (pipeline §3); with quick colours too, as
+  // POV-Ray's parser sets its opaque flag from the pigments themselves.
   m.opaque = texture_is_opaque(m.texture);
+  if (quick_colours) m.texture = build_render_texture(texture, images, true);
   m.uv_mapping = uv_mapping;
   m.needs_uv = uv_mapping || texture_reads_uv(m.texture);
   return m;
@@ -51,12 +53,13 @@ RenderLight make_light(const Light& l) {
 // Objects sharing one texture (and no interior of their own) share one material.
 class MaterialTable {
  public:
-  MaterialTable(std::vector<Material>& materials, ImageCache& images) : materials_(materials), images_(images) {}
+  MaterialTable(std::vector<Material>& materials, ImageCache& images, bool quick_colours)
+      : materials_(materials), images_(images), quick_colours_(quick_colours) {}
   std::uint32_t material_for(const Object& o) {
     const Key key{o.texture.get(), o.uv_mapping};
     auto found = o.interior ? shared_.end() : shared_.find(key);
     if (found != shared_.end()) return found->second;
-    materials_.push_back(make_material(*o.texture, o.interior, o.uv_mapping, images_));
+    materials_.push_back(make_material(*o.texture, o.interior, o.uv_mapping, images_, quick_colours_));
     const auto index = static_cast<std::uint32_t>(materials_.size() - 1);
     if (!o.interior) shared_.emplace(key, index);
     return index;
@@ -64,7 +67,7 @@ class MaterialTable {
   // A mesh placement's own textures, as consecutive materials (the index of the first is returned).
   std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures, const Object& o) {
     const auto first = static_cast<std::uint32_t>(materials_.size());
-    for (const auto& t : textures) materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_));
+    for (const auto& t : textures) materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_, quick_colours_));
     return first;
   }
 
@@ -76,6 +79,7 @@ class MaterialTable {
   };
   std::vector<Material>& materials_;
   ImageCache& images_;
+  bool quick_colours_;
   std::unordered_map<Key, std::uint32_t, KeyHash> shared_;
 };
 
@@ -153,7 +157,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
   ImageCache images;
-  MaterialTable materials(r.materials, images);
+  MaterialTable materials(r.materials, images, options.quick_colours);
   // The scene's noise generator as it stands when the scene ends (POV-Ray: 1 before #version 3.5, 2 from then on).
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   SharedMeshes meshes;              // one BVH per declared mesh, however often it is placed
@@ -202,7 +206,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     r.background_colour = Colour{bg.r * (1.0 - bg.t), bg.g * (1.0 - bg.t), bg.b * (1.0 - bg.t), 0, 0};
   if (scene.sky_sphere) {
     for (const Pigment& p : scene.sky_sphere->pigments) {
-      r.sky_pigments.push_back(build_render_pigment(p, &images));
+      r.sky_pigments.push_back(build_render_pigment(p, &images, options.quick_colours));
       set_generator(r.sky_pigments.back(), generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
       set_function_generator(r.sky_pigments.back(), generator);   // functions read the scene's, Perlin's too
     }

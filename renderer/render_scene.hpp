@@ -230,6 +230,10 @@ struct BuildOptions {
   // The specialised paths the scene may use (Specialisation); those turned off take the general path, for tests
   // that prove the specialised ones change nothing and for measuring what each gains.
   SpecialisationChoice specialise;
+  // Draft quality (+Q0…+Q5, Quality::quick_colours_at): every pigment with a quick_color becomes that solid colour,
+  // wherever it is used (POV-Ray's Compute_Pigment returns the quick colour first). Objects keep the opacity of
+  // their real pigments (POV-Ray's opaque flag is set by the parser).
+  bool quick_colours = false;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

@@ -37,6 +37,17 @@ constexpr double kPhongCutoff = 0.0008;       // phong highlights with size ≥ 
 constexpr double kPhongCutoffSize = 60.0;
 }  // namespace
 
+Quality Quality::at_level(int level) {
+  Quality q;
+  q.full_ambient = level <= 1;
+  q.shadows = level >= 4;
+  q.area_lights = level >= 5;
+  q.refraction = level >= 6;
+  q.reflection = q.normals = level >= 8;
+  q.fog = level >= 9;
+  return q;
+}
+
 double metallic_fade(double x) {
   const double d = x - 1.12;
   return std::clamp(0.014567225 / (d * d) - 0.011612903, 0.0, 1.0);
@@ -68,7 +79,7 @@ Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState&
   const Radiance r =
       hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
   // Fog reaches rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away (hit.t).
-  if (!scene_.fogs.empty() && state.interiors.all_hollow()) return with_fog(ray, hit.t, r);
+  if (fog_ && state.interiors.all_hollow()) return with_fog(ray, hit.t, r);
   return r;
 }
 
@@ -275,6 +286,7 @@ Vec3 Tracer::layer_normal(const RenderNormal& normal, const ShadingPoint& sp, co
 
 Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
                               const TexturePoint& at, int level, double weight, const RayState& state) {
+  if (quality_.full_ambient) [[unlikely]] return unlit_layers(texture, at);
   const Vec3 point = sp.point;
   const Vec3 raw_normal = sp.raw_normal;
   const SurfaceHit& hit = sp.hit;
@@ -290,7 +302,7 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
   for (const RenderLayer& layer : texture.layers) {
     if (trans <= scene_.settings.adc_bailout) break;
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
-    const Vec3 normal = layer.normal ? layer_normal(*layer.normal, sp, at) : raw_normal;
+    const Vec3 normal = layer.normal && quality_.normals ? layer_normal(*layer.normal, sp, at) : raw_normal;
     if (&layer == &texture.layers.front()) top_normal = normal;
     // Not found only off an image map used once: the layer then filters nothing.
     const auto [s, found] = sample_pigment(layer.pigment, at);
@@ -320,15 +332,17 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
 
   const HitContext here{ray, sp, level, weight, state};
   bool total_internal_reflection = false;
-  if (trans > scene_.settings.adc_bailout) {
+  if (trans > transmit_bailout_) {
     const Transmission t = transmit(here, top_normal, filter, trans);
     out.colour += t.colour;
     if (!t.total_internal_reflection) out.transmit = t.transmit;
     total_internal_reflection = t.total_internal_reflection;
   }
 
-  // Reflections; after total internal reflection those sharing the top layer's normal are skipped (§4 TIR).
-  for (std::size_t i = first_reflection; i < reflections_.size(); ++i) {
+  // Reflections; after total internal reflection those sharing the top layer's normal are skipped (§4 TIR). Below
+  // +Q8 none is traced (their amounts were still computed: conserve_energy used them above).
+  const std::size_t traced_end = quality_.reflection ? reflections_.size() : first_reflection;
+  for (std::size_t i = first_reflection; i < traced_end; ++i) {
     const PendingReflection r = reflections_[i];
     if (is_zero(r.amount)) continue;
     if (total_internal_reflection && r.normal == top_normal) continue;
@@ -340,6 +354,22 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
       out.colour += mul(r.amount, seen.colour);
   }
   reflections_.resize(first_reflection);
+  return out;
+}
+
+// POV-Ray's Q_FULL_AMBIENT (+Q0, +Q1): each layer in turn replaces the colour with its pigment's, unlit and opaque,
+// while the layers above let light through; nothing is transmitted or reflected.
+Radiance Tracer::unlit_layers(const RenderTexture& texture, const TexturePoint& at) const {
+  Radiance out;
+  Rgb filter{1, 1, 1};
+  double trans = 1.0;
+  for (const RenderLayer& layer : texture.layers) {
+    if (trans <= scene_.settings.adc_bailout) break;
+    const auto [s, found] = sample_pigment(layer.pigment, at);
+    out.colour = Rgb{s.r, s.g, s.b};
+    if (found) filter = mul(filter, pass_through(s));
+    trans = std::min(1.0, std::fabs(grey(filter)));
+  }
   return out;
 }
 
@@ -619,7 +649,8 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
 
 Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
                            const RayState& state) {
-  if (l.light.area) return area_light_shadow(l, point, to_light, colour, state);
+  if (!quality_.shadows) return colour;   // below +Q4 (POV-Ray traces no shadow ray then)
+  if (l.light.area && quality_.area_lights) return area_light_shadow(l, point, to_light, colour, state);
   return mul(colour, shadow_filter(l, point, to_light, distance, state));
 }
 

@@ -3,6 +3,7 @@
 // recursion limits (§4), and the background (§5). One Tracer per thread; it allocates nothing per ray.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -31,9 +32,35 @@ struct Radiance {
   double transmit = 0;
 };
 
+// What a render quality level computes, as POV-Ray 3.7 maps +Q0…+Q9 to its quality flags (povrayold.h QUALITY_n,
+// backend/scene/view.cpp) and tests them in its tracer (backend/render/trace.cpp, texture/pigment.cpp):
+//   0–1  full_ambient: a surface shows its pigment's colour, unlit (no finish, no transparency, no reflection)
+//   0–5  quick colours: a pigment with a quick_color shows that colour (applied when the scene is built:
+//        BuildOptions::quick_colours)
+//   4–   shadows
+//   5–   area lights sampled over their area (below: shadows from their centre as from a point light)
+//   6–   transmitted (refracted) rays
+//   8–   reflected rays and normal perturbation
+//   9    fog (POV-Ray's Q_VOLUME: also media and rainbows, and Q_ADVANCED_LIGHT/Q_SUBSURFACE for radiosity,
+//        photons and subsurface scattering, none of which povtrace renders)
+// 10 and 11 are 9 (the option parser clips them, as povray does).
+struct Quality {
+  bool full_ambient = false;
+  bool shadows = true;
+  bool area_lights = true;
+  bool refraction = true;
+  bool reflection = true;
+  bool normals = true;
+  bool fog = true;
+  static Quality at_level(int level);
+  static bool quick_colours_at(int level) { return level <= 5; }
+};
+
 class Tracer {
  public:
-  Tracer(const RenderScene& scene, ShadingModel model) : scene_(scene), model_(model) {}
+  Tracer(const RenderScene& scene, ShadingModel model, Quality quality = {})
+      : scene_(scene), model_(model), quality_(quality), fog_(quality.fog && !scene.fogs.empty()),
+        transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL) {}
 
   // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera.
   Radiance trace_camera_ray(const Ray& ray);
@@ -73,6 +100,8 @@ class Tracer {
                          int level, double weight, const RayState& state);
   Radiance shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
                         int level, double weight, const RayState& state);
+  // +Q0/+Q1: the pigment colour alone (POV-Ray's Q_FULL_AMBIENT).
+  Radiance unlit_layers(const RenderTexture& texture, const TexturePoint& at) const;
   Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
   Rgb texture_filter(const RenderTexture& texture, const TexturePoint& at) const;
   // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
@@ -135,6 +164,11 @@ class Tracer {
 
   const RenderScene& scene_;
   ShadingModel model_;
+  Quality quality_;
+  bool fog_;   // the scene has fog and the quality level shows it
+  // A hit's transmitted ray is traced when the layers let through more than this: adc_bailout, or never below +Q6
+  // (one comparison either way: the default path pays nothing for the quality level).
+  double transmit_bailout_;
   RayCounts counts_;
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
   std::vector<const RenderTexture*> warps_;       // the patterned textures above the one being shaded

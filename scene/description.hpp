@@ -173,6 +173,9 @@ struct Pigment {
   std::vector<PatternWarp> warps;         // in written order
   Matrix world_from_pattern;     // every transform applied to the pigment since it was created (after its warps)
   std::shared_ptr<const ImageMap> image;   // image_map
+  // quick_color: what the pigment shows instead in draft renders (+Q0…+Q5). POV-Ray uses it only when none of its
+  // red, green, blue is -1 (its mark for "not given"), so such a colour is not kept.
+  std::optional<Colour> quick_colour;
   SourceLoc loc;
   Unsupported unsupported;
 };

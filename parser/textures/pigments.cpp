@@ -424,9 +424,10 @@ Pigment TextureParser::parse_pigment_contents(const Pigment& start, const Source
     }
     if (try_pigment_item(t, p)) { t = next(); continue; }
     if (t.is("quick_color") || t.is("quick_colour")) {
-      // POV-Ray shows the quick colour only in draft renders (+Q5 and below); povtrace always renders at full
-      // quality, where POV-Ray reads the colour and leaves it unused.
-      parse_colour();
+      // Shown instead of the pigment in draft renders (+Q5 and below, BuildOptions::quick_colours).
+      const Colour q = parse_colour();
+      if (q.r != -1.0 && q.g != -1.0 && q.b != -1.0) p.quick_colour = q;
+      else p.quick_colour.reset();
       t = next();
       continue;
     }

@@ -32,12 +32,12 @@ std::vector<PatternStep> steps_of(const Pigment& p) {
   return steps;
 }
 
-void add_map(RenderPigment& r, const std::vector<MapEntry>& entries, ImageCache* images) {
+void add_map(RenderPigment& r, const std::vector<MapEntry>& entries, ImageCache* images, bool quick_colours) {
   for (const auto& e : entries) {
     RenderMapEntry m{e.value, e.colour, -1};
     if (e.pigment) {
       m.child = static_cast<int>(r.children.size());
-      r.children.push_back(build_render_pigment(*e.pigment, images));
+      r.children.push_back(build_render_pigment(*e.pigment, images, quick_colours));
     }
     r.map.push_back(m);
   }
@@ -65,13 +65,17 @@ void set_function_generator(RenderPigment& r, int generator) {
   for (auto& c : r.children) set_function_generator(c, generator);
 }
 
-RenderPigment build_render_pigment(const Pigment& p, ImageCache* images) {
+RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool quick_colours) {
   RenderPigment r;
+  if (quick_colours && p.quick_colour) {   // POV-Ray's Compute_Pigment returns it before looking at the pattern
+    r.colour = *p.quick_colour;
+    return r;
+  }
   r.pattern = p.pattern;
   r.colour = p.colour;
   if (p.pattern == PatternKind::solid) return r;
   if (p.pattern == PatternKind::uv_mapping) {   // its one pigment, at the hit's uv (no transforms of its own)
-    r.children.push_back(build_render_pigment(*p.entries.front().pigment, images));
+    r.children.push_back(build_render_pigment(*p.entries.front().pigment, images, quick_colours));
     return r;
   }
   r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
@@ -84,7 +88,7 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images) {
   r.classic_turbulence_warps =
       p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
   if (p.pattern == PatternKind::image_map) r.image = build_render_image(*p.image, images);
-  else add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries, images);
+  else add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries, images, quick_colours);
   return r;
 }
 

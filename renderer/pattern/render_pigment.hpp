@@ -9,7 +9,9 @@
 namespace povtrace::render {
 
 // Image maps read their file through `images` (one decoding per file and settings) or, without one, on their own.
-RenderPigment build_render_pigment(const Pigment& pigment, ImageCache* images = nullptr);
+// With `quick_colours` (draft quality, BuildOptions::quick_colours) the pigment, or each pigment in its maps, that
+// has a quick_color is that solid colour instead.
+RenderPigment build_render_pigment(const Pigment& pigment, ImageCache* images = nullptr, bool quick_colours = false);
 
 // An image map (or bump map) ready for lookups; read through `images` when given.
 std::shared_ptr<const RenderImageMap> build_render_image(const ImageMap& map, ImageCache* images);

@@ -6,9 +6,9 @@
 namespace povtrace::render {
 
 namespace {
-RenderLayer build_layer(const TextureLayer& l, ImageCache& images) {
+RenderLayer build_layer(const TextureLayer& l, ImageCache& images, bool quick_colours) {
   RenderLayer layer;
-  layer.pigment = build_render_pigment(l.pigment, &images);
+  layer.pigment = build_render_pigment(l.pigment, &images, quick_colours);
   layer.finish = l.finish;
   if (l.normal) layer.normal = build_render_normal(*l.normal, &images);
   layer.specular_exponent = 1.0 / l.finish.roughness;
@@ -29,10 +29,11 @@ bool pigment_reads_uv(const RenderPigment& p) {
 bool normal_reads_uv(const RenderNormal& n) { return n.uv_normal != nullptr; }
 }  // namespace
 
-RenderTexture build_render_texture(const Texture& texture, ImageCache& images) {
+RenderTexture build_render_texture(const Texture& texture, ImageCache& images, bool quick_colours) {
   RenderTexture r;
   if (!texture.patterned()) {
-    for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it) r.layers.push_back(build_layer(*it, images));
+    for (auto it = texture.layers.rbegin(); it != texture.layers.rend(); ++it)
+      r.layers.push_back(build_layer(*it, images, quick_colours));
     return r;
   }
   const TexturePattern& pattern = *texture.pattern;
@@ -53,7 +54,7 @@ RenderTexture build_render_texture(const Texture& texture, ImageCache& images) {
   r.pattern_from_world = pattern_from_world;
   r.world_from_pattern = pattern_from_world.inverse();
   for (const TextureMapEntry& e : pattern.entries) {
-    r.children.push_back(build_render_texture(*e.texture, images));
+    r.children.push_back(build_render_texture(*e.texture, images, quick_colours));
     r.children.back().value = e.value;
   }
   return r;

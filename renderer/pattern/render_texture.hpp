@@ -7,7 +7,8 @@
 
 namespace povtrace::render {
 
-RenderTexture build_render_texture(const Texture& texture, ImageCache& images);
+// `quick_colours`: draft quality, layer pigments with a quick_color are that colour (build_render_pigment).
+RenderTexture build_render_texture(const Texture& texture, ImageCache& images, bool quick_colours = false);
 
 // POV-Ray's Test_Opacity: some layer of a plain texture has a pigment without filter or transmit anywhere. A
 // patterned texture is never opaque (its textures are looked at point by point).
