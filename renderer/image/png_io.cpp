@@ -51,13 +51,15 @@ struct PngLayout {
   int bit_depth, color_type;
 };
 
-bool run_png_write(PngWriter& w, std::FILE* f, const PngLayout& layout, png_bytepp rows) {
+// `text`: a tEXt chunk's key and value, or null keys for none.
+bool run_png_write(PngWriter& w, std::FILE* f, const PngLayout& layout, png_bytepp rows, png_text* text) {
   if (setjmp(png_jmpbuf(w.png))) return false;
   png_init_io(w.png, f);
   png_set_IHDR(w.png, w.info, layout.width, layout.height, layout.bit_depth, layout.color_type,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_gAMA_fixed(w.png, w.info, srgb_file_gamma);
   png_set_sRGB(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (text != nullptr) png_set_text(w.png, w.info, text, 1);
   png_write_info(w.png, w.info);
   png_write_image(w.png, rows);
   png_write_end(w.png, nullptr);
@@ -85,10 +87,16 @@ std::vector<png_bytep> row_pointers(std::vector<png_byte>& bytes, std::size_t he
 // ---- reading -------------------------------------------------------------------------------------------------
 
 // Reads the header and asks libpng for 8- or 16-bit RGB(A) rows whatever the file's layout.
-bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels) {
+// `region`: the povtrace:region text chunk's value (at most its size − 1 characters), empty when absent.
+bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels, char (&region)[128]) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_init_io(r.png, f);
   png_read_info(r.png, r.info);
+  png_textp texts = nullptr;
+  const int count = png_get_text(r.png, r.info, &texts, nullptr);
+  for (int i = 0; i < count; ++i) {
+    if (std::strcmp(texts[i].key, region_key) == 0) std::snprintf(region, sizeof region, "%s", texts[i].text);
+  }
   png_set_expand(r.png);  // palette → RGB, grey < 8 bits → 8 bits, tRNS → alpha
   png_set_gray_to_rgb(r.png);
   png_set_interlace_handling(r.png);
@@ -140,9 +148,15 @@ void write_png(const Image& image, const fs::path& file, int bits_per_channel) {
   std::vector<png_bytep> rows = row_pointers(bytes, static_cast<std::size_t>(image.height));
   const PngLayout layout{static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
                          bits_per_channel, image.has_alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB};
+  std::string key = region_key, value = image.region ? region_text(*image.region, image.width, image.height) : "";
+  png_text text{};
+  text.compression = PNG_TEXT_COMPRESSION_NONE;
+  text.key = key.data();
+  text.text = value.data();
+  text.text_length = value.size();
   FilePtr f = open_file(file, "wb");
   PngWriter writer;
-  if (!run_png_write(writer, f.get(), layout, rows.data())) {
+  if (!run_png_write(writer, f.get(), layout, rows.data(), image.region ? &text : nullptr)) {
     throw ImageError(std::string("libpng: ") + writer.error.text);
   }
   if (std::fflush(f.get()) != 0 || std::ferror(f.get()) != 0) {
@@ -156,7 +170,8 @@ Image read_png(const fs::path& file) {
   PngReader reader;
   PngLayout layout{};
   int channels = 0;
-  if (!run_png_read_header(reader, f.get(), layout, channels)) {
+  char region[128] = "";
+  if (!run_png_read_header(reader, f.get(), layout, channels, region)) {
     throw ImageError(std::string("libpng: ") + reader.error.text);
   }
   check_layout(layout, channels);
@@ -164,7 +179,9 @@ Image read_png(const fs::path& file) {
   std::vector<png_byte> bytes(row_bytes * layout.height);
   std::vector<png_bytep> rows = row_pointers(bytes, layout.height);
   if (!run_png_read_rows(reader, rows.data())) throw ImageError(std::string("libpng: ") + reader.error.text);
-  return image_from_rows(bytes, layout, channels);
+  Image image = image_from_rows(bytes, layout, channels);
+  if (region[0] != '\0') image.region = parse_region_text(region, image.width, image.height);
+  return image;
 }
 
 }  // namespace povtrace::image
