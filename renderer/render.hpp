@@ -29,7 +29,20 @@ struct RenderSettings {
   bool output_alpha = false;
   ShadingModel shading = ShadingModel::povray;
   int block_size = 32;              // POV-Ray's Render_Block_Size; also method 1's comparison blocks
+  // Only the pixels of this rectangle are rendered (+SR +ER +SC +EC); the others keep the framebuffer's initial
+  // black, opaque value, which is what POV-Ray 3.7 writes outside a region (alpha 1 even with +UA; checked with
+  // Debian's povray 3.7.0.10). Blocks stay on the grid anchored at (0,0), and a block that straddles the
+  // region's edge is computed whole, only its region pixels stored: a region's pixels are then bit-identical to
+  // the same pixels of a full render (MPI tiles and `--assemble` rely on this). A deliberate deviation from
+  // POV-Ray, which starts its block grid at the region's corner, so its method-1 antialiasing of a region can
+  // differ at block edges from its full render.
+  std::optional<image::PixelRect> region;
   std::function<void(double fraction_done)> progress;   // called from the calling thread
+  // Called once per finished block with the rectangle of the pixels it stored (clipped to the region), from the
+  // worker thread that rendered it, possibly concurrently: the callee synchronises. The block's pixels in the
+  // result image are final when it is called and no other thread writes them. Not called for a block
+  // abandoned by a cancel.
+  std::function<void(const image::PixelRect& block)> block_done;
   const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
 };
 
