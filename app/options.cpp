@@ -719,6 +719,7 @@ std::string usage_text() {
          "  --no-specialise[=NAME,...]  the general paths instead of those chosen for what the scene holds\n"
          "                      (same image, slower; for measuring what each gains); NAME: all (default),\n"
          "                      nearest-shadow-first, no-shadow-rays, embree-meshes\n"
+         "  --assemble OUT [+F...] PART...  merge region renders (+SR +ER +SC +EC parts, EXR or PNG) into OUT\n"
          "  --help, -h          print this text\n";
   return out.str();
 }

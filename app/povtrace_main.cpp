@@ -6,7 +6,10 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <vector>
 
+#include "app/assemble.hpp"
 #include "app/options.hpp"
 #include "app/render_job.hpp"
 #include "scene/source.hpp"
@@ -19,6 +22,17 @@ extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 int main(int argc, char** argv) {
   using namespace povtrace;
+  if (argc >= 2 && std::string(argv[1]) == "--assemble") {
+    try {
+      return app::run_assemble(std::vector<std::string>(argv + 2, argv + argc));
+    } catch (const app::UsageError& e) {
+      std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "povtrace: --assemble: " << e.what() << "\n";
+      return 1;
+    }
+  }
   app::RenderOptions options;
   try {
     options = app::parse_command_line(argc, argv);
@@ -39,6 +53,9 @@ int main(int argc, char** argv) {
   try {
     if (options.vs_povray) return app::run_vs_povray(options, g_interrupted);
     return app::run_render(options, g_interrupted).exit_status;
+  } catch (const app::UsageError& e) {   // found once the render starts, e.g. a region outside the image
+    std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";
+    return 2;
   } catch (const ParseError& e) {
     std::cerr << e.what() << "\n";
     return 1;

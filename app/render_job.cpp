@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/region.hpp"
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
 #include "renderer/object_geometry.hpp"
@@ -101,6 +102,7 @@ std::string stats_json(const RenderOptions& o, const JobResult& r) {
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
   JobResult r;
   const auto start = Clock::now();
+  const std::optional<image::PixelRect> region = resolve_region(options.region, options.width, options.height);
   ParseOptions parse_options = parse_options_from(options);
   parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
   const SceneDescription description = parse_scene(options.input, parse_options);
@@ -117,6 +119,7 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 
   const auto render_start = Clock::now();
   render::RenderSettings settings = render_settings_from(options);
+  settings.region = region;
   settings.progress = progress_reporter(render_start);
   settings.cancel = &interrupted;
   render::RenderResult rendered = render::render(scene, settings);
