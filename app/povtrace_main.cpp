@@ -11,6 +11,9 @@
 
 #include "app/assemble.hpp"
 #include "app/options.hpp"
+#ifdef POVTRACE_HAVE_MPI
+#include "app/mpi_render.hpp"
+#endif
 #include "app/render_job.hpp"
 #include "scene/source.hpp"
 #include "renderer/image/image.hpp"
@@ -52,6 +55,9 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_interrupt);
   try {
     if (options.vs_povray) return app::run_vs_povray(options, g_interrupted);
+#ifdef POVTRACE_HAVE_MPI
+    if (app::mpi_launched()) return app::run_mpi_render(options, g_interrupted);   // started by mpirun, N > 1
+#endif
     return app::run_render(options, g_interrupted).exit_status;
   } catch (const app::UsageError& e) {   // found once the render starts, e.g. a region outside the image
     std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";

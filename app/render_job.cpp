@@ -23,6 +23,7 @@ namespace povtrace::app {
 namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
 
 ParseOptions parse_options_from(const RenderOptions& o) {
   ParseOptions p;
@@ -54,6 +55,8 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
   s.shading = o.lighting == LightingModel::textbook ? render::ShadingModel::textbook : render::ShadingModel::povray;
   return s;
 }
+
+namespace {
 
 // A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
 // terminal, a line per quarter otherwise (logs stay short).
@@ -132,21 +135,25 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
     return r;
   }
 
+  finish_job(options, std::move(rendered.image), r, start);
+  return r;
+}
+
+void finish_job(const RenderOptions& options, image::Image image, JobResult& r, Clock::time_point start) {
   const auto write_start = Clock::now();
   if (options.write_file) {
     r.output = resolved_output_path(options);
-    image::write_image(rendered.image, r.output, resolved_encoding(options));
+    image::write_image(image, r.output, resolved_encoding(options));
   }
   r.times.write_s = seconds_since(write_start);
   r.times.total_s = seconds_since(start);
-  r.image = std::move(rendered.image);
+  r.image = std::move(image);
   print_summary(options, r);
   if (options.stats_json) {
     std::ofstream out(*options.stats_json);
     out << stats_json(options, r);
     if (!out) throw std::runtime_error("cannot write the stats file '" + options.stats_json->string() + "'");
   }
-  return r;
 }
 
 namespace {
