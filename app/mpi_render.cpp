@@ -29,7 +29,7 @@ using image::PixelRect;
 
 // Messages between rank 0 and the workers.
 enum Tag : int {
-  tag_ready = 1,    // worker → 0: scene loaded, send work (empty)
+  tag_ready = 1,    // worker → 0: scene loaded, send work: double {parse seconds, build seconds}
   tag_tile = 2,     // 0 → worker: int32 {tile id, x0, y0, x1, y1}
   tag_result = 3,   // worker → 0: ResultHeader, then the tile's RGBA floats row by row (also asks for more work)
   tag_done = 4,     // 0 → worker: no more work (empty)
@@ -69,7 +69,7 @@ std::vector<Tile> make_tiles(const PixelRect& area, int block_size) {
 }
 
 [[noreturn]] void abort_job(const std::string& message) {
-  std::cerr << "povtrace: MPI: " << message << "; no image written\n" << std::flush;
+  std::cerr << "povtrace: MPI: " << message << "\npovtrace: MPI: job aborted, no image written\n" << std::flush;
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::_Exit(1);   // MPI_Abort does not return; in case it does
 }
@@ -94,19 +94,24 @@ void send_error(const std::string& text) {
 int run_worker(const RenderOptions& options, const std::optional<PixelRect>& /*region*/, int rank,
                const std::atomic<bool>& interrupted) {
   std::optional<render::RenderScene> scene;
+  double times[2] = {0, 0};   // parse, build
   try {
+    const auto start = Clock::now();
     ParseOptions parse_options = parse_options_from(options);
     parse_options.cancel = &interrupted;
     const SceneDescription description = parse_scene(options.input, parse_options);
+    const auto parsed = Clock::now();
+    times[0] = std::chrono::duration<double>(parsed - start).count();
     scene.emplace(render::build_render_scene(description,
                                              {options.output_alpha, options.povray_tolerances, options.specialise}));
+    times[1] = std::chrono::duration<double>(Clock::now() - parsed).count();
     if (rank == 1) {   // one rank speaks for all
       for (const auto& w : scene->warnings) std::cerr << "povtrace: warning: " << w << "\n";
     }
   } catch (const std::exception& e) {
     send_error(e.what());
   }
-  if (scene) MPI_Send(nullptr, 0, MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
+  if (scene) MPI_Send(times, static_cast<int>(sizeof times), MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
 
   render::RenderSettings settings = render_settings_from(options);
   settings.cancel = &interrupted;
@@ -241,7 +246,12 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
         last_quarter = static_cast<int>(4 * finished / tiles.size());
         std::cerr << "povtrace: MPI: " << finished << " of " << tiles.size() << " tiles\n";
       }
-    } else if (status.MPI_TAG != tag_ready) {
+    } else if (status.MPI_TAG == tag_ready && static_cast<std::size_t>(bytes) == 2 * sizeof(double)) {
+      double times[2];
+      std::memcpy(times, buffer.data(), sizeof times);   // the slowest worker's, as the summary's parse and build
+      job.times.parse_s = std::max(job.times.parse_s, times[0]);
+      job.times.build_s = std::max(job.times.build_s, times[1]);
+    } else {
       abort_job("rank " + std::to_string(source) + ": unexpected message tag " + std::to_string(status.MPI_TAG));
     }
     hand_out(source);
@@ -259,7 +269,9 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
     }
     MPI_Send(nullptr, 0, MPI_BYTE, w, tag_done, MPI_COMM_WORLD);
   }
-  job.times.render_s = std::chrono::duration<double>(Clock::now() - start).count();
+  // Rank 0's wall time less the slowest worker's parse and build (which ran before its first tile).
+  job.times.render_s = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() -
+                                         job.times.parse_s - job.times.build_s);
   try {
     finish_job(options, std::move(image), job, start);
   } catch (const std::exception& e) {

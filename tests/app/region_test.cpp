@@ -18,6 +18,9 @@
 #include "app/options.hpp"
 #include "app/region.hpp"
 #include "app/render_job.hpp"
+#ifdef POVTRACE_HAVE_MPI
+#include "app/mpi_render.hpp"
+#endif
 
 namespace {
 
@@ -283,5 +286,23 @@ TEST(Assemble, RefusesOverlapsGapsAndMismatches) {
   const image::Image ok = app::assemble_parts({part(8, 6, {0, 0, 3, 5}), part(8, 6, {4, 0, 7, 5})}, {"a", "b"});
   EXPECT_FALSE(ok.region.has_value());
 }
+
+#ifdef POVTRACE_HAVE_MPI
+// MPI starts only under a launcher that reports more than one rank; a plain run (or mpirun -np 1) never calls
+// MPI_Init and renders as without MPI.
+TEST(MpiLaunch, OnlyWithMoreThanOneRank) {
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  ::unsetenv("PMI_SIZE");
+  EXPECT_FALSE(app::mpi_launched());
+  ::setenv("OMPI_COMM_WORLD_SIZE", "1", 1);
+  EXPECT_FALSE(app::mpi_launched());
+  ::setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
+  EXPECT_TRUE(app::mpi_launched());
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  ::setenv("PMI_SIZE", "2", 1);
+  EXPECT_TRUE(app::mpi_launched());
+  ::unsetenv("PMI_SIZE");
+}
+#endif
 
 }  // namespace
