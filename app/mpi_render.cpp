@@ -115,6 +115,7 @@ int run_worker(const RenderOptions& options, const std::optional<PixelRect>& /*r
 
   render::RenderSettings settings = render_settings_from(options);
   settings.cancel = &interrupted;
+  settings.crop_to_region = true;   // the result is the tile alone
   std::vector<unsigned char> buffer;
   for (;;) {
     MPI_Status status = wait_for_message(0);
@@ -138,8 +139,7 @@ int run_worker(const RenderOptions& options, const std::optional<PixelRect>& /*r
       buffer.resize(sizeof header + static_cast<std::size_t>(header.floats) * sizeof(float));
       std::memcpy(buffer.data(), &header, sizeof header);
       unsigned char* out = buffer.data() + sizeof header;
-      const std::size_t row_bytes = static_cast<std::size_t>(rect.width()) * 4 * sizeof(float);
-      for (int y = rect.y0; y <= rect.y1; ++y, out += row_bytes) std::memcpy(out, result.image.pixel(rect.x0, y), row_bytes);
+      std::memcpy(out, result.image.rgba.data(), result.image.rgba.size() * sizeof(float));
       MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, tag_result, MPI_COMM_WORLD);
     } catch (const std::exception& e) {
       send_error(tile_text(t[0], rect) + ": " + e.what());

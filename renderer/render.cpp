@@ -39,8 +39,9 @@ std::pair<double, double> jitter2d(double x, double y) {
 
 class BlockRenderer {
  public:
-  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out)
-      : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading) {}
+  // `out` holds the pixels from (ox, oy) on: the whole frame, or a cropped region.
+  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy)
+      : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading) {}
 
   void render_block(int x0, int y0, int w, int h) {
     tracer_.forget_shadow_cache();
@@ -72,7 +73,7 @@ class BlockRenderer {
 
   void store(int x, int y, const Sample& s) {
     if (s_.region && !s_.region->contains(x, y)) return;   // computed for its block's sake only
-    float* p = out_.pixel(x, y);
+    float* p = out_.pixel(x - ox_, y - oy_);
     const double alpha = s_.output_alpha ? 1.0 - s.transmit : 1.0;
     p[0] = static_cast<float>(working_to_linear(scene_, s.colour.x));
     p[1] = static_cast<float>(working_to_linear(scene_, s.colour.y));
@@ -185,14 +186,18 @@ class BlockRenderer {
   const RenderScene& scene_;
   const RenderSettings& s_;
   image::Image& out_;
+  int ox_, oy_;
   Tracer tracer_;
 };
 }  // namespace
 
 RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   RenderResult result;
-  result.image = image::Image(settings.width, settings.height);
+  const bool crop = settings.crop_to_region && settings.region;
+  result.image = crop ? image::Image(settings.region->width(), settings.region->height())
+                      : image::Image(settings.width, settings.height);
   result.image.has_alpha = settings.output_alpha;
+  const int ox = crop ? settings.region->x0 : 0, oy = crop ? settings.region->y0 : 0;
   const int bs = std::max(4, settings.block_size);
   // The blocks of the (0,0)-anchored grid that meet the region: columns bx0…, rows by0…
   image::PixelRect area{0, 0, settings.width - 1, settings.height - 1};
@@ -201,7 +206,7 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
     if (r.x0 < 0 || r.y0 < 0 || r.x1 >= settings.width || r.y1 >= settings.height)
       throw std::invalid_argument("render region outside the image");
     area = r;
-    result.image.region = r;
+    if (!crop) result.image.region = r;
   }
   const int bx0 = area.empty() ? 0 : area.x0 / bs, by0 = area.empty() ? 0 : area.y0 / bs;
   const int bx = area.empty() ? 0 : area.x1 / bs - bx0 + 1, by = area.empty() ? 0 : area.y1 / bs - by0 + 1;
@@ -213,7 +218,7 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
 
   auto worker = [&](int id) {
-    BlockRenderer br(scene, settings, result.image);
+    BlockRenderer br(scene, settings, result.image, ox, oy);
     // Blocks are handed out one at a time, so no core idles at the end of a frame while work remains.
     for (int b = next++; b < blocks; b = next++) {
       if (stop.load(std::memory_order_relaxed) || (settings.cancel && settings.cancel->load())) {

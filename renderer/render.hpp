@@ -37,6 +37,9 @@ struct RenderSettings {
   // POV-Ray, which starts its block grid at the region's corner, so its method-1 antialiasing of a region can
   // differ at block edges from its full render.
   std::optional<image::PixelRect> region;
+  // With a region: the result image is only the region's rectangle (its pixel (0,0) is the region's corner), not
+  // the full frame; for MPI tiles, which would otherwise fill and send a whole frame per tile. Same pixel values.
+  bool crop_to_region = false;
   std::function<void(double fraction_done)> progress;   // called from the calling thread
   // Called once per finished block with the rectangle of the pixels it stored (clipped to the region), from the
   // worker thread that rendered it, possibly concurrently: the callee synchronises. The block's pixels in the
