@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -184,6 +185,37 @@ TEST(RegionRender, EveryCellOfAGridEqualsTheFullRender) {
         }
       }
     }
+  }
+}
+
+// block_done reports every block once, from the worker threads, clipped to the region: the rectangles are disjoint
+// and cover the region exactly (what a +C state file and MPI rely on).
+TEST(RegionRender, BlockDoneCoversTheRegionOnce) {
+  app::RenderOptions o = options_for(kAaCases[1], "checker_sphere.pov");
+  o.width = 150;
+  o.height = 100;
+  const SceneDescription description = parse_scene(o.input, app::parse_options_from(o));
+  const render::RenderScene scene = render::build_render_scene(description, {o.output_alpha, false, {}});
+  for (const std::optional<PixelRect>& region : {std::optional<PixelRect>{}, std::optional<PixelRect>{{20, 7, 99, 70}}}) {
+    render::RenderSettings s = app::render_settings_from(o);
+    s.threads = 3;
+    s.region = region;
+    std::mutex m;
+    std::vector<int> hits(static_cast<std::size_t>(o.width * o.height), 0);
+    int calls = 0;
+    s.block_done = [&](const PixelRect& r) {
+      std::lock_guard lock(m);
+      ++calls;
+      for (int y = r.y0; y <= r.y1; ++y)
+        for (int x = r.x0; x <= r.x1; ++x) ++hits[static_cast<std::size_t>(y * o.width + x)];
+    };
+    (void)render::render(scene, s);
+    const PixelRect area = region.value_or(PixelRect{0, 0, o.width - 1, o.height - 1});
+    int wrong = 0;
+    for (int y = 0; y < o.height; ++y)
+      for (int x = 0; x < o.width; ++x) wrong += hits[static_cast<std::size_t>(y * o.width + x)] != (area.contains(x, y) ? 1 : 0);
+    EXPECT_EQ(wrong, 0);
+    EXPECT_EQ(calls, region ? 4 * 3 : 5 * 4);   // blocks of the (0,0) grid meeting the area
   }
 }
 
