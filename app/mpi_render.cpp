@@ -91,8 +91,8 @@ void send_error(const std::string& text) {
 
 // ---- workers ------------------------------------------------------------------------------------------------------
 
-int run_worker(const RenderOptions& options, const std::optional<PixelRect>& /*region*/, int rank,
-               const std::atomic<bool>& interrupted) {
+// Tiles arrive already clipped to the region, so a worker needs no region of its own.
+int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& interrupted) {
   std::optional<render::RenderScene> scene;
   double times[2] = {0, 0};   // parse, build
   try {
@@ -303,7 +303,7 @@ int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interr
     throw std::runtime_error("MPI: one rank only; run without mpirun");
   }
   if (rank == 0) status = run_master(options, region, ranks, interrupted);
-  else status = run_worker(options, region, rank, interrupted);
+  else status = run_worker(options, rank, interrupted);
   MPI_Finalize();
   return status;
 }
