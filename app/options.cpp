@@ -387,6 +387,7 @@ std::string usage_text() {
          "  --allow-shellout    run the *_Command shell-outs (otherwise they are reported and skipped)\n"
          "  --no-povray-ini     do not read a povray.ini\n"
          "  --switch-table      print every POV-Ray switch and INI key with what povtrace does (Markdown)\n"
+         "  --assemble OUT [+F...] PART...  merge region renders (+SR +ER +SC +EC parts, EXR or PNG) into OUT\n"
          "  --version           print povtrace's version\n"
          "  --help, -h, -?      print this text\n";
   return out.str();

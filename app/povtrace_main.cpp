@@ -8,9 +8,15 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
+#include "app/assemble.hpp"
 #include "app/messages.hpp"
 #include "app/options.hpp"
+#ifdef POVTRACE_HAVE_MPI
+#include "app/mpi_render.hpp"
+#endif
 #include "app/render_job.hpp"
 #include "app/shellouts.hpp"
 #include "scene/source.hpp"
@@ -30,6 +36,17 @@ void create_ini(const povtrace::app::RenderOptions& options) {
 
 int main(int argc, char** argv) {
   using namespace povtrace;
+  if (argc >= 2 && std::string(argv[1]) == "--assemble") {
+    try {
+      return app::run_assemble(std::vector<std::string>(argv + 2, argv + argc));
+    } catch (const app::UsageError& e) {
+      std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "povtrace: --assemble: " << e.what() << "\n";
+      return 1;
+    }
+  }
   app::RenderOptions options;
   std::optional<app::Messages> messages;
   try {
@@ -71,12 +88,18 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_interrupt);
   try {
     if (options.vs_povray) return app::run_vs_povray(options, g_interrupted);
+#ifdef POVTRACE_HAVE_MPI
+    if (app::mpi_launched()) return app::run_mpi_render(options, g_interrupted);   // started by mpirun, N > 1
+#endif
     const int status = app::run_render(options, g_interrupted, &*messages).exit_status;
     if (g_interrupted) {
       const app::ShellAction action = shellouts.run(app::ShellEvent::user_abort, context);
       if (action == app::ShellAction::fatal_error) return fatal("povtrace: User_Abort_Command failed");
     }
     return status;
+  } catch (const app::UsageError& e) {   // found once the render starts, e.g. a region outside the image
+    std::cerr << "povtrace: " << e.what() << "\nTry 'povtrace --help'.\n";
+    return 2;
   } catch (const ParseError& e) {
     return fatal(e.what());
   } catch (const image::ImageError& e) {

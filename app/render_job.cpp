@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app/shellouts.hpp"
+#include "app/region.hpp"
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
 #include "renderer/object_geometry.hpp"
@@ -24,6 +25,7 @@ namespace povtrace::app {
 namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
 
 ParseOptions parse_options_from(const RenderOptions& o) {
   ParseOptions p;
@@ -61,6 +63,8 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
   s.quality = o.quality;
   return s;
 }
+
+namespace {
 
 // A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
 // terminal, a line per quarter otherwise (logs stay short).
@@ -182,6 +186,7 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
                        const std::atomic<bool>& interrupted, Messages& messages) {
   JobResult r;
   const auto start = Clock::now();
+  const std::optional<image::PixelRect> region = resolve_region(options.region, options.width, options.height);
   ParseOptions parse_options = parse_options_from(options);
   set_frame_values(plan, frame, parse_options);
   parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
@@ -206,6 +211,7 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
 
   const auto render_start = Clock::now();
   render::RenderSettings settings = render_settings_from(options);
+  settings.region = region;
   settings.progress = progress_reporter(render_start, messages);
   settings.cancel = &interrupted;
   render::RenderResult rendered = render::render(scene, settings);
@@ -218,25 +224,30 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
     return r;
   }
 
+  finish_job(options, std::move(rendered.image), r, start,
+             frame_output_path(resolved_output_path(options), plan, frame.number), messages);
+  return r;
+}
+
+void finish_job(const RenderOptions& options, image::Image image, JobResult& r, Clock::time_point start,
+                const std::filesystem::path& output, Messages& messages) {
   const auto write_start = Clock::now();
   if (options.write_file) {
     // +O- (POV-Ray also takes "stdout"): the whole file goes to standard output; messages stay on stderr.
     const bool to_stdout = options.output && (*options.output == image::standard_output_path ||
                                               *options.output == "stdout");
-    r.output = to_stdout ? image::standard_output_path
-                         : frame_output_path(resolved_output_path(options), plan, frame.number);
-    image::write_image(rendered.image, r.output, resolved_encoding(options));
+    r.output = to_stdout ? image::standard_output_path : output;
+    image::write_image(image, r.output, resolved_encoding(options));
   }
   r.times.write_s = seconds_since(write_start);
   r.times.total_s = seconds_since(start);
-  r.image = std::move(rendered.image);
+  r.image = std::move(image);
   print_summary(options, r, messages);
   if (options.stats_json) {
     std::ofstream out(*options.stats_json);
     out << stats_json(options, r);
     if (!out) throw std::runtime_error("cannot write the stats file '" + options.stats_json->string() + "'");
   }
-  return r;
 }
 
 namespace {

@@ -3,13 +3,16 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <string>
 
 #include "app/animation.hpp"
 #include "app/messages.hpp"
 #include "app/options.hpp"
+#include "parser/parse_scene.hpp"
 #include "renderer/image/image.hpp"
+#include "renderer/render.hpp"
 #include "renderer/tracer.hpp"
 
 namespace povtrace::app {
@@ -39,6 +42,16 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 // One frame of `plan` (the whole job for a still).
 JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
                        const std::atomic<bool>& interrupted, Messages& messages);
+
+// The pieces of run_render that the MPI path (app/mpi_render.cpp) shares, so its ranks parse, render and write
+// exactly as one process does: the parser's and the renderer's settings from the options (the region is set by
+// the caller), and the end of a job: writes `image` to `output` (the frame's file name; standard output for
+// +O-) per the options (atomically), fills r's output and times, prints the summary and the --stats file.
+ParseOptions parse_options_from(const RenderOptions& options);
+render::RenderSettings render_settings_from(const RenderOptions& options);
+void finish_job(const RenderOptions& options, image::Image image, JobResult& r,
+                std::chrono::steady_clock::time_point start, const std::filesystem::path& output,
+                Messages& messages);
 
 // Renders with povtrace and with `povray` (same options, EXR), prints both times and the comparison, and writes
 // `<stem>_vs_povray.png` (povtrace | POV-Ray | heat map). Exit 0 within the image thresholds, 1 outside.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <stdexcept>
 #include <cmath>
 #include <cstdint>
 #include <thread>
@@ -38,8 +39,9 @@ std::pair<double, double> jitter2d(double x, double y) {
 
 class BlockRenderer {
  public:
-  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out)
-      : scene_(scene), s_(s), out_(out), tracer_(scene, s.shading, Quality::at_level(s.quality)) {}
+  // `out` holds the pixels from (ox, oy) on: the whole frame, or a cropped region.
+  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy)
+      : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading, Quality::at_level(s.quality)) {}
 
   void render_block(int x0, int y0, int w, int h) {
     tracer_.forget_shadow_cache();
@@ -70,7 +72,8 @@ class BlockRenderer {
   }
 
   void store(int x, int y, const Sample& s) {
-    float* p = out_.pixel(x, y);
+    if (s_.region && !s_.region->contains(x, y)) return;   // computed for its block's sake only
+    float* p = out_.pixel(x - ox_, y - oy_);
     const double alpha = s_.output_alpha ? 1.0 - s.transmit : 1.0;
     p[0] = static_cast<float>(working_to_linear(scene_, s.colour.x));
     p[1] = static_cast<float>(working_to_linear(scene_, s.colour.y));
@@ -183,16 +186,30 @@ class BlockRenderer {
   const RenderScene& scene_;
   const RenderSettings& s_;
   image::Image& out_;
+  int ox_, oy_;
   Tracer tracer_;
 };
 }  // namespace
 
 RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   RenderResult result;
-  result.image = image::Image(settings.width, settings.height);
+  const bool crop = settings.crop_to_region && settings.region;
+  result.image = crop ? image::Image(settings.region->width(), settings.region->height())
+                      : image::Image(settings.width, settings.height);
   result.image.has_alpha = settings.output_alpha;
+  const int ox = crop ? settings.region->x0 : 0, oy = crop ? settings.region->y0 : 0;
   const int bs = std::max(4, settings.block_size);
-  const int bx = (settings.width + bs - 1) / bs, by = (settings.height + bs - 1) / bs;
+  // The blocks of the (0,0)-anchored grid that meet the region: columns bx0…, rows by0…
+  image::PixelRect area{0, 0, settings.width - 1, settings.height - 1};
+  if (settings.region) {
+    const image::PixelRect& r = *settings.region;
+    if (r.x0 < 0 || r.y0 < 0 || r.x1 >= settings.width || r.y1 >= settings.height)
+      throw std::invalid_argument("render region outside the image");
+    area = r;
+    if (!crop) result.image.region = r;
+  }
+  const int bx0 = area.empty() ? 0 : area.x0 / bs, by0 = area.empty() ? 0 : area.y0 / bs;
+  const int bx = area.empty() ? 0 : area.x1 / bs - bx0 + 1, by = area.empty() ? 0 : area.y1 / bs - by0 + 1;
   const int blocks = bx * by;
   std::atomic<int> next{0}, done{0};
   std::atomic<bool> stop{false};
@@ -201,15 +218,20 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
 
   auto worker = [&](int id) {
-    BlockRenderer br(scene, settings, result.image);
+    BlockRenderer br(scene, settings, result.image, ox, oy);
     // Blocks are handed out one at a time, so no core idles at the end of a frame while work remains.
     for (int b = next++; b < blocks; b = next++) {
       if (stop.load(std::memory_order_relaxed) || (settings.cancel && settings.cancel->load())) {
         stop = true;
         break;
       }
-      const int x0 = (b % bx) * bs, y0 = (b / bx) * bs;
-      br.render_block(x0, y0, std::min(bs, settings.width - x0), std::min(bs, settings.height - y0));
+      const int x0 = (bx0 + b % bx) * bs, y0 = (by0 + b / bx) * bs;
+      const int w = std::min(bs, settings.width - x0), h = std::min(bs, settings.height - y0);
+      br.render_block(x0, y0, w, h);
+      if (settings.block_done) {
+        settings.block_done({std::max(x0, area.x0), std::max(y0, area.y0), std::min(x0 + w - 1, area.x1),
+                             std::min(y0 + h - 1, area.y1)});
+      }
       ++done;
     }
     counts[static_cast<std::size_t>(id)] = br.counts();
@@ -230,7 +252,7 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
     std::thread own(run_worker, 0);
     std::unique_lock lock(finished_mutex);
     while (!finished_cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; })) {
-      settings.progress(static_cast<double>(done.load()) / blocks);
+      settings.progress(static_cast<double>(done.load()) / std::max(1, blocks));
       if (settings.cancel && settings.cancel->load()) stop = true;
     }
     lock.unlock();

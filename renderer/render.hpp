@@ -31,7 +31,23 @@ struct RenderSettings {
   int block_size = 32;              // POV-Ray's Render_Block_Size; also method 1's comparison blocks
   int quality = 9;                  // POV-Ray's +Q0…+Q9 (tracer.hpp Quality); quick colours (+Q0…+Q5) are applied
                                     // when the scene is built (BuildOptions::quick_colours)
+  // Only the pixels of this rectangle are rendered (+SR +ER +SC +EC); the others keep the framebuffer's initial
+  // black, opaque value, which is what POV-Ray 3.7 writes outside a region (alpha 1 even with +UA; checked with
+  // Debian's povray 3.7.0.10). Blocks stay on the grid anchored at (0,0), and a block that straddles the
+  // region's edge is computed whole, only its region pixels stored: a region's pixels are then bit-identical to
+  // the same pixels of a full render (MPI tiles and `--assemble` rely on this). A deliberate deviation from
+  // POV-Ray, which starts its block grid at the region's corner, so its method-1 antialiasing of a region can
+  // differ at block edges from its full render.
+  std::optional<image::PixelRect> region;
+  // With a region: the result image is only the region's rectangle (its pixel (0,0) is the region's corner), not
+  // the full frame; for MPI tiles, which would otherwise fill and send a whole frame per tile. Same pixel values.
+  bool crop_to_region = false;
   std::function<void(double fraction_done)> progress;   // called from the calling thread
+  // Called once per finished block with the rectangle of the pixels it stored (clipped to the region), from the
+  // worker thread that rendered it, possibly concurrently: the callee synchronises. The block's pixels in the
+  // result image are final when it is called and no other thread writes them. Not called for a block
+  // abandoned by a cancel.
+  std::function<void(const image::PixelRect& block)> block_done;
   const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
 };
 

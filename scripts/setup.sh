@@ -11,6 +11,7 @@ packages=(
   povray povray-includes           # reference renders, standard include files, bench comparison
   python3                          # reference/bench scripts
   clang libclang-rt-14-dev         # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes come with clang's
+  openmpi-bin libopenmpi-dev       # optional MPI rendering (mpirun -np N povtrace …) and its tests
 )
 missing=()
 for p in "${packages[@]}"; do

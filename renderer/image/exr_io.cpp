@@ -5,6 +5,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfThreading.h>
 #include <Imath/half.h>
 
@@ -42,6 +43,9 @@ void write_as(const Image& image, const fs::path& file, Imf::PixelType type) {
   const std::vector<T> values(image.rgba.begin(), image.rgba.end());
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
+  if (image.region) {
+    header.insert(region_key, Imf::StringAttribute(region_text(*image.region, image.width, image.height)));
+  }
   Imf::FrameBuffer frame;
   for (int c = 0; c < (image.has_alpha ? 4 : 3); ++c) {
     header.channels().insert(channel_names[c], Imf::Channel(type));
@@ -97,6 +101,9 @@ Image read_pixels(const fs::path& file) {
   in.setFrameBuffer(frame);
   in.readPixels(window.min.y, window.max.y);
   if (luminance_only) spread_luminance(image);
+  if (const auto* region = in.header().findTypedAttribute<Imf::StringAttribute>(region_key)) {
+    image.region = parse_region_text(region->value(), image.width, image.height);
+  }
   return image;
 }
 

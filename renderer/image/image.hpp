@@ -21,12 +21,26 @@ struct ImageError : std::runtime_error {
 // stored in the file, normalised to [0,1], i.e. sRGB- or gamma-encoded).
 enum class Encoding { linear, encoded };
 
+// A rectangle of pixels, bounds inclusive: columns x0…x1, rows y0…y1 (y = 0 top row).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  int width() const { return x1 - x0 + 1; }
+  int height() const { return y1 - y0 + 1; }
+  bool empty() const { return x1 < x0 || y1 < y0; }
+  bool contains(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+  friend bool operator==(const PixelRect&, const PixelRect&) = default;
+};
+
 struct Image {
   int width = 0;
   int height = 0;
   bool has_alpha = false;       // false: alpha is 1 everywhere and writers emit RGB only
   Encoding encoding = Encoding::linear;
   std::vector<float> rgba;      // 4 floats per pixel, row-major, top row first; colour premultiplied by alpha
+  // A region render (+SR +ER +SC +EC): the rendered rectangle of this full-size image. EXR and PNG files keep it
+  // (header attribute / text chunk "povtrace:region" = "x0 y0 x1 y1 width height") so `povtrace --assemble` can
+  // merge parts; other formats drop it.
+  std::optional<PixelRect> region;
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {
@@ -74,6 +88,12 @@ std::string encode_image(const Image& image, const EncodeOptions& options);
 // Reads an EXR or HDR (linear) or PNG/PPM/PGM/TGA/BMP/JPEG (encoded) file, recognised by its first bytes.
 // Throws ImageError for a missing or unreadable file.
 Image read_image(const std::filesystem::path& path);
+
+// Image::region as text ("x0 y0 x1 y1 width height") and back; parsing checks the recorded full size against the
+// file's (ImageError if it is malformed or differs).
+std::string region_text(const PixelRect& region, int width, int height);
+PixelRect parse_region_text(const std::string& text, int width, int height);
+inline constexpr const char* region_key = "povtrace:region";
 
 // sRGB transfer curve (IEC 61966-2-1), POV-Ray's default File_Gamma.
 double srgb_encode(double linear);

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "renderer/image/atomic_file.hpp"
@@ -142,6 +143,29 @@ void linearise_pixel(float* p, bool has_alpha) {
 }
 
 }  // namespace
+
+std::string region_text(const PixelRect& r, int width, int height) {
+  return std::to_string(r.x0) + " " + std::to_string(r.y0) + " " + std::to_string(r.x1) + " " +
+         std::to_string(r.y1) + " " + std::to_string(width) + " " + std::to_string(height);
+}
+
+PixelRect parse_region_text(const std::string& text, int width, int height) {
+  std::istringstream in(text);
+  PixelRect r;
+  int w = 0, h = 0;
+  std::string rest;
+  if (!(in >> r.x0 >> r.y0 >> r.x1 >> r.y1 >> w >> h) || (in >> rest)) {
+    throw ImageError(std::string("malformed ") + region_key + " '" + text + "'");
+  }
+  if (w != width || h != height) {
+    throw ImageError(std::string(region_key) + " records a " + std::to_string(w) + "x" + std::to_string(h) +
+                     " image but the file is " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  if (r.empty() || r.x0 < 0 || r.y0 < 0 || r.x1 >= width || r.y1 >= height) {
+    throw ImageError(std::string(region_key) + " '" + text + "' is not a rectangle inside the image");
+  }
+  return r;
+}
 
 std::optional<FileFormat> format_from_extension(const fs::path& path) {
   const std::string extension = lower(path.extension().string());

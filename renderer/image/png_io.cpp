@@ -69,7 +69,9 @@ void append_png_data(png_structp png, png_bytep data, png_size_t length) {
 
 void flush_png_data(png_structp) {}
 
-bool run_png_write(PngWriter& w, std::string* out, const PngLayout& layout, PngChunks& chunks, png_bytepp rows) {
+// `text`: a tEXt chunk's key and value, or null for none.
+bool run_png_write(PngWriter& w, std::string* out, const PngLayout& layout, PngChunks& chunks, png_bytepp rows,
+                   png_text* text) {
   if (setjmp(png_jmpbuf(w.png))) return false;
   png_set_write_fn(w.png, out, append_png_data, flush_png_data);
   png_set_IHDR(w.png, w.info, layout.width, layout.height, layout.bit_depth, layout.color_type,
@@ -78,6 +80,7 @@ bool run_png_write(PngWriter& w, std::string* out, const PngLayout& layout, PngC
   png_set_gAMA(w.png, w.info, chunks.file_gamma);
   if (chunks.srgb) png_set_sRGB(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_set_oFFs(w.png, w.info, 0, 0, PNG_OFFSET_PIXEL);
+  if (text != nullptr) png_set_text(w.png, w.info, text, 1);
   png_write_info(w.png, w.info);
   png_write_image(w.png, rows);
   png_write_end(w.png, nullptr);
@@ -128,10 +131,16 @@ PngChunks chunks_for(const SampleLayout& layout, int bits) {
 // ---- reading -------------------------------------------------------------------------------------------------
 
 // Reads the header and asks libpng for 8- or 16-bit RGB(A) rows whatever the file's layout.
-bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels) {
+// `region`: the povtrace:region text chunk's value (at most its size − 1 characters), empty when absent.
+bool run_png_read_header(PngReader& r, std::FILE* f, PngLayout& layout, int& channels, char (&region)[128]) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_init_io(r.png, f);
   png_read_info(r.png, r.info);
+  png_textp texts = nullptr;
+  const int count = png_get_text(r.png, r.info, &texts, nullptr);
+  for (int i = 0; i < count; ++i) {
+    if (std::strcmp(texts[i].key, region_key) == 0) std::snprintf(region, sizeof region, "%s", texts[i].text);
+  }
   png_set_expand(r.png);  // palette → RGB, grey < 8 bits → 8 bits, tRNS → alpha
   png_set_gray_to_rgb(r.png);
   png_set_interlace_handling(r.png);
@@ -192,9 +201,15 @@ std::string encode_png(const Image& image, const EncodeOptions& options) {
   const PngLayout png_layout{static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
                              bits > 8 ? 16 : 8, colour | (layout.alpha ? PNG_COLOR_MASK_ALPHA : 0)};
   PngChunks chunks = chunks_for(layout, bits);
+  std::string key = region_key, value = image.region ? region_text(*image.region, image.width, image.height) : "";
+  png_text text{};
+  text.compression = PNG_TEXT_COMPRESSION_NONE;
+  text.key = key.data();
+  text.text = value.data();
+  text.text_length = value.size();
   std::string out;
   PngWriter writer;
-  if (!run_png_write(writer, &out, png_layout, chunks, rows.data())) {
+  if (!run_png_write(writer, &out, png_layout, chunks, rows.data(), image.region ? &text : nullptr)) {
     throw ImageError(std::string("libpng: ") + writer.error.text);
   }
   return out;
@@ -211,7 +226,8 @@ Image read_png(const fs::path& file) {
   PngReader reader;
   PngLayout layout{};
   int channels = 0;
-  if (!run_png_read_header(reader, f.get(), layout, channels)) {
+  char region[128] = "";
+  if (!run_png_read_header(reader, f.get(), layout, channels, region)) {
     throw ImageError(std::string("libpng: ") + reader.error.text);
   }
   check_layout(layout, channels);
@@ -219,7 +235,9 @@ Image read_png(const fs::path& file) {
   std::vector<png_byte> bytes(row_bytes * layout.height);
   std::vector<png_bytep> rows = row_pointers(bytes, layout.height);
   if (!run_png_read_rows(reader, rows.data())) throw ImageError(std::string("libpng: ") + reader.error.text);
-  return image_from_rows(bytes, layout, channels);
+  Image image = image_from_rows(bytes, layout, channels);
+  if (region[0] != '\0') image.region = parse_region_text(region, image.width, image.height);
+  return image;
 }
 
 }  // namespace povtrace::image

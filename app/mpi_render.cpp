@@ -1,0 +1,312 @@
+#include "app/mpi_render.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/region.hpp"
+#include "app/render_job.hpp"
+#include "renderer/object_geometry.hpp"
+#include "renderer/render.hpp"
+#include "renderer/render_scene.hpp"
+
+namespace povtrace::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using image::PixelRect;
+
+// Messages between rank 0 and the workers.
+enum Tag : int {
+  tag_ready = 1,    // worker → 0: scene loaded, send work: double {parse seconds, build seconds}
+  tag_tile = 2,     // 0 → worker: int32 {tile id, x0, y0, x1, y1}
+  tag_result = 3,   // worker → 0: ResultHeader, then the tile's RGBA floats row by row (also asks for more work)
+  tag_done = 4,     // 0 → worker: no more work (empty)
+  tag_error = 5,    // worker → 0: the error's text
+};
+
+constexpr int tile_blocks = 4;     // a tile is 4 × 4 render blocks
+constexpr auto poll_pause = std::chrono::milliseconds(1);
+
+struct ResultHeader {
+  std::int32_t tile = 0;
+  std::int32_t floats = 0;
+  std::uint64_t camera = 0, shadow = 0, secondary = 0;
+};
+
+struct Tile {
+  PixelRect rect;
+};
+
+std::string tile_text(int id, const PixelRect& r) {
+  char text[128];
+  std::snprintf(text, sizeof text, "tile %d (columns %d-%d, rows %d-%d)", id, r.x0 + 1, r.x1 + 1, r.y0 + 1, r.y1 + 1);
+  return text;
+}
+
+// Whole tile_blocks × tile_blocks groups of blocks of the (0,0) grid, clipped to the area, in reading order.
+std::vector<Tile> make_tiles(const PixelRect& area, int block_size) {
+  const int step = std::max(4, block_size) * tile_blocks;
+  std::vector<Tile> tiles;
+  for (int y = area.y0 / step * step; y <= area.y1; y += step) {
+    for (int x = area.x0 / step * step; x <= area.x1; x += step) {
+      tiles.push_back({{std::max(x, area.x0), std::max(y, area.y0), std::min(x + step - 1, area.x1),
+                        std::min(y + step - 1, area.y1)}});
+    }
+  }
+  return tiles;
+}
+
+[[noreturn]] void abort_job(const std::string& message) {
+  std::cerr << "povtrace: MPI: " << message << "\npovtrace: MPI: job aborted, no image written\n" << std::flush;
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  std::_Exit(1);   // MPI_Abort does not return; in case it does
+}
+
+// Waits (polling, sleeping between polls) for a message from `source`; returns its status.
+MPI_Status wait_for_message(int source) {
+  for (;;) {
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (flag) return status;
+    std::this_thread::sleep_for(poll_pause);
+  }
+}
+
+void send_error(const std::string& text) {
+  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, tag_error, MPI_COMM_WORLD);
+}
+
+// ---- workers ------------------------------------------------------------------------------------------------------
+
+// Tiles arrive already clipped to the region, so a worker needs no region of its own.
+int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& interrupted) {
+  std::optional<render::RenderScene> scene;
+  double times[2] = {0, 0};   // parse, build
+  try {
+    const auto start = Clock::now();
+    ParseOptions parse_options = parse_options_from(options);
+    parse_options.cancel = &interrupted;
+    const SceneDescription description = parse_scene(options.input, parse_options);
+    const auto parsed = Clock::now();
+    times[0] = std::chrono::duration<double>(parsed - start).count();
+    scene.emplace(render::build_render_scene(description,
+                                             {options.output_alpha, options.povray_tolerances, options.specialise}));
+    times[1] = std::chrono::duration<double>(Clock::now() - parsed).count();
+    if (rank == 1) {   // one rank speaks for all
+      for (const auto& w : scene->warnings) std::cerr << "povtrace: warning: " << w << "\n";
+    }
+  } catch (const std::exception& e) {
+    send_error(e.what());
+  }
+  if (scene) MPI_Send(times, static_cast<int>(sizeof times), MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
+
+  render::RenderSettings settings = render_settings_from(options);
+  settings.cancel = &interrupted;
+  settings.crop_to_region = true;   // the result is the tile alone
+  std::vector<unsigned char> buffer;
+  for (;;) {
+    MPI_Status status = wait_for_message(0);
+    if (status.MPI_TAG == tag_done) {
+      MPI_Recv(nullptr, 0, MPI_BYTE, 0, tag_done, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      return 0;
+    }
+    std::int32_t t[5];
+    MPI_Recv(t, 5, MPI_INT32_T, 0, tag_tile, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const PixelRect rect{t[1], t[2], t[3], t[4]};
+    try {
+      settings.region = rect;
+      const render::RenderResult result = render::render(*scene, settings);
+      if (result.cancelled) throw std::runtime_error("interrupted");
+      ResultHeader header;
+      header.tile = t[0];
+      header.floats = rect.width() * rect.height() * 4;
+      header.camera = result.rays.camera;
+      header.shadow = result.rays.shadow;
+      header.secondary = result.rays.secondary;
+      buffer.resize(sizeof header + static_cast<std::size_t>(header.floats) * sizeof(float));
+      std::memcpy(buffer.data(), &header, sizeof header);
+      unsigned char* out = buffer.data() + sizeof header;
+      std::memcpy(out, result.image.rgba.data(), result.image.rgba.size() * sizeof(float));
+      MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, tag_result, MPI_COMM_WORLD);
+    } catch (const std::exception& e) {
+      send_error(tile_text(t[0], rect) + ": " + e.what());
+    }
+  }
+}
+
+// ---- rank 0 -------------------------------------------------------------------------------------------------------
+
+double tile_timeout(double slowest) {
+  if (const char* text = std::getenv("POVTRACE_MPI_TILE_TIMEOUT")) {
+    char* end = nullptr;
+    const double v = std::strtod(text, &end);
+    if (end != text && v > 0) return v;
+  }
+  return std::max(60.0, 10.0 * slowest);
+}
+
+int run_master(const RenderOptions& options, const std::optional<PixelRect>& region, int ranks,
+               const std::atomic<bool>& interrupted) {
+  const auto start = Clock::now();
+  const render::RenderSettings settings = render_settings_from(options);
+  const PixelRect area = region.value_or(PixelRect{0, 0, options.width - 1, options.height - 1});
+  const std::vector<Tile> tiles = make_tiles(area, settings.block_size);
+
+  image::Image image(options.width, options.height);   // black and opaque outside a region, as render() leaves it
+  image.has_alpha = options.output_alpha;
+  image.region = region;
+  JobResult job;
+
+  struct Busy {
+    int tile = -1;
+    Clock::time_point since;
+  };
+  std::vector<Busy> busy(static_cast<std::size_t>(ranks));
+  std::size_t next = 0, finished = 0;
+  double slowest = 0;
+  std::vector<unsigned char> buffer;
+  std::vector<bool> released(static_cast<std::size_t>(ranks), false);
+
+  // Gives `worker` the next tile, or releases it when none is left.
+  auto hand_out = [&](int worker) {
+    if (next < tiles.size()) {
+      const PixelRect& r = tiles[next].rect;
+      const std::int32_t t[5] = {static_cast<std::int32_t>(next), r.x0, r.y0, r.x1, r.y1};
+      busy[static_cast<std::size_t>(worker)] = {static_cast<int>(next), Clock::now()};
+      ++next;
+      MPI_Send(t, 5, MPI_INT32_T, worker, tag_tile, MPI_COMM_WORLD);
+    } else {
+      busy[static_cast<std::size_t>(worker)].tile = -1;
+      released[static_cast<std::size_t>(worker)] = true;
+      MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_done, MPI_COMM_WORLD);
+    }
+  };
+
+  int last_quarter = 0;
+  while (finished < tiles.size()) {
+    if (interrupted.load()) abort_job("interrupted");
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (!flag) {
+      const double timeout = tile_timeout(slowest);
+      for (int w = 1; w < ranks; ++w) {
+        const Busy& b = busy[static_cast<std::size_t>(w)];
+        if (b.tile >= 0 && std::chrono::duration<double>(Clock::now() - b.since).count() > timeout) {
+          char seconds[32];
+          std::snprintf(seconds, sizeof seconds, "%.0f", timeout);
+          abort_job("rank " + std::to_string(w) + " did not finish " +
+                    tile_text(b.tile, tiles[static_cast<std::size_t>(b.tile)].rect) + " within " + seconds +
+                    " s (dead or stuck)");
+        }
+      }
+      std::this_thread::sleep_for(poll_pause);
+      continue;
+    }
+    const int source = status.MPI_SOURCE;
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    buffer.resize(static_cast<std::size_t>(std::max(bytes, 1)));
+    MPI_Recv(buffer.data(), bytes, MPI_BYTE, source, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const Busy was = busy[static_cast<std::size_t>(source)];
+    if (status.MPI_TAG == tag_error) {
+      const std::string text(buffer.begin(), buffer.begin() + bytes);
+      abort_job("rank " + std::to_string(source) + " failed: " + text);
+    }
+    if (status.MPI_TAG == tag_result) {
+      ResultHeader h;
+      if (static_cast<std::size_t>(bytes) < sizeof h) abort_job("rank " + std::to_string(source) + ": short result");
+      std::memcpy(&h, buffer.data(), sizeof h);
+      if (h.tile != was.tile || h.tile < 0) abort_job("rank " + std::to_string(source) + ": result for an unexpected tile");
+      const PixelRect& r = tiles[static_cast<std::size_t>(h.tile)].rect;
+      if (h.floats != r.width() * r.height() * 4 ||
+          static_cast<std::size_t>(bytes) != sizeof h + static_cast<std::size_t>(h.floats) * sizeof(float)) {
+        abort_job("rank " + std::to_string(source) + ": " + tile_text(h.tile, r) + " has the wrong size");
+      }
+      const unsigned char* in = buffer.data() + sizeof h;
+      const std::size_t row_bytes = static_cast<std::size_t>(r.width()) * 4 * sizeof(float);
+      for (int y = r.y0; y <= r.y1; ++y, in += row_bytes) std::memcpy(image.pixel(r.x0, y), in, row_bytes);
+      job.rays += render::RayCounts{h.camera, h.shadow, h.secondary};
+      slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - was.since).count());
+      ++finished;
+      if (options.verbose && static_cast<int>(4 * finished / tiles.size()) > last_quarter) {
+        last_quarter = static_cast<int>(4 * finished / tiles.size());
+        std::cerr << "povtrace: MPI: " << finished << " of " << tiles.size() << " tiles\n";
+      }
+    } else if (status.MPI_TAG == tag_ready && static_cast<std::size_t>(bytes) == 2 * sizeof(double)) {
+      double times[2];
+      std::memcpy(times, buffer.data(), sizeof times);   // the slowest worker's, as the summary's parse and build
+      job.times.parse_s = std::max(job.times.parse_s, times[0]);
+      job.times.build_s = std::max(job.times.build_s, times[1]);
+    } else {
+      abort_job("rank " + std::to_string(source) + ": unexpected message tag " + std::to_string(status.MPI_TAG));
+    }
+    hand_out(source);
+  }
+  // Workers still loading the scene (more ranks than tiles) get their release when they report.
+  for (int w = 1; w < ranks; ++w) {
+    if (released[static_cast<std::size_t>(w)]) continue;
+    MPI_Status status = wait_for_message(w);
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    buffer.resize(static_cast<std::size_t>(std::max(bytes, 1)));
+    MPI_Recv(buffer.data(), bytes, MPI_BYTE, w, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (status.MPI_TAG == tag_error) {
+      abort_job("rank " + std::to_string(w) + " failed: " + std::string(buffer.begin(), buffer.begin() + bytes));
+    }
+    MPI_Send(nullptr, 0, MPI_BYTE, w, tag_done, MPI_COMM_WORLD);
+  }
+  // Rank 0's wall time less the slowest worker's parse and build (which ran before its first tile).
+  job.times.render_s = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() -
+                                         job.times.parse_s - job.times.build_s);
+  try {
+    Messages messages(options.streams);
+    finish_job(options, std::move(image), job, start, resolved_output_path(options), messages);
+  } catch (const std::exception& e) {
+    abort_job(std::string("cannot write the image: ") + e.what());
+  }
+  return 0;
+}
+
+}  // namespace
+
+bool mpi_launched() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    if (const char* value = std::getenv(name)) return std::atoi(value) > 1;
+  }
+  return false;
+}
+
+int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
+  // Checked before MPI starts, so every rank reports a bad region the same way (exit 2).
+  const std::optional<PixelRect> region = resolve_region(options.region, options.width, options.height);
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);   // only this thread calls MPI
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  int status = 0;
+  if (ranks < 2) {
+    MPI_Finalize();
+    throw std::runtime_error("MPI: one rank only; run without mpirun");
+  }
+  if (rank == 0) status = run_master(options, region, ranks, interrupted);
+  else status = run_worker(options, rank, interrupted);
+  MPI_Finalize();
+  return status;
+}
+
+}  // namespace povtrace::app
