@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "app/animation.hpp"
+#include "app/messages.hpp"
 #include "app/region.hpp"
 #include "app/render_job.hpp"
 #include "renderer/object_geometry.hpp"
@@ -34,6 +36,10 @@ enum Tag : int {
   tag_result = 3,   // worker → 0: ResultHeader, then the tile's RGBA floats row by row (also asks for more work)
   tag_done = 4,     // 0 → worker: no more work (empty)
   tag_error = 5,    // worker → 0: the error's text
+  // Frames mode (an animation): whole frames instead of tiles.
+  tag_frame = 6,          // 0 → worker: int64 frame index in the plan's render order
+  tag_frame_result = 7,   // worker → 0: FrameHeader; a tag_frame_pixels message follows
+  tag_frame_pixels = 8,   // worker → 0: the frame's RGBA floats, row by row (MPI_FLOAT, so 2^28 pixels fit an int)
 };
 
 constexpr int tile_blocks = 4;     // a tile is 4 × 4 render blocks
@@ -47,6 +53,13 @@ struct ResultHeader {
 
 struct Tile {
   PixelRect rect;
+};
+
+struct FrameHeader {
+  std::int64_t index = 0;
+  std::int32_t width = 0, height = 0, has_alpha = 0;
+  std::uint64_t camera = 0, shadow = 0, secondary = 0;
+  double parse_s = 0, build_s = 0, render_s = 0;
 };
 
 std::string tile_text(int id, const PixelRect& r) {
@@ -149,14 +162,18 @@ int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& 
 
 // ---- rank 0 -------------------------------------------------------------------------------------------------------
 
-double tile_timeout(double slowest) {
+// The deadline for one piece of work: POVTRACE_MPI_TILE_TIMEOUT seconds when set, else max(floor, 10 × the
+// slowest piece so far).
+double work_timeout(double slowest, double floor) {
   if (const char* text = std::getenv("POVTRACE_MPI_TILE_TIMEOUT")) {
     char* end = nullptr;
     const double v = std::strtod(text, &end);
     if (end != text && v > 0) return v;
   }
-  return std::max(60.0, 10.0 * slowest);
+  return std::max(floor, 10.0 * slowest);
 }
+
+double tile_timeout(double slowest) { return work_timeout(slowest, 60.0); }
 
 int run_master(const RenderOptions& options, const std::optional<PixelRect>& region, int ranks,
                const std::atomic<bool>& interrupted) {
@@ -281,6 +298,148 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   return 0;
 }
 
+// ---- frames mode (an animation) -----------------------------------------------------------------------------------
+// Each frame is parsed (with its clock), built and rendered whole by one worker, exactly as one process renders it
+// (render_frame_pixels); its pixels go to rank 0, which writes the numbered file through finish_job. Frames are
+// handed out in render order, one at a time as workers report; files are written in the order frames finish.
+
+int run_frame_worker(const RenderOptions& options, const FramePlan& plan, const std::atomic<bool>& interrupted) {
+  Messages messages(options.streams);
+  const double no_times[2] = {0, 0};   // nothing is loaded up front: each frame parses its own scene
+  MPI_Send(no_times, static_cast<int>(sizeof no_times), MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
+  for (;;) {
+    MPI_Status status = wait_for_message(0);
+    if (status.MPI_TAG == tag_done) {
+      MPI_Recv(nullptr, 0, MPI_BYTE, 0, tag_done, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      return 0;
+    }
+    std::int64_t index = 0;
+    MPI_Recv(&index, 1, MPI_INT64_T, 0, tag_frame, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const Frame frame = plan.at(index);
+    try {
+      JobResult r = render_frame_pixels(options, plan, frame, interrupted, messages);
+      if (r.exit_status != 0) throw std::runtime_error("interrupted");
+      FrameHeader h;
+      h.index = index;
+      h.width = r.image.width;
+      h.height = r.image.height;
+      h.has_alpha = r.image.has_alpha ? 1 : 0;
+      h.camera = r.rays.camera;
+      h.shadow = r.rays.shadow;
+      h.secondary = r.rays.secondary;
+      h.parse_s = r.times.parse_s;
+      h.build_s = r.times.build_s;
+      h.render_s = r.times.render_s;
+      MPI_Send(&h, static_cast<int>(sizeof h), MPI_BYTE, 0, tag_frame_result, MPI_COMM_WORLD);
+      MPI_Send(r.image.rgba.data(), static_cast<int>(r.image.rgba.size()), MPI_FLOAT, 0, tag_frame_pixels,
+               MPI_COMM_WORLD);
+    } catch (const std::exception& e) {
+      send_error("frame " + std::to_string(frame.number) + ": " + e.what());
+    }
+  }
+}
+
+int run_frame_master(const RenderOptions& options, const FramePlan& plan, const std::optional<PixelRect>& region,
+                     int ranks, const std::atomic<bool>& interrupted) {
+  Messages messages(options.streams);
+  const ShellCommands& c = options.shell_commands;
+  const bool any_command = !(c.pre_scene.command.empty() && c.post_scene.command.empty() && c.pre_frame.command.empty() &&
+                             c.post_frame.command.empty() && c.user_abort.command.empty() &&
+                             c.fatal_error.command.empty());
+  if (any_command) {
+    messages.write(Stream::warning,
+                   "povtrace: warning: the *_Command shell-outs are not run in an MPI render (run them around mpirun)");
+  }
+  const long long total = plan.count();
+  struct Busy {
+    long long index = -1;
+    Clock::time_point since;
+  };
+  std::vector<Busy> busy(static_cast<std::size_t>(ranks));
+  std::vector<bool> released(static_cast<std::size_t>(ranks), false);
+  long long next = 0, finished = 0;
+  double slowest = 0;
+  auto hand_out = [&](int worker) {
+    Busy& b = busy[static_cast<std::size_t>(worker)];
+    if (next < total) {
+      const std::int64_t index = next++;
+      b = {index, Clock::now()};
+      MPI_Send(&index, 1, MPI_INT64_T, worker, tag_frame, MPI_COMM_WORLD);
+    } else {
+      b.index = -1;
+      released[static_cast<std::size_t>(worker)] = true;
+      MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_done, MPI_COMM_WORLD);
+    }
+  };
+  std::vector<unsigned char> buffer;
+  while (finished < total || std::find(released.begin() + 1, released.end(), false) != released.end()) {
+    if (interrupted.load()) abort_job("interrupted");
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (!flag) {
+      // A frame parses and renders a whole scene: ten minutes at least before a worker counts as stuck.
+      const double timeout = work_timeout(slowest, 600.0);
+      for (int w = 1; w < ranks; ++w) {
+        const Busy& b = busy[static_cast<std::size_t>(w)];
+        if (b.index >= 0 && std::chrono::duration<double>(Clock::now() - b.since).count() > timeout) {
+          char seconds[32];
+          std::snprintf(seconds, sizeof seconds, "%.0f", timeout);
+          abort_job("rank " + std::to_string(w) + " did not finish frame " + std::to_string(plan.at(b.index).number) +
+                    " within " + seconds + " s (dead or stuck)");
+        }
+      }
+      std::this_thread::sleep_for(poll_pause);
+      continue;
+    }
+    const int source = status.MPI_SOURCE;
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    if (status.MPI_TAG == tag_frame_result) {
+      FrameHeader h;
+      if (bytes != static_cast<int>(sizeof h)) abort_job("rank " + std::to_string(source) + ": bad frame header");
+      MPI_Recv(&h, bytes, MPI_BYTE, source, tag_frame_result, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      const Busy was = busy[static_cast<std::size_t>(source)];
+      if (h.index != was.index || h.width != options.width || h.height != options.height) {
+        abort_job("rank " + std::to_string(source) + ": a result for an unexpected frame or size");
+      }
+      image::Image image(h.width, h.height);
+      image.has_alpha = h.has_alpha != 0;
+      image.region = region;
+      MPI_Recv(image.rgba.data(), static_cast<int>(image.rgba.size()), MPI_FLOAT, source, tag_frame_pixels,
+               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - was.since).count());
+      JobResult job;
+      job.rays = render::RayCounts{h.camera, h.shadow, h.secondary};
+      job.times.parse_s = h.parse_s;
+      job.times.build_s = h.build_s;
+      job.times.render_s = h.render_s;
+      const Frame frame = plan.at(h.index);
+      const auto worked = std::chrono::duration_cast<Clock::duration>(
+          std::chrono::duration<double>(h.parse_s + h.build_s + h.render_s));
+      try {
+        finish_job(options, std::move(image), job, Clock::now() - worked,
+                   frame_output_path(resolved_output_path(options), plan, frame.number), messages);
+      } catch (const std::exception& e) {
+        abort_job("cannot write frame " + std::to_string(frame.number) + ": " + e.what());
+      }
+      ++finished;
+      hand_out(source);
+      continue;
+    }
+    buffer.resize(static_cast<std::size_t>(std::max(bytes, 1)));
+    MPI_Recv(buffer.data(), bytes, MPI_BYTE, source, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (status.MPI_TAG == tag_error) {
+      abort_job("rank " + std::to_string(source) + " failed: " + std::string(buffer.begin(), buffer.begin() + bytes));
+    }
+    if (status.MPI_TAG != tag_ready) {
+      abort_job("rank " + std::to_string(source) + ": unexpected message tag " + std::to_string(status.MPI_TAG));
+    }
+    hand_out(source);
+  }
+  return 0;
+}
+
 }  // namespace
 
 bool mpi_launched() {
@@ -303,8 +462,16 @@ int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interr
     MPI_Finalize();
     throw std::runtime_error("MPI: one rank only; run without mpirun");
   }
-  if (rank == 0) status = run_master(options, region, ranks, interrupted);
-  else status = run_worker(options, rank, interrupted);
+  // An animation is split by frames (each parsed with its own clock), a still by tiles.
+  const FramePlan plan = plan_frames(options.animation);
+  if (plan.animated) {
+    if (rank == 0) status = run_frame_master(options, plan, region, ranks, interrupted);
+    else status = run_frame_worker(options, plan, interrupted);
+  } else if (rank == 0) {
+    status = run_master(options, region, ranks, interrupted);
+  } else {
+    status = run_worker(options, rank, interrupted);
+  }
   MPI_Finalize();
   return status;
 }

@@ -184,6 +184,19 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
 
 JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
                        const std::atomic<bool>& interrupted, Messages& messages) {
+  const auto start = Clock::now();
+  JobResult r = render_frame_pixels(options, plan, frame, interrupted, messages);
+  if (r.exit_status != 0) {
+    messages.write(Stream::render, "povtrace: interrupted; no image written (an existing output file is left as it was)");
+    return r;
+  }
+  finish_job(options, std::move(r.image), r, start, frame_output_path(resolved_output_path(options), plan, frame.number),
+             messages);
+  return r;
+}
+
+JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                              const std::atomic<bool>& interrupted, Messages& messages) {
   JobResult r;
   const auto start = Clock::now();
   const std::optional<image::PixelRect> region = resolve_region(options.region, options.width, options.height);
@@ -219,13 +232,10 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO) && messages.console(Stream::render)) std::cerr << "\n";
   r.rays = rendered.rays;
   if (rendered.cancelled) {
-    messages.write(Stream::render, "povtrace: interrupted; no image written (an existing output file is left as it was)");
     r.exit_status = 1;
     return r;
   }
-
-  finish_job(options, std::move(rendered.image), r, start,
-             frame_output_path(resolved_output_path(options), plan, frame.number), messages);
+  r.image = std::move(rendered.image);
   return r;
 }
 

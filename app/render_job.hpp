@@ -39,9 +39,14 @@ struct JobResult {
 JobResult run_render(const RenderOptions& options, const std::atomic<bool>& interrupted,
                      Messages* messages = nullptr);
 
-// One frame of `plan` (the whole job for a still).
+// One frame of `plan` (the whole job for a still): render_frame_pixels, then finish_job with the frame's name.
 JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
                        const std::atomic<bool>& interrupted, Messages& messages);
+
+// Parses the scene for `frame`, builds and renders it: r.image holds the pixels (nothing is written), r.times
+// the parse, build and render seconds; exit_status 1 when interrupted (r.image then empty).
+JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                              const std::atomic<bool>& interrupted, Messages& messages);
 
 // The pieces of run_render that the MPI path (app/mpi_render.cpp) shares, so its ranks parse, render and write
 // exactly as one process does: the parser's and the renderer's settings from the options (the region is set by

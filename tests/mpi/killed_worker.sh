@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A dead worker is an error, not a hang: kill -9 one worker rank of `mpirun -np 3 povtrace` mid-render; the job
 # must end with a non-zero status within 90 s and leave no output file. With SIGNAL=STOP the worker is frozen
-# instead (mpirun does not notice that): rank 0's tile deadline (POVTRACE_MPI_TILE_TIMEOUT=5 here) must end it.
+# instead (mpirun does not notice that): rank 0's tile deadline must end it (POVTRACE_MPI_TILE_TIMEOUT=15 here:
+# with 5 s, the live worker, slowed by a busy machine, missed it first).
 # Usage: killed_worker.sh MPIRUN POVTRACE WORK_DIR [KILL|STOP]
 set -uo pipefail
 mpirun=$1 povtrace=$2 work=$3 signal=${4:-KILL}
@@ -21,7 +22,7 @@ plane { y, 0 pigment { checker rgb 0.9 rgb 0.3 } }
   #declare I = I + 1;
 #end
 POV
-POVTRACE_MPI_TILE_TIMEOUT=5 "$mpirun" --allow-run-as-root --oversubscribe -x POVTRACE_MPI_TILE_TIMEOUT -np 3 "$povtrace" +W640 +H480 +A0.0 +R3 +WT1 \
+POVTRACE_MPI_TILE_TIMEOUT=15 "$mpirun" --allow-run-as-root --oversubscribe -x POVTRACE_MPI_TILE_TIMEOUT -np 3 "$povtrace" +W640 +H480 +A0.0 +R3 +WT1 \
   +O"$work/killed.png" "$work/slow.pov" > "$work/killed.log" 2>&1 &
 launcher=$!
 # The worker with rank 1: a child of mpirun whose environment says OMPI_COMM_WORLD_RANK=1.
