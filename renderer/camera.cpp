@@ -29,7 +29,20 @@ double polar_angle(double x, double y, double radius) {
   return x < 0.0 ? M_PI - std::asin(y / radius) : std::asin(y / radius);
 }
 
-Ray along(Vec3 origin, Vec3 direction) { return Ray{origin, normalize(direction)}; }
+// A ray needs a direction: where the camera's vectors cancel out for this pixel (a degenerate camera that the
+// parser lets through, as POV-Ray renders it) no ray is traced, rather than one with a NaN direction.
+std::optional<Ray> along(Vec3 origin, Vec3 direction) {
+  const double l = length(direction);
+  if (!(l > 0.0) || !std::isfinite(l)) return std::nullopt;
+  return Ray{origin, direction / l};
+}
+
+// POV-Ray's Vector3d::normalize, which SetupCamera applies: a zero vector stays zero (a fisheye camera with
+// `direction 0` looks sideways, it does not turn NaN).
+Vec3 normalize_or_zero(Vec3 v) {
+  const double l = length(v);
+  return l != 0.0 ? v / l : v;
+}
 
 std::optional<Ray> fisheye(const RenderCamera& c, double x0, double y0) {
   x0 *= c.right_length;
@@ -76,8 +89,8 @@ std::optional<Ray> panoramic(const RenderCamera& c, double across, double y0) {
 
 std::optional<Ray> spherical(const RenderCamera& c, double u, double v) {
   const double lat = v * c.v_angle * kDegree, lon = u * c.h_angle * kDegree;
-  const Vec3 up_down = rotated_about(c.direction, normalize(c.right), -lat);
-  return along(c.location, rotated_about(up_down, normalize(c.up), lon));
+  const Vec3 up_down = rotated_about(c.direction, normalize_or_zero(c.right), -lat);
+  return along(c.location, rotated_about(up_down, normalize_or_zero(c.up), lon));
 }
 
 }  // namespace
@@ -93,7 +106,7 @@ std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int wid
   const double half_angle = c.angle * kDegree;
   switch (c.projection) {
     case Projection::perspective: return along(c.location, c.direction + c.right * u + c.up * v);
-    case Projection::orthographic: return Ray{c.location + c.right * u + c.up * v, normalize(c.direction)};
+    case Projection::orthographic: return along(c.location + c.right * u + c.up * v, c.direction);
     case Projection::fisheye: return fisheye(c, u2, v2);
     case Projection::omnimax: return omnimax(c, u2, v2);
     case Projection::panoramic: return panoramic(c, px / width, v2);
@@ -147,9 +160,9 @@ RenderCamera make_render_camera(const Camera& camera) {
     case Projection::fisheye:
     case Projection::omnimax: c.aspect = c.right_length / c.up_length; break;
   }
-  c.direction = normalize(c.direction);
-  c.up = normalize(c.up);
-  c.right = normalize(c.right);
+  c.direction = normalize_or_zero(c.direction);
+  c.up = normalize_or_zero(c.up);
+  c.right = normalize_or_zero(c.right);
   return c;
 }
 

@@ -1,5 +1,6 @@
 // camera { } and light_source { } (povray-pixel-pipeline.md §1 and §3).
 #include <cmath>
+#include <limits>
 
 #include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
@@ -20,6 +21,13 @@ struct CameraInput {
   Matrix transform;
 };
 
+// A vector too short to normalise: zero, or so small that its squared length underflows. This test has no scale
+// of its own (unlike POV-Ray's EPSILON on the squared length), so a camera in a tiny scene is not refused for being
+// tiny (issue 7: such scenes render as their twins at an ordinary scale).
+bool is_zero(Vec3 v) { return !(dot(v, v) >= std::numeric_limits<double>::min()); }
+
+bool is_finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
 // POV-Ray's fixed order of application, whatever the textual order (§1): vectors as given; then angle; then
 // look_at; then the orthographic resize; finally the camera's own transforms.
 Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
@@ -29,12 +37,12 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
     c.direction = normalize(c.direction) * (length(c.right) / (2.0 * std::tan(a / 2.0)));
   }
   if (in.angle && !in.planar) c.angle = *in.angle;   // the other projections read it as it is
-  if (in.look_at) {
+  if (in.look_at) {   // parse_camera has refused a look_at at the location, and a zero right where it is needed
     const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
     const double handedness = dot(cross(c.up, c.direction), c.right);
     const Vec3 d = normalize(*in.look_at - c.location);
     Vec3 r = cross(in.sky, d);
-    if (length(r) < 1e-10) {
+    if (length(r) < 1e-10) {   // the same test as check_camera's
       warn("camera look_at is parallel to sky: the previous 'right' is kept");
       r = normalize(c.right);
     } else {
@@ -45,18 +53,80 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
     c.right = r * (handedness > 0 ? rl : -rl);
     c.up = u * ul;
   }
-  const bool angle_applied = in.angle && *in.angle > 0;
-  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || angle_applied)) {
+  // The orthographic resize happens when neither up nor right is given, or when any angle is (0 included: the
+  // orthographic `angle` with no value means 0, POV-Ray's way of asking for the resize). Like POV-Ray it skips a
+  // zero distance or a zero direction (EPSILON on the lengths) instead of scaling by 0 or infinity.
+  if (c.projection == Projection::orthographic && ((!in.up_given && !in.right_given) || in.angle)) {
     const Vec3 target = in.look_at.value_or(Vec3{0, 0, 1});
-    const double k = length(target - c.location) / length(c.direction);
-    c.right = c.right * k;
-    c.up = c.up * k;
+    const double k1 = length(target - c.location), k2 = length(c.direction);
+    if (k1 > 1e-10 && k2 > 1e-10) {
+      c.right = c.right * (k1 / k2);
+      c.up = c.up * (k1 / k2);
+    }
   }
   c.location = in.transform.point(c.location);
   c.direction = in.transform.vector(c.direction);
   c.up = in.transform.vector(c.up);
   c.right = in.transform.vector(c.right);
   return c;
+}
+
+// Where the items that the checks point at were written.
+struct CameraTokens {
+  Token keyword;
+  std::optional<Token> angle, look_at, direction, right;
+};
+
+// The camera inputs POV-Ray refuses, and those it turns into NaN vectors or rays without a direction (an image of
+// the background colour, or worse): each an error at the item that causes it.
+// `fail` throws (the parser's fail_at).
+void check_camera(const CameraInput& in, const CameraTokens& at, bool povray_tolerances,
+                  const std::function<void(const Token&, const std::string&)>& fail,
+                  const std::function<void(const std::string&)>& warn) {
+  const Camera& c = in.camera;
+  const Token& keyword = at.keyword;
+  const std::optional<Token>& angle_at = at.angle;
+  const std::optional<Token>& look_at_at = at.look_at;
+  const std::optional<Token>& direction_at = at.direction;
+  const std::optional<Token>& right_at = at.right;
+  if (!is_finite(c.location) || !is_finite(c.direction) || !is_finite(c.up) || !is_finite(c.right) ||
+      !is_finite(in.sky) || (in.look_at && !is_finite(*in.look_at)))
+    fail(keyword, "the camera's vectors must be finite (one has an infinite or undefined coordinate)");
+  if (in.angle && in.planar && *in.angle >= 180)
+    fail(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
+  // POV-Ray's Parse_Camera refuses a look_at at the location (before the camera's transforms). Its test is absolute,
+  // a squared distance below EPSILON (1e-10): a camera 1e-6 times the usual size fails it; povtrace applies it under
+  // --povray-tolerances only, and otherwise refuses a distance that is zero at any scale.
+  if (in.look_at) {
+    const Vec3 d = *in.look_at - c.location;
+    if (povray_tolerances ? dot(d, d) < 1e-10 : is_zero(d))
+      fail(*look_at_at, "Camera location and look_at point must be different.");
+  }
+  if (in.angle && *in.angle == 0 && c.projection == Projection::perspective)
+    warn("a perspective camera's angle 0 leaves its field of view as it is (POV-Ray ignores it)");
+  const bool zero_width = in.angle && *in.angle == 0 && !in.planar && c.projection != Projection::omnimax &&
+                          c.projection != Projection::panoramic;
+  if (zero_width || (c.projection == Projection::spherical && (c.h_angle == 0 || c.v_angle == 0)))
+    warn("a camera angle of 0: every pixel along that axis of the image sees the same ray");
+  // An angle rescales the direction vector to the length the angle asks for: POV-Ray normalises a zero direction
+  // into NaN and renders nothing but the background.
+  if (in.angle && *in.angle > 0 && in.planar && is_zero(c.direction))
+    fail(direction_at ? *direction_at : *angle_at,
+         "the camera direction is the zero vector: the angle has no direction to set the length of");
+  // look_at takes `right` across its direction from the sky; when the two are parallel it keeps the given right
+  // (POV-Ray warns) and normalises it: a zero right would become NaN.
+  if (in.look_at && length(cross(in.sky, normalize(*in.look_at - c.location))) < 1e-10 && is_zero(c.right))
+    fail(right_at ? *right_at : *look_at_at,
+         "the camera right vector is zero and look_at is parallel to sky (or sky is zero): the image has no "
+         "horizontal direction");
+  // Rays without a direction: an orthographic camera whose direction is zero (every ray), or any camera whose
+  // direction, up and right are all zero. POV-Ray renders the background colour everywhere.
+  const bool zero_direction = is_zero(c.direction) || (in.angle && *in.angle > 0 && in.planar && is_zero(c.right));
+  if (c.projection == Projection::orthographic && zero_direction)
+    fail(direction_at ? *direction_at : (right_at ? *right_at : keyword),
+         "the orthographic camera's direction is the zero vector: its rays have no direction");
+  if (zero_direction && is_zero(c.up) && is_zero(c.right))
+    fail(keyword, "the camera's direction, up and right vectors are all zero: its rays have no direction");
 }
 }  // namespace
 
@@ -84,8 +154,9 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
   expect("{", " after 'camera'");
   CameraInput in;
   in.camera.loc = keyword.loc;
-  std::optional<Token> angle_at, look_at_at;
+  CameraTokens at{keyword, {}, {}, {}, {}};
   bool spherical = false;
+  bool item_seen = false;   // an item other than the projection type has been read
   Token t = next();
   if (const Value* v = lookup(t)) {
     if (v && std::holds_alternative<Boxed<Camera>>(*v)) {
@@ -99,25 +170,35 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
   while (!t.is("}")) {
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
     if (const std::optional<Projection> type = try_camera_type(t)) {
+      // POV-Ray 3.5 and later read the projection keywords only at the start of camera { } (several may follow
+      // one another, the last one counts); one after any other item is its parse error.
+      if (item_seen && language_version() >= 350)
+        fail_at(t, "the camera type '" + std::string(t.text) + "' must come first in camera { }, before " +
+                       "location, angle and the other items (POV-Ray 3.5 and later)");
       in.camera.projection = *type;
       in.planar = *type == Projection::perspective || *type == Projection::orthographic;
       spherical = *type == Projection::spherical;
+      t = next();
+      continue;
     }
-    else if (k == "location") in.camera.location = parse_vector();
-    else if (k == "direction") in.camera.direction = parse_vector();
+    item_seen = true;
+    if (k == "location") in.camera.location = parse_vector();
+    else if (k == "direction") { at.direction = t; in.camera.direction = parse_vector(); }
     else if (k == "up") { in.camera.up = parse_vector(); in.up_given = true; }
-    else if (k == "right") { in.camera.right = parse_vector(); in.right_given = true; }
+    else if (k == "right") { at.right = t; in.camera.right = parse_vector(); in.right_given = true; }
     else if (k == "sky") in.sky = parse_vector();
     else if (k == "look_at") {
-      look_at_at = t;
+      at.look_at = t;
       in.look_at = parse_vector();
     }
     else if (k == "angle") {
       // Negative angles are refused at once; the 180° limit only holds for perspective and orthographic cameras
-      // (fisheye and the others take up to 360°), checked once the projection is known.
-      in.angle = parse_float();
+      // (fisheye and the others take up to 360°), checked once the projection is known. An orthographic camera's
+      // angle may have no value: it then means 0 (POV-Ray's Allow_Float(0.0)).
+      in.angle = in.camera.projection == Projection::orthographic && language_version() >= 350 ? optional_float(0.0)
+                                                                                               : parse_float();
       if (*in.angle < 0) fail_at(t, "the camera angle must not be negative");
-      angle_at = t;
+      at.angle = t;
       // A spherical camera takes a horizontal and an optional vertical angle (`angle 360, 180`); the vertical one
       // defaults to half the horizontal one (POV-Ray's Parse_Camera).
       if (spherical) {
@@ -149,15 +230,13 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
     }
     t = next();
   }
-  if (in.angle && in.planar && *in.angle >= 180)
-    fail_at(*angle_at, "the camera angle must be less than 180 degrees for a perspective or orthographic camera");
-  // POV-Ray's Parse_Camera refuses a look_at whose squared distance from the location is below EPSILON (1e-10),
-  // an absolute test: a camera 1e-6 times the usual size fails it.
-  if (povray_tolerances() && in.look_at) {
-    const Vec3 d = *in.look_at - in.camera.location;
-    if (dot(d, d) < 1e-10) fail_at(*look_at_at, "Camera location and look_at point must be different.");
-  }
-  return resolve_camera(in, [&](const std::string& m) { warn(keyword.loc, m); });
+  const auto warn_here = [&](const std::string& m) { warn(keyword.loc, m); };
+  check_camera(in, at, povray_tolerances(), [&](const Token& where, const std::string& m) { fail_at(where, m); },
+               warn_here);
+  const Camera c = resolve_camera(in, warn_here);
+  if (!is_finite(c.location) || !is_finite(c.direction) || !is_finite(c.up) || !is_finite(c.right))
+    fail_at(keyword, "the camera's vectors overflow (a coordinate beyond the range of floating point numbers)");
+  return c;
 }
 
 // The transforms after a declared camera's identifier, up to the closing '}' (`t` is the first token after the

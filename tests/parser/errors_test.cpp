@@ -133,6 +133,40 @@ INSTANTIATE_TEST_SUITE_P(
                   "unsupported: the camera item 'aperture'"}),
     [](const auto& p) { return p.param.name; });
 
+// Cameras POV-Ray 3.7 refuses (Parse_Camera), and those it renders with NaN or directionless rays (a picture of the
+// background colour) which povtrace refuses instead: each at the item that causes it.
+INSTANTIATE_TEST_SUITE_P(
+    Camera, Errors,
+    ::testing::Values(
+        ErrorCase{"LocationEqualsLookAt", "#version 3.7;\ncamera { location <0,1,0> look_at <0,1,0> }\n", 2, 27,
+                  "Camera location and look_at point must be different."},
+        ErrorCase{"DefaultLocationEqualsLookAt", "#version 3.7;\ncamera { look_at 0 }\n", 2, 10,
+                  "Camera location and look_at point must be different."},
+        ErrorCase{"LookAtBeforeLocation", "#version 3.7;\ncamera { look_at <0,1,0> location <0,1,0> }\n", 2, 10,
+                  "Camera location and look_at point must be different."},
+        ErrorCase{"LookAtEqualBeforeTheTransforms",
+                  "#version 3.7;\ncamera { location 1 look_at 1 translate x }\n", 2, 21,
+                  "Camera location and look_at point must be different."},
+        ErrorCase{"FisheyeLocationEqualsLookAt", "#version 3.7;\ncamera { fisheye location 2 look_at 2 }\n", 2, 29,
+                  "Camera location and look_at point must be different."},
+        ErrorCase{"NegativeAngle", "#version 3.7;\ncamera { angle -1 }\n", 2, 10, "must not be negative"},
+        ErrorCase{"OrthographicAngle180", "#version 3.7;\ncamera { orthographic angle 180 }\n", 2, 23,
+                  "less than 180 degrees"},
+        ErrorCase{"TypeAfterAnItem", "#version 3.7;\ncamera { location -5*z orthographic }\n", 2, 24,
+                  "the camera type 'orthographic' must come first in camera { }"},
+        ErrorCase{"ZeroDirectionWithAngle", "#version 3.7;\ncamera { direction 0 angle 60 }\n", 2, 10,
+                  "the camera direction is the zero vector"},
+        ErrorCase{"OrthographicZeroDirection",
+                  "#version 3.7;\ncamera { orthographic location -5*z direction 0 }\n", 2, 37,
+                  "the orthographic camera's direction is the zero vector"},
+        ErrorCase{"AllVectorsZero", "#version 3.7;\ncamera { direction 0 up 0 right 0 }\n", 2, 1,
+                  "direction, up and right vectors are all zero"},
+        ErrorCase{"ZeroRightWithSkyParallel", "#version 3.7;\ncamera { location 5*y right 0 look_at 0 }\n", 2, 23,
+                  "the camera right vector is zero and look_at is parallel to sky"},
+        ErrorCase{"InfiniteLocation", "#version 3.7;\ncamera { location <1e300,0,0>*1e300 }\n", 2, 1,
+                  "the camera's vectors must be finite"}),
+    [](const auto& p) { return p.param.name; });
+
 // ---- Warnings are not errors -------------------------------------------------------------------------------
 TEST(Warnings, DivisionByZeroWarnsAndParsingGoesOn) {
   Messages m;

@@ -351,6 +351,47 @@ TEST(Camera, LookAtTooCloseToTheLocationIsPovraysErrorWithItsTolerances) {
                                    povray));   // 4e-10: allowed
 }
 
+// POV-Ray 3.7 renders these: angle 0 is no angle for a perspective camera (a warning says so); an orthographic
+// camera's angle may have no value, meaning 0, and any angle asks for the resize even with up and right given.
+TEST(Camera, AngleZeroIsNoAngleForAPerspectiveCameraAndWarns) {
+  Messages m;
+  const Camera c = parse("#version 3.7;\ncamera { location -5*z angle 0 }\n", &m).camera;
+  const Camera plain = camera_of("camera { location -5*z }");
+  expect_vec_near(c.direction, plain.direction);
+  expect_vec_near(c.right, plain.right);
+  ASSERT_EQ(m.items.size(), 1u);
+  EXPECT_EQ(m.items[0], "test.pov:2:1: warning: a perspective camera's angle 0 leaves its field of view as it is "
+                        "(POV-Ray ignores it)\ncamera { location -5*z angle 0 }\n^");
+}
+
+TEST(Camera, OrthographicAngleWithoutAValueIsZeroAndResizes) {
+  const Camera none = camera_of("camera { orthographic location <0,0,-10> look_at 0 up y*2 right x*4 angle }");
+  const Camera zero = camera_of("camera { orthographic location <0,0,-10> look_at 0 up y*2 right x*4 angle 0 }");
+  // |look_at − location| / |D| = 10: the given rectangle scaled as POV-Ray does when an angle is written.
+  expect_vec_near(none.right, {40, 0, 0}, 1e-12);
+  expect_vec_near(none.up, {0, 20, 0}, 1e-12);
+  expect_vec_near(zero.right, none.right);
+  expect_vec_near(zero.up, none.up);
+}
+
+TEST(Camera, ProjectionKeywordsAtTheStartTheLastOneCounts) {
+  EXPECT_EQ(camera_of("camera { perspective orthographic location -5*z }").projection, Projection::orthographic);
+  // Before 3.5 POV-Ray took the keywords anywhere.
+  EXPECT_EQ(parse("#version 3.1;\ncamera { location -5*z orthographic }\n").camera.projection,
+            Projection::orthographic);
+}
+
+// povtrace refuses a look_at at the location at any scale, by exact equality, but (unlike POV-Ray's absolute test)
+// not a camera that is merely small.
+TEST(Camera, LookAtAtTheLocationIsAnErrorAtEveryScaleAndATinyCameraIsNot) {
+  for (const char* v : {"<1e-7, 2e-7, -3e-7>", "<1e7, 2e7, -3e7>", "<1e-200, 0, 0>"}) {
+    const ParseError e = parse_error(std::string("#version 3.7;\ncamera { location ") + v + " look_at " + v + " }\n");
+    EXPECT_NE(e.bare_message().find("Camera location and look_at point must be different."), std::string::npos) << v;
+  }
+  const Camera tiny = camera_of("camera { location <0, 0, -5e-7> look_at 0 }");
+  EXPECT_NEAR(length(tiny.direction), 1.0, 1e-12);
+}
+
 // ---- Textures -------------------------------------------------------------------------------------------------
 TEST(Textures, DefaultTextureAndFinishDefaults) {
   const SceneDescription s = scene("sphere { 0, 1 }\n");

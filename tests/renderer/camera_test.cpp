@@ -142,6 +142,29 @@ RenderCamera projection_camera(Projection p, double angle, Vec3 up = {0, 1, 0}, 
 double degrees_between(Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0)) * 180 / M_PI; }
 }  // namespace
 
+// POV-Ray's SetupCamera normalises the non-planar cameras' vectors without turning a zero vector into NaN: a fisheye
+// with `direction 0` looks sideways, along right and up. A pixel whose ray has no direction gets no ray.
+TEST(CameraProjections, ZeroVectorsStayZeroAndNoRayIsNaN) {
+  Camera c;
+  c.projection = Projection::fisheye;
+  c.direction = {0, 0, 0};
+  const RenderCamera cam = make_render_camera(c);
+  std::size_t traced = 0;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x)
+      if (const std::optional<Ray> r = camera_ray(cam, x, y, 32, 24)) {
+        ++traced;
+        EXPECT_TRUE(std::isfinite(r->direction.x) && std::isfinite(r->direction.y) && std::isfinite(r->direction.z));
+        EXPECT_NEAR(length(r->direction), 1.0, 1e-12);
+        EXPECT_NEAR(r->direction.z, 0.0, 1e-12);
+      }
+  EXPECT_GT(traced, 300u);
+  // Perspective with direction 0 on an odd image: the centre pixel's ray D + uR + vU is zero.
+  RenderCamera p{Projection::perspective, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1.33, 0, 0}};
+  EXPECT_FALSE(camera_ray(p, 1, 1, 3, 3).has_value());
+  ASSERT_TRUE(camera_ray(p, 0, 1, 3, 3).has_value());
+}
+
 TEST(CameraProjections, FisheyeMapsRadiusToHalfTheAngle) {
   // 100×100 pixels, right and up of length 1: x = 74.5 gives u = 75/100 − ½ = ¼, so a radius 2u = ½, which is
   // ½ · 180°/2 = 45° off the axis for `angle 180`, turned towards +right.
