@@ -36,4 +36,15 @@ void Messages::write(Stream stream, const std::string& text) {
   if (all_file_ && all_file_ != t.file) *all_file_ << line << std::flush;
 }
 
+void DebugLines::add(const std::string& text) {
+  for (char c : text) {
+    if (c == '\n' || c == '\r') {
+      messages_.write(Stream::debug, pending_ + "\n");
+      pending_.clear();
+    } else {
+      pending_ += c;
+    }
+  }
+}
+
 }  // namespace povtrace::app

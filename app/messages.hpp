@@ -21,7 +21,7 @@ class Messages {
   // Opens the files the options name; throws std::runtime_error naming a file that cannot be opened.
   explicit Messages(const MessageStreams& streams);
 
-  // One message (a newline is added unless it ends in one; #debug text is written as it is).
+  // One message (a newline is added unless it ends in one; #debug text, already in lines (DebugLines), as it is).
   void write(Stream stream, const std::string& text);
   bool console(Stream stream) const;
 
@@ -32,6 +32,21 @@ class Messages {
   };
   Target targets_[5];
   std::shared_ptr<std::ofstream> all_file_;
+};
+
+// #debug text of one parse, passed on as POV-Ray 3.7 does: its parser keeps the text until a line ends ('\n' or
+// '\r', each ending one line) and sends each complete line, which is written with '\n'. Text after the last line
+// end is never sent: POV-Ray keeps one such buffer per parse (per frame) and never flushes it, so a scene's final
+// `#debug "no newline"` shows nowhere (the portfolio scenes' last "Generated the file: …" line, for one). POV-Ray's
+// wrapping of lines longer than 80 characters is not reproduced.
+class DebugLines {
+ public:
+  explicit DebugLines(Messages& messages) : messages_(messages) {}
+  void add(const std::string& text);
+
+ private:
+  Messages& messages_;
+  std::string pending_;
 };
 
 }  // namespace povtrace::app

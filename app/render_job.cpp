@@ -203,8 +203,10 @@ JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& pla
   ParseOptions parse_options = parse_options_from(options);
   set_frame_values(plan, frame, parse_options);
   parse_options.cancel = &interrupted;   // Ctrl-C during a long (or endless) parse
+  DebugLines debug_lines(messages);   // this parse's #debug text: complete lines only, as POV-Ray
   parse_options.classified_sink = [&](ParseOptions::MessageKind kind, const std::string& text) {
-    messages.write(kind == ParseOptions::MessageKind::debug ? Stream::debug : Stream::warning, text);
+    if (kind == ParseOptions::MessageKind::debug) debug_lines.add(text);
+    else messages.write(Stream::warning, text);
   };
   const SceneDescription description = parse_input(options, parse_options);
   r.times.parse_s = seconds_since(start);

@@ -48,5 +48,8 @@ switches and compare with \`povdiff\` (PSNR ≥ 50 dB, at most 0.1 % of pixels o
 
 \`scale_twin/\` holds POV-Ray's renders of \`tests/stress/scale_twin.pov\` at scales 1e-5 … 1e6 for the
 \`--povray-tolerances\` tests, with their own script and README.
+
+\`animation/\` holds POV-Ray's frames of its sample animations for the \`animation_samples\` tests, with their own
+script (\`make_animation_references.sh\`) and README.
 README
 exit $failed

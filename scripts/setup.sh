@@ -9,6 +9,7 @@ packages=(
   libembree-dev                    # nearest triangle of large meshes
   libgtest-dev                     # unit tests
   povray povray-includes           # reference renders, standard include files, bench comparison
+  povray-examples                  # sample scenes: sample_ini_test, animation_samples_tests, scripts/sample_scenes.py
   python3                          # reference/bench scripts
   clang libclang-rt-14-dev         # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes come with clang's
   openmpi-bin libopenmpi-dev       # optional MPI rendering (mpirun -np N povtrace …) and its tests

@@ -138,5 +138,31 @@ TEST(Messages, FilesPerStreamAllFileAndAppend) {
   fs::remove_all(dir);
 }
 
+
+// #debug text reaches the debug stream a complete line at a time, as POV-Ray 3.7's parser sends it: '\r' ends a
+// line too, and what follows the last line end is dropped (checked against povray 3.7.0.10: a scene's final
+// `#debug "tail"` appears neither on the console nor in the +GD file).
+TEST(Messages, DebugTextCompleteLinesOnly) {
+  const fs::path dir = fs::temp_directory_path() / ("povtrace_debuglines_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  MessageStreams s;
+  s.debug.console = false;
+  s.debug.file = dir / "debug.txt";
+  {
+    Messages m(s);
+    DebugLines frame1(m);
+    frame1.add("\nGenerated the file: a1.html");
+    frame1.add("\nGenerated the file: a2.html");   // never ended: dropped with the frame's parse
+    DebugLines frame2(m);
+    frame2.add("x=");
+    frame2.add("1\n");
+    frame2.add("a\rb\n");
+    frame2.add("\n");
+  }
+  EXPECT_EQ(read(dir / "debug.txt"), "\nGenerated the file: a1.html\nx=1\na\nb\n\n");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace povtrace::app

@@ -4,7 +4,8 @@
 #
 # The case runs in a fresh copy of CASES_DIR (file I/O cases write next to the scene) as
 #   povtrace -D +W8 +H8 -F NAME.pov
-# povtrace prints #debug text to stderr unchanged; it also prints there, and has no switch to silence,
+# povtrace prints #debug text to stderr a complete line at a time (as POV-Ray: text after the last line end is
+# dropped); it also prints there, and has no switch to silence,
 #   - lines starting with "povtrace: " (the closing summary, renderer warnings), and
 #   - parser warnings and #warning text: "FILE:LINE:COL: warning: ..." followed by the source line, a
 #     caret line and, inside macros and include files, "  in macro M called from ..." / "  included
