@@ -25,9 +25,17 @@ Messages::Messages(const MessageStreams& s) {
   all_file_ = open(s.all_file);
 }
 
+Messages::Messages(Captured& captured) : captured_(&captured) {
+  for (Target& t : targets_) t.console = false;
+}
+
 bool Messages::console(Stream stream) const { return targets_[static_cast<int>(stream)].console; }
 
 void Messages::write(Stream stream, const std::string& text) {
+  if (captured_ != nullptr) {
+    captured_->emplace_back(stream, text);
+    return;
+  }
   const Target& t = targets_[static_cast<int>(stream)];
   const bool raw = stream == Stream::debug;
   const std::string line = raw || text.ends_with('\n') ? text : text + "\n";

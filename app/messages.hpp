@@ -6,6 +6,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/options.hpp"
@@ -20,6 +21,10 @@ class Messages {
   Messages();
   // Opens the files the options name; throws std::runtime_error naming a file that cannot be opened.
   explicit Messages(const MessageStreams& streams);
+  // Writes nothing: every message is appended to `captured` (an MPI worker's, sent to rank 0 to be written).
+  // console() is false for every stream, so no progress line is drawn.
+  using Captured = std::vector<std::pair<Stream, std::string>>;
+  explicit Messages(Captured& captured);
 
   // One message (a newline is added unless it ends in one; #debug text, already in lines (DebugLines), as it is).
   void write(Stream stream, const std::string& text);
@@ -32,6 +37,7 @@ class Messages {
   };
   Target targets_[5];
   std::shared_ptr<std::ofstream> all_file_;
+  Captured* captured_ = nullptr;
 };
 
 // #debug text of one parse, passed on as POV-Ray 3.7 does: its parser keeps the text until a line ends ('\n' or

@@ -40,6 +40,7 @@ enum Tag : int {
   tag_frame = 6,          // 0 → worker: int64 frame index in the plan's render order
   tag_frame_result = 7,   // worker → 0: FrameHeader; a tag_frame_pixels message follows
   tag_frame_pixels = 8,   // worker → 0: the frame's RGBA floats, row by row (MPI_FLOAT, so 2^28 pixels fit an int)
+  tag_text = 9,           // worker → 0: the parse's #debug lines and warnings (pack_messages), written by rank 0
 };
 
 constexpr int tile_blocks = 4;     // a tile is 4 × 4 render blocks
@@ -102,28 +103,70 @@ void send_error(const std::string& text) {
   MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, tag_error, MPI_COMM_WORLD);
 }
 
+// A worker's messages travel to rank 0, which alone writes the console and the +G files (one writer, as in a
+// single process): per message its stream (one byte), its length (uint32) and its text.
+void send_messages(const Messages::Captured& captured) {
+  if (captured.empty()) return;
+  std::vector<unsigned char> bytes;
+  for (const auto& [stream, text] : captured) {
+    const auto length = static_cast<std::uint32_t>(text.size());
+    bytes.push_back(static_cast<unsigned char>(stream));
+    bytes.insert(bytes.end(), reinterpret_cast<const unsigned char*>(&length),
+                 reinterpret_cast<const unsigned char*>(&length) + sizeof length);
+    bytes.insert(bytes.end(), text.begin(), text.end());
+  }
+  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, tag_text, MPI_COMM_WORLD);
+}
+
+void replay_messages(const unsigned char* data, std::size_t size, Messages& messages) {
+  std::size_t at = 0;
+  while (at + 1 + sizeof(std::uint32_t) <= size) {
+    const auto stream = static_cast<Stream>(data[at]);
+    std::uint32_t length = 0;
+    std::memcpy(&length, data + at + 1, sizeof length);
+    at += 1 + sizeof length;
+    if (length > size - at || data[at - 1 - sizeof length] > static_cast<unsigned char>(Stream::warning)) break;
+    messages.write(stream, std::string(reinterpret_cast<const char*>(data + at), length));
+    at += length;
+  }
+}
+
+// Parse options whose #debug lines and warnings go to `messages` as a single process sends them.
+void route_parse_messages(ParseOptions& parse_options, Messages& messages, DebugLines& debug_lines) {
+  parse_options.classified_sink = [&messages, &debug_lines](ParseOptions::MessageKind kind, const std::string& text) {
+    if (kind == ParseOptions::MessageKind::debug) debug_lines.add(text);
+    else messages.write(Stream::warning, text);
+  };
+}
+
 // ---- workers ------------------------------------------------------------------------------------------------------
 
 // Tiles arrive already clipped to the region, so a worker needs no region of its own.
 int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& interrupted) {
   std::optional<render::RenderScene> scene;
   double times[2] = {0, 0};   // parse, build
+  Messages::Captured captured;
+  Messages messages(captured);
+  DebugLines debug_lines(messages);
   try {
     const auto start = Clock::now();
     ParseOptions parse_options = parse_options_from(options);
     parse_options.cancel = &interrupted;
+    route_parse_messages(parse_options, messages, debug_lines);
+    const FramePlan still = plan_frames(options.animation);   // a still: +K's clock, as one process parses it
+    set_frame_values(still, still.at(0), parse_options);
     const SceneDescription description = parse_scene(options.input, parse_options);
     const auto parsed = Clock::now();
     times[0] = std::chrono::duration<double>(parsed - start).count();
     scene.emplace(render::build_render_scene(description,
                                              {options.output_alpha, options.povray_tolerances, options.specialise}));
     times[1] = std::chrono::duration<double>(Clock::now() - parsed).count();
-    if (rank == 1) {   // one rank speaks for all
-      for (const auto& w : scene->warnings) std::cerr << "povtrace: warning: " << w << "\n";
-    }
+    for (const auto& w : scene->warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
   } catch (const std::exception& e) {
+    if (rank == 1) send_messages(captured);   // every worker parses the same scene: one speaks for all
     send_error(e.what());
   }
+  if (scene && rank == 1) send_messages(captured);
   if (scene) MPI_Send(times, static_cast<int>(sizeof times), MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
 
   render::RenderSettings settings = render_settings_from(options);
@@ -186,6 +229,7 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   image.has_alpha = options.output_alpha;
   image.region = region;
   JobResult job;
+  Messages messages(options.streams);
 
   struct Busy {
     int tile = -1;
@@ -263,6 +307,9 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
         last_quarter = static_cast<int>(4 * finished / tiles.size());
         std::cerr << "povtrace: MPI: " << finished << " of " << tiles.size() << " tiles\n";
       }
+    } else if (status.MPI_TAG == tag_text) {
+      replay_messages(buffer.data(), static_cast<std::size_t>(bytes), messages);
+      continue;   // the worker's ready (or error) follows
     } else if (status.MPI_TAG == tag_ready && static_cast<std::size_t>(bytes) == 2 * sizeof(double)) {
       double times[2];
       std::memcpy(times, buffer.data(), sizeof times);   // the slowest worker's, as the summary's parse and build
@@ -276,13 +323,17 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   // Workers still loading the scene (more ranks than tiles) get their release when they report.
   for (int w = 1; w < ranks; ++w) {
     if (released[static_cast<std::size_t>(w)]) continue;
-    MPI_Status status = wait_for_message(w);
-    int bytes = 0;
-    MPI_Get_count(&status, MPI_BYTE, &bytes);
-    buffer.resize(static_cast<std::size_t>(std::max(bytes, 1)));
-    MPI_Recv(buffer.data(), bytes, MPI_BYTE, w, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (status.MPI_TAG == tag_error) {
-      abort_job("rank " + std::to_string(w) + " failed: " + std::string(buffer.begin(), buffer.begin() + bytes));
+    for (;;) {
+      MPI_Status status = wait_for_message(w);
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      buffer.resize(static_cast<std::size_t>(std::max(bytes, 1)));
+      MPI_Recv(buffer.data(), bytes, MPI_BYTE, w, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (status.MPI_TAG == tag_error) {
+        abort_job("rank " + std::to_string(w) + " failed: " + std::string(buffer.begin(), buffer.begin() + bytes));
+      }
+      if (status.MPI_TAG != tag_text) break;   // its ready
+      replay_messages(buffer.data(), static_cast<std::size_t>(bytes), messages);
     }
     MPI_Send(nullptr, 0, MPI_BYTE, w, tag_done, MPI_COMM_WORLD);
   }
@@ -290,7 +341,6 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   job.times.render_s = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() -
                                          job.times.parse_s - job.times.build_s);
   try {
-    Messages messages(options.streams);
     finish_job(options, std::move(image), job, start, resolved_output_path(options), messages);
   } catch (const std::exception& e) {
     abort_job(std::string("cannot write the image: ") + e.what());
@@ -304,7 +354,8 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
 // handed out in render order, one at a time as workers report; files are written in the order frames finish.
 
 int run_frame_worker(const RenderOptions& options, const FramePlan& plan, const std::atomic<bool>& interrupted) {
-  Messages messages(options.streams);
+  Messages::Captured captured;   // each frame's #debug lines and warnings, sent to rank 0 before its pixels
+  Messages messages(captured);
   const double no_times[2] = {0, 0};   // nothing is loaded up front: each frame parses its own scene
   MPI_Send(no_times, static_cast<int>(sizeof no_times), MPI_BYTE, 0, tag_ready, MPI_COMM_WORLD);
   for (;;) {
@@ -316,9 +367,11 @@ int run_frame_worker(const RenderOptions& options, const FramePlan& plan, const 
     std::int64_t index = 0;
     MPI_Recv(&index, 1, MPI_INT64_T, 0, tag_frame, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     const Frame frame = plan.at(index);
+    captured.clear();
     try {
       JobResult r = render_frame_pixels(options, plan, frame, interrupted, messages);
       if (r.exit_status != 0) throw std::runtime_error("interrupted");
+      send_messages(captured);
       FrameHeader h;
       h.index = index;
       h.width = r.image.width;
@@ -334,6 +387,7 @@ int run_frame_worker(const RenderOptions& options, const FramePlan& plan, const 
       MPI_Send(r.image.rgba.data(), static_cast<int>(r.image.rgba.size()), MPI_FLOAT, 0, tag_frame_pixels,
                MPI_COMM_WORLD);
     } catch (const std::exception& e) {
+      send_messages(captured);
       send_error("frame " + std::to_string(frame.number) + ": " + e.what());
     }
   }
@@ -432,6 +486,10 @@ int run_frame_master(const RenderOptions& options, const FramePlan& plan, const 
     if (status.MPI_TAG == tag_error) {
       abort_job("rank " + std::to_string(source) + " failed: " + std::string(buffer.begin(), buffer.begin() + bytes));
     }
+    if (status.MPI_TAG == tag_text) {   // a frame's #debug lines and warnings; its result follows
+      replay_messages(buffer.data(), static_cast<std::size_t>(bytes), messages);
+      continue;
+    }
     if (status.MPI_TAG != tag_ready) {
       abort_job("rank " + std::to_string(source) + ": unexpected message tag " + std::to_string(status.MPI_TAG));
     }
@@ -452,6 +510,9 @@ bool mpi_launched() {
 int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interrupted) {
   // Checked before MPI starts, so every rank reports a bad region the same way (exit 2).
   const std::optional<PixelRect> region = resolve_region(options.region, options.width, options.height);
+  if (options.input == "-") {   // mpirun passes standard input to rank 0 only, and every worker parses the scene
+    throw UsageError("+I- (the scene from standard input) cannot be used under mpirun: give the scene file");
+  }
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);   // only this thread calls MPI
   int rank = 0, ranks = 1;
