@@ -177,6 +177,10 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
     }
     t = next();
   }
+  // Radiosity uses the values before this block's albedo rescaling (POV-Ray's RawDiffuse, set at the end of every
+  // finish block from what the block holds, rescaled or not).
+  f.diffuse_raw = f.diffuse;
+  f.diffuse_back_raw = f.diffuse_back;
   if (diffuse_albedo) {
     f.diffuse *= (f.brilliance + 1.0) / 2.0;
     f.diffuse_back *= (f.brilliance + 1.0) / 2.0;   // both values, as POV-Ray's Parse_Finish rescales them
