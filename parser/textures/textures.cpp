@@ -137,7 +137,10 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
     else if (k == "diffuse") {
       diffuse_albedo = accept("albedo");
       f.diffuse = parse_float();
-      if (accept(",")) f.diffuse_back = parse_float();
+      // POV-Ray's Parse_Comma then Allow_Float(0): the comma is optional and an unwritten back value is 0, so
+      // `diffuse D` in a finish copied from an identifier clears that finish's back value.
+      accept(",");
+      f.diffuse_back = optional_float(0.0);
     } else if (k == "brilliance") f.brilliance = parse_float();
     else if (k == "phong") {
       phong_albedo = accept("albedo");
