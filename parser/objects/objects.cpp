@@ -94,7 +94,8 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
   if (k == "no_radiosity") { object.no_radiosity = optional_float(1.0) > 0.0; return true; }
   // radiosity { importance F }: kept on the object; without radiosity in global_settings it changes nothing.
   if (k == "radiosity") {
-    if (const std::optional<double> importance = parse_radiosity_importance(t)) object.radiosity_importance = importance;
+    if (const std::optional<double> importance = parse_radiosity_importance(t))
+      object.radiosity_importance = importance;
     return true;
   }
   if (k == "inverse") { invert_object(object); return true; }

@@ -3,6 +3,8 @@
 // checks and messages are POV-Ray's, with the value found added; each error points at the offending value.
 #include <algorithm>
 #include <cstdio>
+#include <limits>
+#include <string>
 
 #include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
@@ -91,7 +93,8 @@ bool RadiosityParser::parse_limit_item(const Token& t, RadiositySettings& s) {
   if (t.is("minimum_reuse")) {
     const Token at = peek();
     s.minimum_reuse = parse_float();
-    if (!(s.minimum_reuse >= 0)) fail_at(at, "Radiosity minimum reuse can not be a negative number" + found(s.minimum_reuse));
+    if (!(s.minimum_reuse >= 0))
+      fail_at(at, "Radiosity minimum reuse can not be a negative number" + found(s.minimum_reuse));
     minimum_reuse_.at = t.loc;
   } else if (t.is("gray_threshold")) {
     const Token at = peek();
@@ -105,8 +108,9 @@ bool RadiosityParser::parse_limit_item(const Token& t, RadiositySettings& s) {
     s.pretrace_end = fraction("Radiosity pretrace end must be greater than 0 and no higher than 1");
     pretrace_end_.at = t.loc;
   } else if (t.is("recursion_limit")) {
-    s.recursion_limit = integer_in(1, kRadiosityMaxRecursionLimit, "Radiosity recursion limit must be in the range 1 to " +
-                                                                        std::to_string(kRadiosityMaxRecursionLimit));
+    s.recursion_limit = integer_in(1, kRadiosityMaxRecursionLimit,
+                                   "Radiosity recursion limit must be in the range 1 to " +
+                                       std::to_string(kRadiosityMaxRecursionLimit));
   } else {
     return false;
   }
@@ -214,7 +218,8 @@ void RadiosityParser::fix_reuse(RadiositySettings& s) const {
   if (!minimum_reuse_.at) {
     s.minimum_reuse = s.maximum_reuse * 0.5;
     std::snprintf(value, sizeof value, "%f", s.minimum_reuse);
-    warn(maximum_reuse_.at.value_or(s.loc), advice + ". Decreasing minimum_reuse to " + value + " instead of the default.");
+    warn(maximum_reuse_.at.value_or(s.loc),
+         advice + ". Decreasing minimum_reuse to " + value + " instead of the default.");
   } else if (!maximum_reuse_.at) {
     s.maximum_reuse = s.minimum_reuse * 2.0;
     std::snprintf(value, sizeof value, "%f", s.maximum_reuse);
