@@ -21,6 +21,8 @@
 //                                placing objects and lights, the parse's loop: the SceneStatements part
 //                                (scene_statements.hpp); also the entry points parse_scene and parse_scene_text
 //   statements/values.cpp        right-hand values (#declare's): the ValueReader part (value_reader.hpp)
+//   statements/radiosity.cpp     global_settings' radiosity block, radiosity importance, their post-parse checks:
+//                                the RadiosityParser part (radiosity_parser.hpp)
 //   statements/unsupported.cpp   features parsed but not rendered: the UnsupportedFeatures part
 //                                (unsupported_features.hpp)
 //   expressions/arrays.cpp       arrays: the ArrayValues part (array_values.hpp)
@@ -58,6 +60,7 @@
 #include "parser/expressions/object_queries.hpp"
 #include "parser/expressions/spline_values.hpp"
 #include "parser/statements/camera_light_parser.hpp"
+#include "parser/statements/radiosity_parser.hpp"
 #include "parser/statements/scene_statements.hpp"
 #include "parser/statements/unsupported_features.hpp"
 #include "parser/statements/value_reader.hpp"
@@ -130,9 +133,11 @@ class Interpreter : ExpressionParser {   // its empty base: the expression gramm
   // ParserPart's fail(), fail_at(), fail_expected(), fail_unsupported() and warn() go to it.
   Diagnostics diagnostics_{options_, reader_.stream(), symbols_};
   ExpressionPrograms programs_{options_, reader_.stream(), symbols_, directives_};   // of replayed expressions (S6)
+  // ---- radiosity's settings and importance (statements/radiosity_parser.hpp) ----
+  RadiosityParser radiosity_{*this};
   // ---- the scene statements and the scene they fill (statements/scene_statements.hpp) ----
   SceneStatements statements_{*this,        options_,  symbols_, reader_,       directives_, expressions(),
-                              textures_, camera_lights_, objects_, unsupported_};
+                              textures_, camera_lights_, objects_, unsupported_, radiosity_};
   // ---- object queries (expressions/object_queries.hpp): after options_, which they hold ----
   ObjectQueries object_queries_{*this, options_, symbols_, arrays_};
   // ---- user-defined functions (expressions/function_values.hpp): after options_, which they hold ----

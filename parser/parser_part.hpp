@@ -145,6 +145,10 @@ class ParserPart {
   inline void refuse_if_unsupported(const Unsupported& u, const SourceLoc& placed_at, std::string_view what) const;
   static inline void taint(Unsupported& slot, const Unsupported& feature);   // keeps the first one found
 
+  // ---- radiosity (RadiosityParser, statements/radiosity_parser.hpp) ----
+  // `radiosity { importance F }` of an object or #default: the last importance written, if any.
+  inline std::optional<double> parse_radiosity_importance(const Token& keyword);
+
   // ---- the scene's settings so far (SceneStatements) ----
   inline const Texture& default_texture() const;   // the #default texture
   // What POV-Ray's image gamma handling reads: the language version (round(100 · #version), 370 when no #version

@@ -109,6 +109,10 @@ inline void ParserPart::taint(Unsupported& slot, const Unsupported& feature) {
   UnsupportedFeatures::taint(slot, feature);
 }
 
+inline std::optional<double> ParserPart::parse_radiosity_importance(const Token& keyword) {
+  return in_.radiosity_.parse_importance(keyword);
+}
+
 inline const Texture& ParserPart::default_texture() const { return in_.statements_.default_texture(); }
 inline int ParserPart::language_version() const { return in_.statements_.language_version(); }
 inline bool ParserPart::version_directive_seen() const { return in_.statements_.version_directive_seen(); }

@@ -3,6 +3,7 @@
 #include "renderer/render.hpp"
 
 #include "renderer/csg_build.hpp"
+#include "renderer/located_error.hpp"
 #include "renderer/object_geometry.hpp"
 #include "renderer/object_primitives.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
@@ -147,6 +148,12 @@ Specialisation choose_specialisation(const RenderScene& r, const SpecialisationC
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
+  // Radiosity is parsed and checked whole but not computed yet. POV-Ray lights such a scene by radiosity (and drops
+  // its ambient term in 3.7 scenes, issue19-study §1.1), so rendering it without would be silently wrong: refused
+  // where the scene turns it on, at every quality level (POV-Ray itself computes it only at +Q9).
+  if (scene.radiosity)
+    fail_at_scene(scene.radiosity->loc, "unsupported: the global setting 'radiosity' is a POV-Ray feature that "
+                                        "povtrace does not render yet");
   if (options.povray_tolerances) return build_scene(with_world_space_spheres(scene), options, false);
   return build_scene(scene, options, true);
 }

@@ -14,6 +14,7 @@
 
 #include "extent_box.hpp"
 #include "mesh_description.hpp"
+#include "radiosity_settings.hpp"
 #include "sweep_description.hpp"
 #include "source_location.hpp"
 #include "text_description.hpp"
@@ -186,6 +187,12 @@ struct Finish {
   Colour emission{};
   double diffuse = 0.6;
   double diffuse_back = 0.0;     // second `diffuse` value
+  // The two diffuse values before this finish block's `albedo` rescaling: POV-Ray's radiosity term uses these
+  // (RawDiffuse, RawDiffuseBack; issue19-study §1.1), light sources the rescaled ones. Every finish block sets them
+  // from the values it holds at its end, so a finish copied from an identifier keeps that finish's rescaled values
+  // as its raw ones unless `diffuse` is written again (as in POV-Ray's Parse_Finish).
+  double diffuse_raw = 0.6;
+  double diffuse_back_raw = 0.0;
   double brilliance = 1.0;
   double phong = 0.0;
   double phong_size = 40.0;
@@ -432,6 +439,11 @@ struct Object {
   // no_radiosity [bool]: POV-Ray leaves the object out of radiosity rays only. povtrace refuses radiosity by name,
   // so for every scene it renders this flag changes nothing; it is kept (and inherited) for completeness.
   bool no_radiosity = false;
+  // radiosity { importance F }, F in (0, 1]: the share of a gathering's sample rays that may stop at this object
+  // (issue19-study §1). Unset on an object that did not write it: the renderer then uses the scene's
+  // SceneDescription::radiosity_default_importance (POV-Ray reads that default when rendering). CSG children that did
+  // not write it are given their parent's, or the #default in force when the top-level object was placed.
+  std::optional<double> radiosity_importance;
   // uv_mapping (before any texture): textures are evaluated at the hit's <u, v, 0> and later transforms of the
   // object no longer move them (POV-Ray's UV_FLAG). CSG children that inherit the texture inherit the flag.
   bool uv_mapping = false;
@@ -544,7 +556,21 @@ struct SceneDescription {
   std::shared_ptr<const FileNames> file_names;
   int language_version = 370;            // round(100 · #version); 370 when no #version was seen
   bool version_given = false;            // a #version directive appeared before the first statement
+  // Any #version directive, or a version given by +MV/Version= (POV-Ray's languageVersionSet).
+  bool language_version_set = false;
+  // POV-Ray's EffectiveLanguageVersion: the version when one was set, else 3.62 — a scene without any #version is
+  // treated as a legacy scene where POV-Ray asks for it (the ambient term below, among others).
+  int effective_language_version() const { return language_version_set ? language_version : 362; }
   GlobalSettings settings;
+  // global_settings { radiosity { … } } (issue19-study §1): present when the scene writes such a block, which is
+  // POV-Ray's "radiosity enabled" (blocks in several global_settings edit the same settings). POV-Ray computes
+  // radiosity only at +Q9 and above; where it does, a layer's `ambient · ambient_light` term is dropped when
+  // effective_language_version() ≥ 370 and kept for older scenes, and `emission` is always added (§1.1, trace.cpp).
+  // The renderer does not compute radiosity yet and refuses such a scene at `radiosity->loc`.
+  std::optional<RadiositySettings> radiosity;
+  // #default { radiosity { importance F } } as it stands at the end of the parse: the importance of every object
+  // whose radiosity_importance is unset (POV-Ray's defaultImportance, read when rendering). 1.0 unless written.
+  double radiosity_default_importance = 1.0;
   Camera camera;
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
   std::optional<SkySphere> sky_sphere;

@@ -37,7 +37,7 @@ std::optional<std::string> unsupported_geometry(const Object& o) {
     static const char* const harmless[] = {
         "'normal { }' perturbation", "the object modifier 'double_illuminate'",
         "the object modifier 'sturm'", "the object modifier 'interior_texture'", "the object modifier 'uv_mapping'",
-        "the object modifier 'photons'", "the object modifier 'radiosity'", "the object modifier 'split_union'",
+        "the object modifier 'photons'", "the object modifier 'split_union'",
         "the object modifier 'cutaway_textures'", "the object modifier 'hierarchy'", "the material item"};
     bool ok = false;
     for (const char* h : harmless) ok = ok || n.starts_with(h);

@@ -92,6 +92,12 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
   if (k == "no_image") { object.no_image = optional_float(1.0) > 0.0; return true; }
   if (k == "no_reflection") { object.no_reflection = optional_float(1.0) > 0.0; return true; }
   if (k == "no_radiosity") { object.no_radiosity = optional_float(1.0) > 0.0; return true; }
+  // radiosity { importance F }: kept on the object; without radiosity in global_settings it changes nothing.
+  if (k == "radiosity") {
+    if (const std::optional<double> importance = parse_radiosity_importance(t))
+      object.radiosity_importance = importance;
+    return true;
+  }
   if (k == "inverse") { invert_object(object); return true; }
   if (k == "clipped_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "bounded_by") { parse_clip_or_bound(t, object); return true; }
@@ -106,7 +112,7 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
                "modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "double_illuminate", "sturm", "interior_texture", "photons", "radiosity", "split_union", "cutaway_textures",
+      "double_illuminate", "sturm", "interior_texture", "photons", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {

@@ -46,6 +46,8 @@ SceneDescription SceneStatements::run(std::unique_ptr<SourceFile> main_file) {
     throw ParseError(e, reached_from());
   }
   directives_.check_closed_at_end();
+  radiosity_.finish(scene_.radiosity);
+  scene_.language_version_set = version_directive_seen_ || options_.initial_language_version.has_value();
   scene_.file_names = reader_.stream().file_names();
   return std::move(scene_);
 }
@@ -106,9 +108,12 @@ void SceneStatements::parse_statement(const Token& t) {
     scene_.fogs.insert(scene_.fogs.begin(), textures_.parse_fog(t));
     return;
   }
-  static const std::string_view unsupported[] = {"media", "rainbow", "photons", "radiosity"};
+  static const std::string_view unsupported[] = {"media", "rainbow", "photons"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
+  if (k == "radiosity")   // POV-Ray reads radiosity only in global_settings (and #default, objects: importance)
+    fail_expected(t, "an object, light_source, camera, background, global_settings or a directive (radiosity { } "
+                     "is written inside global_settings { })");
   if (k == "declare" || k == "include" || k == "version")
     fail_at(t, "'" + std::string(k) + "' must be written as a directive: '#" + std::string(k) + "'");
   if (t.is(";")) fail_at(t, "unexpected ';' (a ';' only ends #declare, #local and #version values)");
@@ -152,6 +157,8 @@ void SceneStatements::parse_global_settings(const Token& keyword) {
       if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
       scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
       if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+    } else if (k == "radiosity") {
+      radiosity_.parse_settings(t, scene_.radiosity);
     } else if (k == "hf_gray_16") {
       // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
       // option there).
@@ -173,13 +180,19 @@ void SceneStatements::parse_background(const Token& keyword) {
   expect("}", " after the background colour");
 }
 
-// #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4).
+// #default { texture{} | pigment{} | finish{} } edits the texture given to objects created later (§4);
+// #default { radiosity { importance F } } the importance of objects that do not write theirs.
 void SceneStatements::parse_default(const Token& keyword) {
   (void)keyword;
   expect("{", " after #default");
   while (true) {
     Token t = next();
     if (t.is("}")) return;
+    if (t.is("radiosity")) {
+      if (const std::optional<double> importance = parse_radiosity_importance(t))
+        scene_.radiosity_default_importance = *importance;
+      continue;
+    }
     placed_default_texture_.reset();   // the #default changes: later objects get a new shared copy
     TextureLayer& layer = default_texture_.layers.back();
     if (t.is("pigment")) layer.pigment = textures_.parse_pigment_block(t, layer.pigment);
@@ -193,9 +206,9 @@ void SceneStatements::parse_default(const Token& keyword) {
       layer.normal =
           std::make_shared<const Normal>(textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
       unsupported_.refuse_if_unsupported(layer.normal->unsupported, t.loc, "#default");
-    } else if (t.is("camera") || t.is("radiosity"))
+    } else if (t.is("camera"))
       fail_unsupported(t, "#default { " + std::string(t.text) + " }");
-    else fail_expected(t, "texture, pigment, normal or finish in #default { }");
+    else fail_expected(t, "texture, pigment, normal, finish or radiosity in #default { }");
   }
 }
 
@@ -243,12 +256,16 @@ void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
 void SceneStatements::place_light(Light light, const SourceLoc& at) {
   unsupported_.refuse_if_unsupported(light.unsupported, at, "light_source");
   for (Object& shown : light.looks_like) unsupported_.refuse_if_unsupported(first_unsupported(shown), at, "light_source");
-  add_light(std::move(light));
+  add_light(std::move(light), std::nullopt);
 }
 
-// A light joins the scene's lights; its looks_like object joins the objects.
-void SceneStatements::add_light(Light light) {
+// A light joins the scene's lights; its looks_like object joins the objects. POV-Ray post-processes that object as
+// the light's child: without an importance of its own it takes the light's, which is the CSG parent's when the
+// light is inside one and otherwise unset, so the #default in force now (`importance`).
+void SceneStatements::add_light(Light light, std::optional<double> importance) {
   for (Object& shown : light.looks_like) {
+    if (!shown.radiosity_importance)
+      shown.radiosity_importance = importance.value_or(scene_.radiosity_default_importance);
     settle_deferred_texture_transforms(shown, notes_pool());
     post_process(shown);
     set_placed_boxes(shown, extents());
@@ -296,9 +313,15 @@ void SceneStatements::post_process(Object& object) {
       if (object.no_image) child.no_image = true;
       if (object.no_reflection) child.no_reflection = true;
       if (object.no_radiosity) child.no_radiosity = true;
+      // A child without a radiosity importance takes its parent's, or the #default in force now: POV-Ray fixes it
+      // when the top-level object is placed, while a top-level object without one reads the #default in force at
+      // the end of the parse (SceneDescription::radiosity_default_importance).
+      if (!child.radiosity_importance)
+        child.radiosity_importance = object.radiosity_importance.value_or(scene_.radiosity_default_importance);
       post_process(child);
     }
-    for (auto& light : csg->lights) add_light(std::move(light));
+    const double light_importance = object.radiosity_importance.value_or(scene_.radiosity_default_importance);
+    for (auto& light : csg->lights) add_light(std::move(light), light_importance);
     csg->lights.clear();
   }
   // POV-Ray gives every object an interior and keeps the hollow flag there.

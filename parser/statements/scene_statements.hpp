@@ -3,8 +3,9 @@
 // #default, #version's effect — with the SceneDescription they fill. Its bodies are in scene.cpp.
 //
 // It owns the scene being made and the settings later statements read: the #default texture (and the copy shared
-// by the untextured objects placed since it last changed), whether a camera, a statement and a #version were seen
-// (POV-Ray's languageVersionSet), and through the scene the language version, assumed_gamma and noise generator.
+// by the untextured objects placed since it last changed) and radiosity importance, whether a camera, a statement
+// and a #version were seen (POV-Ray's languageVersionSet), and through the scene the language version,
+// assumed_gamma and noise generator.
 //
 // Public interface: run (the Interpreter), parse_default and directive_version (the DirectiveRunner), place_object
 // and place_light (`object { }` and the CSG's lights, through ParserPart) and the settings' read accessors
@@ -28,13 +29,15 @@ class TextureParser;
 class CameraLightParser;
 class ObjectParser;
 class UnsupportedFeatures;
+class RadiosityParser;
 
 class SceneStatements : ParserPart {
  public:
   // Only kept here, not used, until the parse runs (the Interpreter builds the parts it calls after it).
   SceneStatements(Interpreter& in, const ParseOptions& options, SymbolTable& symbols, TokenReader& reader,
                   DirectiveRunner& directives, ExpressionParser& expressions, TextureParser& textures,
-                  CameraLightParser& camera_lights, ObjectParser& objects, UnsupportedFeatures& unsupported)
+                  CameraLightParser& camera_lights, ObjectParser& objects, UnsupportedFeatures& unsupported,
+                  RadiosityParser& radiosity)
       : ParserPart(in),
         options_(options),
         symbols_(symbols),
@@ -44,7 +47,8 @@ class SceneStatements : ParserPart {
         textures_(textures),
         camera_lights_(camera_lights),
         objects_(objects),
-        unsupported_(unsupported) {
+        unsupported_(unsupported),
+        radiosity_(radiosity) {
     default_texture_.layers.emplace_back();   // black pigment, default finish (§11 "Default texture")
   }
 
@@ -69,7 +73,7 @@ class SceneStatements : ParserPart {
   void parse_statement(const Token& t);
   void parse_global_settings(const Token& keyword);
   void parse_background(const Token& keyword);
-  void add_light(Light light);
+  void add_light(Light light, std::optional<double> importance);   // importance: the CSG parent's, if any
   void post_process(Object& object);
   void placed(Object& object);   // the last step before the object joins scene_.objects
   std::string reached_from() const;
@@ -83,6 +87,7 @@ class SceneStatements : ParserPart {
   CameraLightParser& camera_lights_;
   ObjectParser& objects_;
   UnsupportedFeatures& unsupported_;
+  RadiosityParser& radiosity_;
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes

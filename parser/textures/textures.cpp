@@ -137,7 +137,10 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
     else if (k == "diffuse") {
       diffuse_albedo = accept("albedo");
       f.diffuse = parse_float();
-      if (accept(",")) f.diffuse_back = parse_float();
+      // POV-Ray's Parse_Comma then Allow_Float(0): the comma is optional and an unwritten back value is 0, so
+      // `diffuse D` in a finish copied from an identifier clears that finish's back value.
+      accept(",");
+      f.diffuse_back = optional_float(0.0);
     } else if (k == "brilliance") f.brilliance = parse_float();
     else if (k == "phong") {
       phong_albedo = accept("albedo");
@@ -177,6 +180,10 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
     }
     t = next();
   }
+  // Radiosity uses the values before this block's albedo rescaling (POV-Ray's RawDiffuse, set at the end of every
+  // finish block from what the block holds, rescaled or not).
+  f.diffuse_raw = f.diffuse;
+  f.diffuse_back_raw = f.diffuse_back;
   if (diffuse_albedo) {
     f.diffuse *= (f.brilliance + 1.0) / 2.0;
     f.diffuse_back *= (f.brilliance + 1.0) / 2.0;   // both values, as POV-Ray's Parse_Finish rescales them

@@ -440,8 +440,20 @@ INSTANTIATE_TEST_SUITE_P(
                       FinishCase{"specular 0.5", &Finish::roughness, 0.05},
                       FinishCase{"diffuse 0.7", &Finish::diffuse, 0.7},
                       FinishCase{"diffuse 0.7, 0.2", &Finish::diffuse_back, 0.2},
+                      FinishCase{"diffuse 0.7 0.2", &Finish::diffuse_back, 0.2},   // the comma is optional
+                      FinishCase{"diffuse 0.7, 0.2 diffuse 0.5", &Finish::diffuse_back, 0},
                       FinishCase{"brilliance 2", &Finish::brilliance, 2},
                       FinishCase{"ambient 0", &Finish::diffuse, 0.6}));
+
+// Measured with POV-Ray 3.7.0.10: a finish { F diffuse 0 } whose F has `diffuse 0, 1` is black lit from behind —
+// writing `diffuse` again without a back value sets the back value to 0.
+TEST(Textures, DiffuseWithoutBackValueClearsTheCopiedOne) {
+  const SceneDescription s = scene(
+      "#declare F = finish { diffuse 0, 1 }\nsphere { 0, 1 finish { F } }\nsphere { 0, 1 finish { F diffuse 0 } }\n");
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(top_layer(s.objects[0]).finish.diffuse_back, 1);
+  EXPECT_EQ(top_layer(s.objects[1]).finish.diffuse_back, 0);
+}
 
 TEST(Textures, FinishColourParameters) {
   const SceneDescription s = scene(
