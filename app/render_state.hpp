@@ -1,0 +1,94 @@
+// +C / Continue_Trace: the render state file. While a frame renders to a file, every finished block is appended
+// to `<output stem>.povtrace-state` next to the output (POV-Ray 3.7 keeps `<output stem>.pov-state` the same way);
+// the file is removed once the image is written. After an interrupt it stays, and `+C` renders only the blocks
+// it lacks and puts the saved ones back: blocks are independent, so the result is bit-identical to an
+// uninterrupted render.
+//
+// povtrace's own format (POV-Ray's is not read or written): a text header, "povtrace render state 1\n", the byte
+// count of the settings text on a line, then that text ("key=value" lines: image size, region, antialiasing, the
+// frame, a digest of the scene file...: everything the pixels depend on); then one record per block: the tag
+// "BLK1", x0 y0 x1 y1 (int32), the block's RGBA floats (linear, as the framebuffer holds them), and a 64-bit
+// checksum of the record. Numbers are in the machine's byte order (the settings name it). The header is written to
+// a temporary file and renamed into place; records are only appended, so a reader takes the records before the
+// first incomplete or damaged one (a crash mid-write costs that block only) and a continued render appends after
+// them.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/animation.hpp"
+#include "app/options.hpp"
+#include "renderer/image/image.hpp"
+
+namespace povtrace::app {
+
+// `<dir>/<stem>.povtrace-state` for the output file `<dir>/<stem>.<ext>` (POV-Ray's rule for its .pov-state).
+std::filesystem::path state_file_path(const std::filesystem::path& output);
+
+// The settings text of a frame's state file: what its pixels depend on (not the thread count or the output
+// format, which do not change them). `scene_text` is the scene's text (a file's or standard input's).
+std::string state_settings(const RenderOptions& options, const Frame& frame,
+                           const std::optional<image::PixelRect>& region, int block_size,
+                           const std::string& scene_text);
+
+struct SavedState {
+  enum class Status {
+    absent,          // no state file
+    unreadable,      // not a povtrace state file, another format version, or a damaged header
+    other_settings,  // written for other settings (`difference` says which)
+    usable,
+  };
+  Status status = Status::absent;
+  std::string difference;                // other_settings: "Width: 320 in the state file, 640 now" (first one)
+  image::Image pixels;                   // usable: full frame size; the saved blocks' pixels, zero elsewhere
+  std::vector<image::PixelRect> blocks;  // usable: the saved blocks, in the order they were written
+  std::uintmax_t valid_bytes = 0;        // usable: the file's length up to the end of its last intact record
+};
+
+// Reads the state file at `path` for a render whose settings text is `settings` and whose frame is
+// width × height.
+SavedState read_state(const std::filesystem::path& path, const std::string& settings, int width, int height);
+
+// The state file of a render in progress. record() may be called from several threads at once.
+class StateWriter {
+ public:
+  // A new state file holding `settings` and no block (written beside `path` and renamed over it: an existing file
+  // is replaced whole). Throws std::runtime_error when it cannot be written.
+  static std::unique_ptr<StateWriter> create(const std::filesystem::path& path, const std::string& settings);
+  // Appends to the existing state file `path` after its first `valid_bytes` bytes (anything after is cut off).
+  static std::unique_ptr<StateWriter> resume(const std::filesystem::path& path, std::uintmax_t valid_bytes);
+
+  StateWriter(std::filesystem::path path, std::FILE* file);
+  StateWriter(const StateWriter&) = delete;
+  StateWriter& operator=(const StateWriter&) = delete;
+  ~StateWriter();
+
+  // Appends the block `block` of `image` (full frame size). Written through to the system at most every
+  // quarter second, and by close(); so a kill -9 loses at most that much, an interrupt nothing.
+  void record(const image::Image& image, const image::PixelRect& block);
+  // Flushes and closes the file (kept on disk); false if a write failed since the start (then the file holds the
+  // blocks before the failure, or a damaged last record that a reader drops).
+  bool close();
+  // Closes and deletes the file (after the image was written).
+  void remove();
+  const std::filesystem::path& path() const { return path_; }
+  long long blocks_written() const { return blocks_written_; }
+
+ private:
+  std::filesystem::path path_;
+  std::FILE* file_ = nullptr;
+  std::mutex mutex_;
+  std::vector<unsigned char> buffer_;
+  long long last_flush_ns_ = 0;
+  long long blocks_written_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace povtrace::app
