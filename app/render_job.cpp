@@ -289,19 +289,13 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   for (const auto& w : scene.warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
 
   if (state) {
-    try {
-      state->writer = state->saved.status == SavedState::Status::usable
-                          ? StateWriter::resume(state->path, state->saved.valid_bytes)
-                          : StateWriter::create(state->path, state->settings);
-    } catch (const std::exception& e) {   // the render itself can still succeed; only +C would be lost
-      messages.write(Stream::warning, std::string("povtrace: warning: ") + e.what() + "; +C cannot continue this render");
-    }
-    if (state->writer) {
-      StateWriter& writer = *state->writer;
-      settings.block_done = [&writer](const image::Image& image, const image::PixelRect& block) {
-        writer.record(image, block);
-      };
-    }
+    state->writer = std::make_unique<StateWriter>(
+        state->path, state->settings,
+        state->saved.status == SavedState::Status::usable ? std::optional(state->saved.valid_bytes) : std::nullopt);
+    StateWriter& writer = *state->writer;
+    settings.block_done = [&writer](const image::Image& image, const image::PixelRect& block) {
+      writer.record(image, block);
+    };
     if (!state->saved_blocks.empty()) {
       const auto& saved = state->saved_blocks;
       settings.skip_block = [&saved](const image::PixelRect& b) { return saved.contains({b.x0, b.y0, b.x1, b.y1}); };
@@ -315,17 +309,17 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   r.times.render_s = seconds_since(render_start);
   if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO) && messages.console(Stream::render)) std::cerr << "\n";
   r.rays = rendered.rays;
-  const bool state_ok = !state || !state->writer || state->writer->close();
-  if (!state_ok) {
-    messages.write(Stream::warning, "povtrace: warning: cannot write the render state file '" + state->path.string() +
-                                        "' (disk full?); +C may not continue all of this render");
-  }
   if (rendered.cancelled) {
     std::string text = "povtrace: interrupted; no image written (an existing output file is left as it was)";
-    if (state && state->writer) {
-      const long long kept = static_cast<long long>(state->saved.blocks.size()) + state->writer->blocks_written();
-      text += "; " + std::to_string(kept) + " finished block" + (kept == 1 ? "" : "s") + " kept in '" +
-              state->path.string() + "': +C continues the render";
+    if (state) {
+      try {
+        state->writer->finish_interrupted(rendered.image);
+        const long long kept = static_cast<long long>(state->saved.blocks.size()) + state->writer->blocks_recorded();
+        text += "; " + std::to_string(kept) + " finished block" + (kept == 1 ? "" : "s") + " kept in '" +
+                state->path.string() + "': +C continues the render";
+      } catch (const std::exception& e) {
+        messages.write(Stream::warning, std::string("povtrace: warning: ") + e.what() + "; +C may not continue all of it");
+      }
     }
     messages.write(Stream::render, text);
     r.exit_status = 1;
@@ -341,7 +335,7 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   }
 
   finish_job(options, std::move(rendered.image), r, start, output, messages);
-  if (state && state->writer) state->writer->remove();   // the image is written: nothing left to continue
+  if (state) state->writer->discard();   // the image is written: nothing left to continue
   return r;
 }
 

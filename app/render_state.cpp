@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <chrono>
+#include <cerrno>
 #include <cinttypes>
 #include <cstring>
 #include <fstream>
@@ -15,6 +16,7 @@
 namespace povtrace::app {
 
 namespace fs = std::filesystem;
+using image::PixelRect;
 
 namespace {
 
@@ -22,12 +24,33 @@ constexpr const char* kMagic = "povtrace render state 1";
 constexpr char kTag[4] = {'B', 'L', 'K', '1'};
 constexpr std::size_t kRecordHead = sizeof kTag + 4 * sizeof(std::int32_t);
 
-// FNV-1a, 64 bits: the records' checksum and the scene's digest.
-std::uint64_t fnv1a(const void* data, std::size_t n, std::uint64_t h = 0xcbf29ce484222325ull) {
+// FNV-1a, 64 bits, for the tails of the word-wise hash below.
+std::uint64_t fnv1a(const void* data, std::size_t n, std::uint64_t h) {
   const auto* p = static_cast<const unsigned char*>(data);
   for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 0x100000001b3ull;
   return h;
 }
+
+// A 64-bit hash of n bytes, 8 bytes a step (records are 16 KB, a scene can be 100 MB of mesh), then mixed: the
+// records' checksum and the scene's digest.
+std::uint64_t hash_bytes(const void* data, std::size_t n) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    std::uint64_t word = 0;
+    std::memcpy(&word, p + i, 8);
+    h = (h ^ word) * 0x100000001b3ull;
+    h ^= h >> 29;
+  }
+  h = fnv1a(p + i, n - i, h);
+  h ^= h >> 31;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 29;
+  return h;
+}
+
+std::uint64_t record_check(const void* data, std::size_t n) { return hash_bytes(data, n); }
 
 std::string exact(double v) {
   char text[40];
@@ -35,20 +58,9 @@ std::string exact(double v) {
   return text;
 }
 
-// A digest of a whole file's text, 8 bytes a step (a scene can be 100 MB of mesh), then mixed.
 std::string digest(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  std::size_t i = 0;
-  for (; i + 8 <= text.size(); i += 8) {
-    std::uint64_t word = 0;
-    std::memcpy(&word, text.data() + i, 8);
-    h = (h ^ word) * 0x100000001b3ull;
-    h ^= h >> 29;
-  }
-  h = fnv1a(text.data() + i, text.size() - i, h);
-  h ^= h >> 31; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 29;
   char hex[48];
-  std::snprintf(hex, sizeof hex, "%016" PRIx64 " (%zu bytes)", h, text.size());
+  std::snprintf(hex, sizeof hex, "%016" PRIx64 " (%zu bytes)", hash_bytes(text.data(), text.size()), text.size());
   return hex;
 }
 
@@ -174,7 +186,7 @@ SavedState read_state(const fs::path& path, const std::string& settings, int wid
       break;
     std::uint64_t check = 0;
     if (!in.read(reinterpret_cast<char*>(&check), sizeof check)) break;
-    if (check != fnv1a(record.data(), record.size())) break;
+    if (check != record_check(record.data(), record.size())) break;
     const unsigned char* p = record.data() + kRecordHead;
     const std::size_t row = static_cast<std::size_t>(r.width()) * 4 * sizeof(float);
     for (int y = r.y0; y <= r.y1; ++y, p += row) std::memcpy(st.pixels.pixel(r.x0, y), p, row);
@@ -185,40 +197,45 @@ SavedState read_state(const fs::path& path, const std::string& settings, int wid
   return st;
 }
 
-StateWriter::StateWriter(fs::path path, std::FILE* file) : path_(std::move(path)), file_(file) {
-  last_flush_ns_ = now_ns();
+StateWriter::StateWriter(fs::path path, std::string settings, std::optional<std::uintmax_t> resume_after,
+                         double delay_s)
+    : path_(std::move(path)), settings_(std::move(settings)), resume_after_(resume_after) {
+  open_at_ns_ = now_ns() + static_cast<long long>(delay_s * 1e9);
 }
 
 StateWriter::~StateWriter() {
   if (file_ != nullptr) std::fclose(file_);
 }
 
-std::unique_ptr<StateWriter> StateWriter::create(const fs::path& path, const std::string& settings) {
+long long StateWriter::blocks_recorded() const {
+  std::lock_guard lock(mutex_);
+  return recorded_;
+}
+
+void StateWriter::open_locked() {
+  if (file_ != nullptr || !error_.empty()) return;
   try {
-    image::write_file_atomically(path, [&](const fs::path& temp) {
-      std::ofstream out(temp, std::ios::binary);
-      out << kMagic << "\n" << settings.size() << "\n" << settings;
-      out.close();
-      if (!out) throw std::runtime_error("write failed");
-    });
+    if (resume_after_) {
+      std::error_code ec;
+      fs::resize_file(path_, *resume_after_, ec);   // a damaged last record is cut off before appending
+      if (ec) throw std::runtime_error(ec.message());
+    } else {
+      image::write_file_atomically(path_, [&](const fs::path& temp) {
+        std::ofstream out(temp, std::ios::binary);
+        out << kMagic << "\n" << settings_.size() << "\n" << settings_;
+        out.close();
+        if (!out) throw std::runtime_error("write failed");
+      });
+    }
+    file_ = std::fopen(path_.c_str(), "ab");
+    if (file_ == nullptr) throw std::runtime_error(std::strerror(errno));
+    last_flush_ns_ = now_ns();
   } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("cannot create the render state file: ") + e.what());
+    error_ = "cannot write the render state file '" + path_.string() + "': " + e.what();
   }
-  std::FILE* f = std::fopen(path.c_str(), "ab");
-  if (f == nullptr) throw std::runtime_error("cannot open the render state file '" + path.string() + "'");
-  return std::make_unique<StateWriter>(path, f);
 }
 
-std::unique_ptr<StateWriter> StateWriter::resume(const fs::path& path, std::uintmax_t valid_bytes) {
-  std::error_code ec;
-  fs::resize_file(path, valid_bytes, ec);   // a damaged last record is cut off before appending
-  if (ec) throw std::runtime_error("cannot trim the render state file '" + path.string() + "': " + ec.message());
-  std::FILE* f = std::fopen(path.c_str(), "ab");
-  if (f == nullptr) throw std::runtime_error("cannot open the render state file '" + path.string() + "'");
-  return std::make_unique<StateWriter>(path, f);
-}
-
-void StateWriter::record(const image::Image& image, const image::PixelRect& r) {
+void StateWriter::write_locked(const image::Image& image, const PixelRect& r) {
   const std::size_t row = static_cast<std::size_t>(r.width()) * 4 * sizeof(float);
   std::vector<unsigned char> bytes(kRecordHead + row * r.height() + sizeof(std::uint64_t));
   std::memcpy(bytes.data(), kTag, sizeof kTag);
@@ -226,29 +243,50 @@ void StateWriter::record(const image::Image& image, const image::PixelRect& r) {
   std::memcpy(bytes.data() + sizeof kTag, c, sizeof c);
   unsigned char* p = bytes.data() + kRecordHead;
   for (int y = r.y0; y <= r.y1; ++y, p += row) std::memcpy(p, image.pixel(r.x0, y), row);
-  const std::uint64_t check = fnv1a(bytes.data(), bytes.size() - sizeof check);
+  const std::uint64_t check = record_check(bytes.data(), bytes.size() - sizeof check);
   std::memcpy(p, &check, sizeof check);
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size() && error_.empty()) {
+    error_ = "cannot write the render state file '" + path_.string() + "': " + std::strerror(errno);
+  }
+}
+
+void StateWriter::record(const image::Image& image, const PixelRect& r) {
   std::lock_guard lock(mutex_);
-  if (file_ == nullptr || failed_) return;
-  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) failed_ = true;
-  ++blocks_written_;
+  ++recorded_;
   const long long t = now_ns();
+  if (file_ == nullptr) {
+    pending_.push_back(r);
+    if (t < open_at_ns_ || !error_.empty()) return;
+    open_locked();
+    if (file_ == nullptr) return;
+    for (const PixelRect& b : pending_) write_locked(image, b);
+    pending_.clear();
+  } else {
+    write_locked(image, r);
+  }
   if (t - last_flush_ns_ >= 250'000'000) {
-    if (std::fflush(file_) != 0) failed_ = true;
+    std::fflush(file_);
     last_flush_ns_ = t;
   }
 }
 
-bool StateWriter::close() {
+void StateWriter::finish_interrupted(const image::Image& image) {
   std::lock_guard lock(mutex_);
-  if (file_ == nullptr) return !failed_;
-  if (std::fclose(file_) != 0) failed_ = true;
-  file_ = nullptr;
-  return !failed_;
+  open_locked();
+  if (file_ != nullptr) {
+    for (const PixelRect& b : pending_) write_locked(image, b);
+    pending_.clear();
+    if (std::fclose(file_) != 0 && error_.empty()) error_ = "cannot write the render state file '" + path_.string() + "'";
+    file_ = nullptr;
+  }
+  if (!error_.empty()) throw std::runtime_error(error_);
 }
 
-void StateWriter::remove() {
-  close();
+void StateWriter::discard() {
+  std::lock_guard lock(mutex_);
+  if (file_ != nullptr) std::fclose(file_);
+  file_ = nullptr;
+  pending_.clear();
   std::error_code ignored;
   fs::remove(path_, ignored);
 }

@@ -56,39 +56,46 @@ struct SavedState {
 // width × height.
 SavedState read_state(const std::filesystem::path& path, const std::string& settings, int width, int height);
 
-// The state file of a render in progress. record() may be called from several threads at once.
+// The state file of a render in progress. Lazy, so that short renders cost nothing: blocks are only noted until
+// the render has run for `delay_s` seconds; then the file is opened, the blocks so far are written from the
+// framebuffer (final once finished), and each later block as it finishes. An interrupt writes whatever is still
+// only noted (finish_interrupted). A kill -9 loses the blocks of the first `delay_s` seconds at most, and those
+// of the last quarter second (written through to the system that often).
 class StateWriter {
  public:
-  // A new state file holding `settings` and no block (written beside `path` and renamed over it: an existing file
-  // is replaced whole). Throws std::runtime_error when it cannot be written.
-  static std::unique_ptr<StateWriter> create(const std::filesystem::path& path, const std::string& settings);
-  // Appends to the existing state file `path` after its first `valid_bytes` bytes (anything after is cut off).
-  static std::unique_ptr<StateWriter> resume(const std::filesystem::path& path, std::uintmax_t valid_bytes);
-
-  StateWriter(std::filesystem::path path, std::FILE* file);
+  // A new state file holding `settings` (an existing one is replaced whole: written beside `path` and renamed);
+  // or, with `resume_after`, the existing file continued after its first *resume_after bytes (the intact
+  // records; anything after is cut off).
+  StateWriter(std::filesystem::path path, std::string settings, std::optional<std::uintmax_t> resume_after,
+              double delay_s = 2.0);
   StateWriter(const StateWriter&) = delete;
   StateWriter& operator=(const StateWriter&) = delete;
   ~StateWriter();
 
-  // Appends the block `block` of `image` (full frame size). Written through to the system at most every
-  // quarter second, and by close(); so a kill -9 loses at most that much, an interrupt nothing.
+  // Notes the finished block `block` of `image` (the render's full-size framebuffer, the same one every call);
+  // may be called from several threads at once. Never throws: a write error is kept for finish_interrupted.
   void record(const image::Image& image, const image::PixelRect& block);
-  // Flushes and closes the file (kept on disk); false if a write failed since the start (then the file holds the
-  // blocks before the failure, or a damaged last record that a reader drops).
-  bool close();
-  // Closes and deletes the file (after the image was written).
-  void remove();
+  // After an interrupt: writes the blocks not yet written, their pixels from `image` (the framebuffer), and closes
+  // the file. Throws std::runtime_error naming the file if it could not be written (then +C may lack blocks).
+  void finish_interrupted(const image::Image& image);
+  // After the image was written: closes and deletes the state file (also an older one this render replaces).
+  void discard();
   const std::filesystem::path& path() const { return path_; }
-  long long blocks_written() const { return blocks_written_; }
+  long long blocks_recorded() const;
 
  private:
+  void open_locked();                                            // creates or resumes the file
+  void write_locked(const image::Image& image, const image::PixelRect& block);
   std::filesystem::path path_;
+  std::string settings_;
+  std::optional<std::uintmax_t> resume_after_;
+  long long open_at_ns_ = 0;            // when to open the file if it is not open yet
   std::FILE* file_ = nullptr;
-  std::mutex mutex_;
-  std::vector<unsigned char> buffer_;
+  mutable std::mutex mutex_;
+  std::vector<image::PixelRect> pending_;   // recorded, not yet written
   long long last_flush_ns_ = 0;
-  long long blocks_written_ = 0;
-  bool failed_ = false;
+  long long recorded_ = 0;
+  std::string error_;                   // the first write error
 };
 
 }  // namespace povtrace::app

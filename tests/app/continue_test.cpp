@@ -6,12 +6,14 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/animation.hpp"
@@ -104,9 +106,9 @@ std::string settings_for(const app::RenderOptions& o) {
 
 // What an interrupted render leaves: a state file holding `blocks` of `image`.
 void write_state(const app::RenderOptions& o, const image::Image& image, const std::vector<PixelRect>& blocks) {
-  auto writer = app::StateWriter::create(app::state_file_path(*o.output), settings_for(o));
-  for (const PixelRect& b : blocks) writer->record(image, b);
-  ASSERT_TRUE(writer->close());
+  app::StateWriter writer(app::state_file_path(*o.output), settings_for(o), std::nullopt, 0.0);
+  for (const PixelRect& b : blocks) writer.record(image, b);
+  writer.finish_interrupted(image);
 }
 
 bool same_pixels(const image::Image& a, const image::Image& b) {
@@ -117,6 +119,58 @@ TEST(StateFile, NameFollowsPovRaysRule) {
   EXPECT_EQ(app::state_file_path("dir/out.png"), fs::path("dir/out.povtrace-state"));
   EXPECT_EQ(app::state_file_path("a.b.exr"), fs::path("a.b.povtrace-state"));
   EXPECT_EQ(app::state_file_path("frame07.tga"), fs::path("frame07.povtrace-state"));
+}
+
+// Nothing touches the disk until the delay has passed; then the blocks noted so far are written with the new one.
+TEST(StateFile, WrittenOnlyOnceTheDelayHasPassed) {
+  const Scratch s;
+  const app::RenderOptions o = options_in(s);
+  image::Image img(150, 100);
+  for (std::size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = static_cast<float>(i % 97) / 7.0f;
+  const fs::path path = s.path() / "out.povtrace-state";
+  const std::vector<PixelRect> all = blocks_of(150, 100);
+  app::StateWriter writer(path, settings_for(o), std::nullopt, 0.2);
+  writer.record(img, all[0]);
+  writer.record(img, all[4]);
+  EXPECT_FALSE(fs::exists(path));
+  std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  writer.record(img, all[7]);
+  EXPECT_TRUE(fs::exists(path));
+  writer.finish_interrupted(img);
+  const app::SavedState read = app::read_state(path, settings_for(o), 150, 100);
+  ASSERT_EQ(read.status, Status::usable);
+  EXPECT_EQ(read.blocks, (std::vector<PixelRect>{all[0], all[4], all[7]}));
+  for (const PixelRect& b : read.blocks)
+    for (int y = b.y0; y <= b.y1; ++y)
+      for (int x = b.x0; x <= b.x1; ++x)
+        for (int c = 0; c < 4; ++c) ASSERT_EQ(read.pixels.pixel(x, y)[c], img.pixel(x, y)[c]);
+  EXPECT_EQ(read.pixels.pixel(149, 99)[0], 0.0f);   // not saved: zero
+}
+
+// A continued render appends after the intact records; a damaged tail is cut off first, not left in between.
+TEST(StateFile, ResumeAppendsAfterTheIntactRecords) {
+  const Scratch s;
+  const app::RenderOptions o = options_in(s);
+  image::Image img(150, 100);
+  for (std::size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = static_cast<float>(i % 89);
+  const fs::path path = s.path() / "out.povtrace-state";
+  const std::vector<PixelRect> all = blocks_of(150, 100);
+  {
+    app::StateWriter writer(path, settings_for(o), std::nullopt, 0.0);
+    for (int i = 0; i < 3; ++i) writer.record(img, all[static_cast<std::size_t>(i)]);
+    writer.finish_interrupted(img);
+  }
+  fs::resize_file(path, fs::file_size(path) - 100);
+  const app::SavedState first = app::read_state(path, settings_for(o), 150, 100);
+  ASSERT_EQ(first.blocks.size(), 2u);
+  {
+    app::StateWriter writer(path, settings_for(o), first.valid_bytes);
+    writer.record(img, all[9]);
+    writer.finish_interrupted(img);
+  }
+  const app::SavedState second = app::read_state(path, settings_for(o), 150, 100);
+  EXPECT_EQ(second.blocks, (std::vector<PixelRect>{all[0], all[1], all[9]}));
+  EXPECT_EQ(second.valid_bytes, fs::file_size(path));
 }
 
 // The uninterrupted render leaves no state file; the continued one takes every saved block from the file (poisoned
@@ -344,11 +398,13 @@ TEST(Continue, AnAnimationSkipsFramesAlreadyWritten) {
     image::Image poisoned = r3.image;
     for (float& v : poisoned.rgba) v = 0.5f;
     const app::FramePlan plan = app::plan_frames(o.animation);
-    auto writer = app::StateWriter::create(s.path() / "a3.povtrace-state",
-                                           app::state_settings(o, plan.at(2), std::nullopt, 32, read_text_file(o.input)));
-    writer->record(poisoned, {0, 0, 31, 31});
-    writer->record(poisoned, {32, 32, 63, 59});
-    ASSERT_TRUE(writer->close());
+    app::StateWriter writer(s.path() / "a3.povtrace-state",
+                            app::state_settings(o, plan.at(2), std::nullopt, 32, read_text_file(o.input)),
+                            std::nullopt);
+    writer.record(poisoned, {0, 0, 31, 31});   // only noted: the default delay has not passed
+    EXPECT_FALSE(fs::exists(s.path() / "a3.povtrace-state"));
+    writer.record(poisoned, {32, 32, 63, 59});
+    writer.finish_interrupted(poisoned);
   }
   o.continue_trace = true;
   const app::JobResult r = run(o);
