@@ -411,7 +411,8 @@ constexpr OptionRow kRows[] = {
     {"SC", "Start_Column", sw_start_column, set_start_column, parsed, Warn::never,
      "first column: pixel, or fraction < 1"},
     {"EC", "End_Column", sw_end_column, set_end_column, parsed, Warn::never, "last column: pixel, or fraction <= 1"},
-    {"C", "Continue_Trace", sw_continue, set_continue, parsed, Warn::never, "continue an interrupted render"},
+    {"C", "Continue_Trace", sw_continue, set_continue, implemented, Warn::never,
+     "continue an interrupted render from its .povtrace-state file"},
     {"Q", "Quality", sw_quality, set_quality, parsed, Warn::never, "quality 0-9 (10 and 11 are 9)"},
     // Antialiasing
     {"A", "Antialias", sw_antialias, set_antialias, implemented, Warn::never, "+A[threshold] antialiasing on/off"},
