@@ -303,6 +303,10 @@ int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interr
     MPI_Finalize();
     throw std::runtime_error("MPI: one rank only; run without mpirun");
   }
+  if (rank == 0 && options.continue_trace) {
+    std::cerr << "povtrace: warning: +C (Continue_Trace) has no effect under mpirun: the MPI path keeps no render "
+                 "state file; rendering from the start\n";
+  }
   if (rank == 0) status = run_master(options, region, ranks, interrupted);
   else status = run_worker(options, rank, interrupted);
   MPI_Finalize();
