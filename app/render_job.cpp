@@ -71,15 +71,16 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
 namespace {
 
 // A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
-// terminal, a line per quarter otherwise (logs stay short).
-std::function<void(double)> progress_reporter(Clock::time_point start, Messages& messages) {
+// terminal, a line per quarter otherwise (logs stay short). `saved` is the share of the blocks a +C render takes
+// from its state file (done from the start, so not counted in the rate the ETA assumes).
+std::function<void(double)> progress_reporter(Clock::time_point start, Messages& messages, double saved = 0.0) {
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (!messages.console(Stream::render)) return [](double) {};
   auto last_quarter = std::make_shared<int>(0);
   return [=](double done) {
     const double elapsed = seconds_since(start);
-    if (elapsed < 1.0 || done <= 0) return;
-    const double eta = elapsed * (1.0 - done) / done;
+    if (elapsed < 1.0 || done <= saved) return;
+    const double eta = elapsed * (1.0 - done) / (done - saved);
     char line[128];
     std::snprintf(line, sizeof line, "povtrace: rendering %3.0f%%, %.1f s elapsed, ETA %.1f s", done * 100, elapsed, eta);
     if (tty) {
@@ -303,7 +304,14 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
   }
 
   const auto render_start = Clock::now();
-  settings.progress = progress_reporter(render_start, messages);
+  double saved_share = 0.0;
+  if (state && !state->saved.blocks.empty()) {   // the blocks of the grid that meet the rendered area
+    const int bs = std::max(4, settings.block_size);
+    const image::PixelRect area = region.value_or(image::PixelRect{0, 0, options.width - 1, options.height - 1});
+    const double blocks = static_cast<double>(area.x1 / bs - area.x0 / bs + 1) * (area.y1 / bs - area.y0 / bs + 1);
+    saved_share = static_cast<double>(state->saved.blocks.size()) / blocks;
+  }
+  settings.progress = progress_reporter(render_start, messages, saved_share);
   settings.cancel = &interrupted;
   render::RenderResult rendered = render::render(scene, settings);
   r.times.render_s = seconds_since(render_start);

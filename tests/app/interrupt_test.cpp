@@ -168,10 +168,10 @@ class RunningRender {
   std::optional<int> status_;
 };
 
-// After SIGINT: povtrace exits by itself with status 1 within kStopLimit and says why (`message`).
+// After SIGINT (or SIGTERM): povtrace exits by itself with status 1 within kStopLimit and says why (`message`).
 void expect_interrupted(RunningRender& render, const std::string& message) {
   const std::optional<int> status = render.wait_for_exit(kStopLimit);
-  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after SIGINT:\n" << render.output();
+  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after the signal:\n" << render.output();
   ASSERT_TRUE(WIFEXITED(*status)) << "povtrace did not exit normally (killed by a signal?):\n" << render.output();
   EXPECT_EQ(WEXITSTATUS(*status), 1) << render.output();
   EXPECT_NE(render.output().find(message), std::string::npos) << render.output();
@@ -285,7 +285,8 @@ TEST(Interrupt, ContinueGivesTheBytesOfAnUninterruptedRender) {
   EXPECT_EQ(fs::last_write_time(part), written);
 }
 
-// An animation of three frames interrupted in frame 2: frame 1 is written, frame 2 has a state file. +C skips
+// An animation of three frames interrupted (SIGTERM this time) in frame 2: frame 1 is written, frame 2 has a state
+// file. +C skips
 // frame 1 (its file exists), continues frame 2 and renders frame 3; frame 2 equals an uninterrupted render of it.
 TEST(Interrupt, ContinueAnInterruptedAnimation) {
   const ScratchFolder folder;
@@ -306,7 +307,7 @@ TEST(Interrupt, ContinueAnInterruptedAnimation) {
     ASSERT_TRUE(render.wait_for_line("povtrace: rendering", kStartLimit, render.output().find("povtrace: frame 2")))
         << render.output();
     ASSERT_EQ(render.output().find("povtrace: frame 3"), std::string::npos) << "frame 2 ended too soon";
-    render.signal(SIGINT);
+    render.signal(SIGTERM);
     expect_interrupted(render, "+C continues the render");
   }
   ASSERT_TRUE(fs::exists(folder.path() / "a1.exr"));
