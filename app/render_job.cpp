@@ -244,7 +244,9 @@ JobResult render_frame(const RenderOptions& options, const FramePlan& plan, cons
     state.emplace();
     state->path = state_file_path(output);
     state->settings = state_settings(options, frame, region, settings.block_size,
-                                     options.input == "-" ? stdin_text : read_text_file(options.input));
+                                     options.input == "-" ? stdin_text : read_text_file(options.input),
+                                     description.file_names ? description.file_names->all()
+                                                            : std::vector<std::string>{});
     if (options.continue_trace) {
       state->saved = read_state(state->path, state->settings, options.width, options.height);
       using Status = SavedState::Status;

@@ -103,10 +103,20 @@ fs::path state_file_path(const fs::path& output) {
 }
 
 std::string state_settings(const RenderOptions& o, const Frame& frame, const std::optional<image::PixelRect>& region,
-                           int block_size, const std::string& scene_text) {
+                           int block_size, const std::string& scene_text, const std::vector<std::string>& files_read) {
   std::ostringstream s;
   s << "byte order=" << (std::endian::native == std::endian::little ? "little" : "big") << "\n";
   s << "scene=" << digest(scene_text) << "\n";
+  for (const std::string& name : files_read) {
+    std::error_code ec;
+    if (name == o.input.string() || !fs::is_regular_file(name, ec)) continue;
+    if (fs::equivalent(name, o.input, ec)) continue;
+    try {
+      s << "file " << name << "=" << digest(read_text_file(name)) << "\n";
+    } catch (const std::exception&) {   // gone since the parse: it counts as a change
+      s << "file " << name << "=(unreadable)\n";
+    }
+  }
   if (o.include_header) {
     std::string header;
     try {

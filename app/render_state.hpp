@@ -33,10 +33,12 @@ namespace povtrace::app {
 std::filesystem::path state_file_path(const std::filesystem::path& output);
 
 // The settings text of a frame's state file: what its pixels depend on (not the thread count or the output
-// format, which do not change them). `scene_text` is the scene's text (a file's or standard input's).
+// format, which do not change them). `scene_text` is the scene's text (a file's or standard input's);
+// `files_read` the names of the other files the parse read (SceneDescription::file_names: #include files…), each
+// digested if it can be read (names that are not files are skipped).
 std::string state_settings(const RenderOptions& options, const Frame& frame,
                            const std::optional<image::PixelRect>& region, int block_size,
-                           const std::string& scene_text);
+                           const std::string& scene_text, const std::vector<std::string>& files_read = {});
 
 struct SavedState {
   enum class Status {

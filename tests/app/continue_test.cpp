@@ -20,6 +20,7 @@
 #include "app/options.hpp"
 #include "app/render_job.hpp"
 #include "app/render_state.hpp"
+#include "parser/parse_scene.hpp"
 #include "scene/source.hpp"
 
 namespace {
@@ -289,6 +290,38 @@ TEST(Continue, AStateFileFromOtherSettingsIsRefused) {
   }
   EXPECT_EQ(read_file(state), before);
   EXPECT_FALSE(fs::exists(s.path() / "out.png"));
+}
+
+// The #include files count as the scene: a state file of the same scene text with an edited include is refused.
+TEST(Continue, AnEditedIncludeFileIsAnotherScene) {
+  const Scratch s;
+  app::RenderOptions o = options_in(s);
+  write_file(s.path() / "part.inc", "sphere { <0.5, 0.5, -1>, 0.2 pigment { rgb <0, 0, 1> } }\n");
+  write_file(o.input, read_file(o.input) + "\n#include \"part.inc\"\n");
+  o.library_paths = {s.path()};
+  o.continue_trace = true;
+  const SceneDescription parsed = parse_scene(o.input, app::parse_options_from(o));
+  const std::string settings = app::state_settings(o, app::plan_frames(o.animation).at(0), std::nullopt, 32,
+                                                   read_text_file(o.input), parsed.file_names->all());
+  EXPECT_NE(settings.find("part.inc="), std::string::npos) << settings;
+  image::Image blank(150, 100);
+  auto save = [&] {
+    app::StateWriter writer(s.path() / "out.povtrace-state", settings, std::nullopt, 0.0);
+    writer.record(blank, blocks_of(150, 100)[0]);
+    writer.finish_interrupted(blank);
+  };
+  save();
+  EXPECT_EQ(run(o).exit_status, 0);   // the same files: continued
+  EXPECT_NE(read_file(s.path() / "log.txt").find("continuing from"), std::string::npos);
+  fs::remove(s.path() / "out.png");
+  save();
+  write_file(s.path() / "part.inc", "sphere { <0.5, 0.5, -1>, 0.3 pigment { rgb <0, 0, 1> } }\n");
+  try {
+    run(o);
+    ADD_FAILURE() << "a state file of another include file was accepted";
+  } catch (const app::UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("part.inc"), std::string::npos) << e.what();
+  }
 }
 
 // Not a povtrace state file (POV-Ray: a bad header means "start over"): a warning, a render from the start.
