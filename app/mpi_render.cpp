@@ -523,6 +523,10 @@ int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interr
     MPI_Finalize();
     throw std::runtime_error("MPI: one rank only; run without mpirun");
   }
+  if (rank == 0 && options.continue_trace) {
+    std::cerr << "povtrace: warning: +C (Continue_Trace) has no effect under mpirun: the MPI path keeps no render "
+                 "state file; rendering from the start\n";
+  }
   // An animation is split by frames (each parsed with its own clock), a still by tiles.
   const FramePlan plan = plan_frames(options.animation);
   if (plan.animated) {

@@ -394,7 +394,7 @@ constexpr OptionRow kRows[] = {
     {"F", "Output_To_File", sw_file, set_write_file, implemented, Warn::never,
      "+F[type][bits|g] writes a file, -F none"},
     {"", "Output_File_Type", nullptr, set_file_type, implemented, Warn::never,
-     "N PNG, E EXR, P PPM written; T C J B H parsed (their writers are issue 18 step 6)"},
+     "N PNG, E EXR, P PPM, T TGA, C compressed TGA, J JPEG, B BMP, H Radiance HDR"},
     {"", "Bits_Per_Color", nullptr, set_bits, implemented, Warn::never, "bits per channel, clipped to 5-16"},
     {"", "Bits_Per_Colour", nullptr, set_bits, implemented, Warn::never, "as Bits_Per_Color"},
     {"", "Grayscale_Output", nullptr, set_grayscale, implemented, Warn::never, "greyscale PNG/PPM (+FNG)"},
@@ -411,7 +411,8 @@ constexpr OptionRow kRows[] = {
     {"SC", "Start_Column", sw_start_column, set_start_column, implemented, Warn::never,
      "first column: pixel, or fraction < 1"},
     {"EC", "End_Column", sw_end_column, set_end_column, implemented, Warn::never, "last column: pixel, or fraction <= 1"},
-    {"C", "Continue_Trace", sw_continue, set_continue, parsed, Warn::never, "continue an interrupted render"},
+    {"C", "Continue_Trace", sw_continue, set_continue, implemented, Warn::never,
+     "continue an interrupted render from its .povtrace-state file"},
     {"Q", "Quality", sw_quality, set_quality, implemented, Warn::never, "quality 0-9 (10 and 11 are 9)"},
     // Antialiasing
     {"A", "Antialias", sw_antialias, set_antialias, implemented, Warn::never, "+A[threshold] antialiasing on/off"},

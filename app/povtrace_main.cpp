@@ -1,6 +1,7 @@
 // povtrace: renders a POV-Ray scene file. Exit status 0 on success, 1 for a bad scene or a failed render
 // (message with file:line:column), 2 for a bad command line. No output file is created or touched unless the
-// render completes: images are written to a temporary file and renamed.
+// render completes: images are written to a temporary file and renamed. An interrupted render leaves the state file
+// of its finished blocks for +C (app/render_state.hpp).
 #include <atomic>
 #include <chrono>
 #include <csignal>

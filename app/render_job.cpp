@@ -9,16 +9,20 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <set>
+#include <tuple>
 #include <sstream>
 
 #include "app/shellouts.hpp"
 #include "app/region.hpp"
+#include "app/render_state.hpp"
 #include "parser/parse_scene.hpp"
 #include "renderer/image/compare.hpp"
 #include "renderer/object_geometry.hpp"
 #include "renderer/pattern_evaluator.hpp"
 #include "renderer/render.hpp"
 #include "renderer/render_scene.hpp"
+#include "scene/source.hpp"
 
 namespace povtrace::app {
 
@@ -67,15 +71,16 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
 namespace {
 
 // A progress line for renders that take over a second (percent, elapsed, ETA): rewritten in place on a
-// terminal, a line per quarter otherwise (logs stay short).
-std::function<void(double)> progress_reporter(Clock::time_point start, Messages& messages) {
+// terminal, a line per quarter otherwise (logs stay short). `saved` is the share of the blocks a +C render takes
+// from its state file (done from the start, so not counted in the rate the ETA assumes).
+std::function<void(double)> progress_reporter(Clock::time_point start, Messages& messages, double saved = 0.0) {
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (!messages.console(Stream::render)) return [](double) {};
   auto last_quarter = std::make_shared<int>(0);
   return [=](double done) {
     const double elapsed = seconds_since(start);
-    if (elapsed < 1.0 || done <= 0) return;
-    const double eta = elapsed * (1.0 - done) / done;
+    if (elapsed < 1.0 || done <= saved) return;
+    const double eta = elapsed * (1.0 - done) / (done - saved);
     char line[128];
     std::snprintf(line, sizeof line, "povtrace: rendering %3.0f%%, %.1f s elapsed, ETA %.1f s", done * 100, elapsed, eta);
     if (tty) {
@@ -99,13 +104,37 @@ void print_summary(const RenderOptions& o, const JobResult& r, Messages& message
   messages.write(Stream::statistics, line);
 }
 
-// The scene's text: the file, or standard input for "-" (+I-).
-SceneDescription parse_input(const RenderOptions& options, const ParseOptions& parse_options) {
+// The scene's text: the file, or standard input for "-" (+I-). Standard input's text is kept in `stdin_text`
+// (the state file's digest needs it; it cannot be read twice).
+SceneDescription parse_input(const RenderOptions& options, const ParseOptions& parse_options,
+                             std::string& stdin_text) {
   if (options.input != "-") return parse_scene(options.input, parse_options);
   std::ostringstream text;
   text << std::cin.rdbuf();
-  return parse_scene_text(text.str(), "<stdin>", parse_options);
+  stdin_text = text.str();
+  return parse_scene_text(stdin_text, "<stdin>", parse_options);
 }
+
+bool output_to_stdout(const RenderOptions& options) {
+  return options.output && (*options.output == image::standard_output_path || *options.output == "stdout");
+}
+
+// A file that exists and is not empty: POV-Ray's test for "this frame was rendered" under +C.
+bool rendered_already(const std::filesystem::path& output) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(output, ec);
+  return !ec && size > 0;
+}
+
+// The render state of one frame (+C, app/render_state.hpp): what was saved by an interrupted render, and the file
+// the blocks of this render go to.
+struct FrameState {
+  std::filesystem::path path;
+  std::string settings;
+  SavedState saved;
+  std::set<std::tuple<int, int, int, int>> saved_blocks;
+  std::unique_ptr<StateWriter> writer;
+};
 }  // namespace
 
 std::string stats_json(const RenderOptions& o, const JobResult& r) {
@@ -144,6 +173,10 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
   if (messages_in == nullptr) own_messages.emplace(options.streams);
   Messages& messages = messages_in != nullptr ? *messages_in : *own_messages;
   JobResult r;
+  if (options.continue_trace && options.write_file && output_to_stdout(options)) {
+    // POV-Ray refuses this too ("Cannot continue trace if output to STDOUT or STDERR is specified").
+    throw UsageError("+C (Continue_Trace) cannot continue a render written to standard output (+O-)");
+  }
   ShellOuts shellouts(options, [&](const std::string& w) { messages.write(Stream::warning, "povtrace: warning: " + w); });
   const std::string planned_output = options.write_file ? resolved_output_path(options).string() : std::string();
   const ShellAction before = shellouts.run(ShellEvent::pre_scene, ShellOuts::context_for(options, planned_output));
@@ -170,6 +203,10 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
       messages.write(Stream::render, note.str());
     }
     r = render_frame(options, plan, frame, interrupted, messages);
+    if (r.skipped) {   // +C and the frame's file exists: POV-Ray runs no Post_Frame_Command for it either
+      r.frames = rendered;
+      continue;
+    }
     r.frames = ++rendered;
     if (r.exit_status != 0) return r;
     const ShellAction post = shellouts.run(ShellEvent::post_frame, frame_context(options, r.output.string(), frame));
@@ -182,21 +219,11 @@ JobResult run_render(const RenderOptions& options, const std::atomic<bool>& inte
   return r;
 }
 
-JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
-                       const std::atomic<bool>& interrupted, Messages& messages) {
-  const auto start = Clock::now();
-  JobResult r = render_frame_pixels(options, plan, frame, interrupted, messages);
-  if (r.exit_status != 0) {
-    messages.write(Stream::render, "povtrace: interrupted; no image written (an existing output file is left as it was)");
-    return r;
-  }
-  finish_job(options, std::move(r.image), r, start, frame_output_path(resolved_output_path(options), plan, frame.number),
-             messages);
-  return r;
-}
-
-JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
-                              const std::atomic<bool>& interrupted, Messages& messages) {
+namespace {
+// One frame, parsed, built and rendered; with `write`, kept in a render state file while it renders (+C) and
+// written to its numbered file; without, the pixels are returned in r.image (an MPI worker's frame).
+JobResult render_one_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                           const std::atomic<bool>& interrupted, Messages& messages, bool write) {
   JobResult r;
   const auto start = Clock::now();
   const std::optional<image::PixelRect> region = resolve_region(options.region, options.width, options.height);
@@ -208,8 +235,53 @@ JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& pla
     if (kind == ParseOptions::MessageKind::debug) debug_lines.add(text);
     else messages.write(Stream::warning, text);
   };
-  const SceneDescription description = parse_input(options, parse_options);
+  std::string stdin_text;
+  const SceneDescription description = parse_input(options, parse_options, stdin_text);
   r.times.parse_s = seconds_since(start);
+
+  const std::filesystem::path output = frame_output_path(resolved_output_path(options), plan, frame.number);
+  render::RenderSettings settings = render_settings_from(options);
+  settings.region = region;
+  // Every render to a file keeps a state file of its finished blocks (as POV-Ray's .pov-state), so that +C can
+  // continue it after an interrupt; +C first looks for one (after the parse, as POV-Ray).
+  std::optional<FrameState> state;
+  if (write && options.write_file && !output_to_stdout(options)) {
+    state.emplace();
+    state->path = state_file_path(output);
+    state->settings = state_settings(options, frame, region, settings.block_size,
+                                     options.input == "-" ? stdin_text : read_text_file(options.input),
+                                     description.file_names ? description.file_names->all()
+                                                            : std::vector<std::string>{});
+    if (options.continue_trace) {
+      state->saved = read_state(state->path, state->settings, options.width, options.height);
+      using Status = SavedState::Status;
+      if (state->saved.status == Status::other_settings) {
+        throw UsageError("+C: the render state file '" + state->path.string() + "' is from a render with other " +
+                         "settings (" + state->saved.difference + "); render without +C to start over");
+      }
+      if (state->saved.status == Status::unreadable) {
+        messages.write(Stream::warning, "povtrace: warning: '" + state->path.string() +
+                                            "' is not a povtrace render state file (or is damaged); not used");
+      }
+      if (state->saved.status != Status::usable && rendered_already(output)) {
+        // POV-Ray: "File already rendered and continue requested; skipping."
+        messages.write(Stream::render, "povtrace: '" + output.string() + "' is already rendered and +C is given; skipped");
+        r.skipped = true;
+        r.output = output;
+        return r;
+      }
+      if (state->saved.status == Status::usable) {
+        for (const image::PixelRect& b : state->saved.blocks) state->saved_blocks.emplace(b.x0, b.y0, b.x1, b.y1);
+        std::ostringstream note;
+        note << "povtrace: continuing from '" << state->path.string() << "': " << state->saved.blocks.size()
+             << " block" << (state->saved.blocks.size() == 1 ? "" : "s") << " already rendered";
+        messages.write(Stream::render, note.str());
+      } else if (state->saved.status == Status::absent) {
+        messages.write(Stream::render, "povtrace: no render state file '" + state->path.string() +
+                                           "' to continue from; rendering from the start");
+      }
+    }
+  }
 
   const auto build_start = Clock::now();
   const render::RenderScene scene = render::build_render_scene(
@@ -224,21 +296,80 @@ JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& pla
   }
   for (const auto& w : scene.warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
 
+  if (state) {
+    state->writer = std::make_unique<StateWriter>(
+        state->path, state->settings,
+        state->saved.status == SavedState::Status::usable ? std::optional(state->saved.valid_bytes) : std::nullopt);
+    StateWriter& writer = *state->writer;
+    settings.block_done = [&writer](const image::Image& image, const image::PixelRect& block) {
+      writer.record(image, block);
+    };
+    if (!state->saved_blocks.empty()) {
+      const auto& saved = state->saved_blocks;
+      settings.skip_block = [&saved](const image::PixelRect& b) { return saved.contains({b.x0, b.y0, b.x1, b.y1}); };
+    }
+  }
+
   const auto render_start = Clock::now();
-  render::RenderSettings settings = render_settings_from(options);
-  settings.region = region;
-  settings.progress = progress_reporter(render_start, messages);
+  double saved_share = 0.0;
+  if (state && !state->saved.blocks.empty()) {   // the blocks of the grid that meet the rendered area
+    const int bs = std::max(4, settings.block_size);
+    const image::PixelRect area = region.value_or(image::PixelRect{0, 0, options.width - 1, options.height - 1});
+    const double blocks = static_cast<double>(area.x1 / bs - area.x0 / bs + 1) * (area.y1 / bs - area.y0 / bs + 1);
+    saved_share = static_cast<double>(state->saved.blocks.size()) / blocks;
+  }
+  settings.progress = progress_reporter(render_start, messages, saved_share);
   settings.cancel = &interrupted;
   render::RenderResult rendered = render::render(scene, settings);
   r.times.render_s = seconds_since(render_start);
   if (r.times.render_s >= 1.0 && isatty(STDERR_FILENO) && messages.console(Stream::render)) std::cerr << "\n";
   r.rays = rendered.rays;
-  if (rendered.cancelled) {
+  if (rendered.cancelled && !write) {
     r.exit_status = 1;
     return r;
   }
-  r.image = std::move(rendered.image);
+  if (rendered.cancelled) {
+    std::string text = "povtrace: interrupted; no image written (an existing output file is left as it was)";
+    if (state) {
+      try {
+        state->writer->finish_interrupted(rendered.image);
+        const long long kept = static_cast<long long>(state->saved.blocks.size()) + state->writer->blocks_recorded();
+        text += "; " + std::to_string(kept) + " finished block" + (kept == 1 ? "" : "s") + " kept in '" +
+                state->path.string() + "': +C continues the render";
+      } catch (const std::exception& e) {
+        messages.write(Stream::warning, std::string("povtrace: warning: ") + e.what() + "; +C may not continue all of it");
+      }
+    }
+    messages.write(Stream::render, text);
+    r.exit_status = 1;
+    return r;
+  }
+  if (state) {   // the blocks of the interrupted render, as they were computed then
+    for (const image::PixelRect& b : state->saved.blocks) {
+      const std::size_t row = static_cast<std::size_t>(b.width()) * 4;
+      for (int y = b.y0; y <= b.y1; ++y) {
+        std::copy_n(state->saved.pixels.pixel(b.x0, y), row, rendered.image.pixel(b.x0, y));
+      }
+    }
+  }
+  if (!write) {
+    r.image = std::move(rendered.image);
+    return r;
+  }
+  finish_job(options, std::move(rendered.image), r, start, output, messages);
+  if (state) state->writer->discard();   // the image is written: nothing left to continue
   return r;
+}
+}  // namespace
+
+JobResult render_frame(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                       const std::atomic<bool>& interrupted, Messages& messages) {
+  return render_one_frame(options, plan, frame, interrupted, messages, true);
+}
+
+JobResult render_frame_pixels(const RenderOptions& options, const FramePlan& plan, const Frame& frame,
+                              const std::atomic<bool>& interrupted, Messages& messages) {
+  return render_one_frame(options, plan, frame, interrupted, messages, false);
 }
 
 void finish_job(const RenderOptions& options, image::Image image, JobResult& r, Clock::time_point start,
@@ -246,8 +377,7 @@ void finish_job(const RenderOptions& options, image::Image image, JobResult& r, 
   const auto write_start = Clock::now();
   if (options.write_file) {
     // +O- (POV-Ray also takes "stdout"): the whole file goes to standard output; messages stay on stderr.
-    const bool to_stdout = options.output && (*options.output == image::standard_output_path ||
-                                              *options.output == "stdout");
+    const bool to_stdout = output_to_stdout(options);
     r.output = to_stdout ? image::standard_output_path : output;
     image::write_image(image, r.output, resolved_encoding(options));
   }

@@ -28,6 +28,7 @@ struct JobResult {
   render::RayCounts rays;
   std::filesystem::path output;
   long long frames = 0;               // frames rendered (1 for a still)
+  bool skipped = false;               // +C: the frame's output file existed, nothing was rendered or written
 };
 
 // Parses, builds, renders and writes per `options`: one image, or every frame of an animation (one file each,

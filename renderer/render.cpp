@@ -227,10 +227,11 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
       }
       const int x0 = (bx0 + b % bx) * bs, y0 = (by0 + b / bx) * bs;
       const int w = std::min(bs, settings.width - x0), h = std::min(bs, settings.height - y0);
-      br.render_block(x0, y0, w, h);
-      if (settings.block_done) {
-        settings.block_done({std::max(x0, area.x0), std::max(y0, area.y0), std::min(x0 + w - 1, area.x1),
-                             std::min(y0 + h - 1, area.y1)});
+      const image::PixelRect stored{std::max(x0, area.x0), std::max(y0, area.y0), std::min(x0 + w - 1, area.x1),
+                                    std::min(y0 + h - 1, area.y1)};
+      if (!settings.skip_block || !settings.skip_block(stored)) {
+        br.render_block(x0, y0, w, h);
+        if (settings.block_done) settings.block_done(result.image, stored);
       }
       ++done;
     }

@@ -43,11 +43,18 @@ struct RenderSettings {
   // the full frame; for MPI tiles, which would otherwise fill and send a whole frame per tile. Same pixel values.
   bool crop_to_region = false;
   std::function<void(double fraction_done)> progress;   // called from the calling thread
-  // Called once per finished block with the rectangle of the pixels it stored (clipped to the region), from the
-  // worker thread that rendered it, possibly concurrently: the callee synchronises. The block's pixels in the
-  // result image are final when it is called and no other thread writes them. Not called for a block
-  // abandoned by a cancel.
-  std::function<void(const image::PixelRect& block)> block_done;
+  // Called once per finished block with the image being filled and the rectangle of the pixels the block stored
+  // (frame coordinates, clipped to the region; with crop_to_region the image's pixel (0,0) is the region's
+  // corner), from the worker thread that rendered it, possibly concurrently: the callee synchronises. The block's
+  // pixels in the image are final when it is called and no other thread writes them, so the callee may read
+  // them (+C's state file records them). Not called for a block abandoned by a cancel.
+  std::function<void(const image::Image& image, const image::PixelRect& block)> block_done;
+  // Called before each block with the rectangle block_done would report for it, from the worker thread about to
+  // render it (concurrently: the callee must be safe to call so). True: the block is not rendered, its pixels
+  // keep the framebuffer's initial value (the caller fills them: +C puts back the blocks of an interrupted
+  // render, app/render_state.hpp), block_done is not called for it, and it counts as done for the progress.
+  // The blocks that are rendered are computed exactly as without skipping (every block is independent).
+  std::function<bool(const image::PixelRect& block)> skip_block;
   const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
 };
 

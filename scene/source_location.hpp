@@ -2,10 +2,12 @@
 // found after parsing can still name file:line:column.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_set>
+#include <vector>
 
 namespace povtrace {
 
@@ -35,6 +37,12 @@ class FileName {
 class FileNames {
  public:
   FileName intern(std::string_view name) { return FileName(&*names_.emplace(name).first); }
+  // Every name of the pool, sorted: the files a parse read (the scene, its #include files, …).
+  std::vector<std::string> all() const {
+    std::vector<std::string> names(names_.begin(), names_.end());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
 
  private:
   std::unordered_set<std::string> names_;   // node-based: a name never moves

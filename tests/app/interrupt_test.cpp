@@ -1,7 +1,9 @@
 // Ctrl-C (issue 7): SIGINT during a render stops povtrace promptly with exit status 1, leaves an existing output
-// file byte for byte as it was, creates none when there was none, and leaves no temporary file behind. The test
-// runs the real program (POVTRACE_EXE) on a scene that takes several seconds, and signals it once it reports
-// progress, i.e. once it is rendering; and on a scene whose parse never ends, which Ctrl-C must stop too.
+// file byte for byte as it was, creates none when there was none, and leaves no temporary file behind; only the
+// render state file of the finished blocks (issue 18, +C). The test runs the real program (POVTRACE_EXE) on a
+// scene that takes several seconds, and signals it once it reports progress, i.e. once it is rendering; and on a
+// scene whose parse never ends, which Ctrl-C must stop too. Then +C continues the interrupted render (a still and
+// an animation) to the same bytes as an uninterrupted render.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -118,14 +120,14 @@ class RunningRender {
     ::close(stderr_fd_);
   }
 
-  // Reads stderr until a line contains `text`; false at end of output or after `limit`.
-  bool wait_for_line(const std::string& text, Clock::duration limit) {
+  // Reads stderr until `text` appears (at or after offset `from`); false at end of output or after `limit`.
+  bool wait_for_line(const std::string& text, Clock::duration limit, std::size_t from = 0) {
     const auto deadline = Clock::now() + limit;
     while (Clock::now() < deadline) {
-      if (output_.find(text) != std::string::npos) return true;
+      if (output_.find(text, from) != std::string::npos) return true;
       if (!read_some(deadline)) return false;
     }
-    return output_.find(text) != std::string::npos;
+    return output_.find(text, from) != std::string::npos;
   }
 
   // The exit status once the process has ended, or nothing if it is still running after `limit`.
@@ -166,10 +168,10 @@ class RunningRender {
   std::optional<int> status_;
 };
 
-// After SIGINT: povtrace exits by itself with status 1 within kStopLimit and says why (`message`).
+// After SIGINT (or SIGTERM): povtrace exits by itself with status 1 within kStopLimit and says why (`message`).
 void expect_interrupted(RunningRender& render, const std::string& message) {
   const std::optional<int> status = render.wait_for_exit(kStopLimit);
-  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after SIGINT:\n" << render.output();
+  ASSERT_TRUE(status.has_value()) << "povtrace still running 20 s after the signal:\n" << render.output();
   ASSERT_TRUE(WIFEXITED(*status)) << "povtrace did not exit normally (killed by a signal?):\n" << render.output();
   EXPECT_EQ(WEXITSTATUS(*status), 1) << render.output();
   EXPECT_NE(render.output().find(message), std::string::npos) << render.output();
@@ -194,7 +196,7 @@ TEST(Interrupt, SigintKeepsAnExistingOutputFileAsItWas) {
   write_file(output, old_bytes);
   interrupt_render(folder.path(), output);
   EXPECT_EQ(read_file(output), old_bytes);
-  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"out.exr", "slow.pov"}))
+  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"out.exr", "out.povtrace-state", "slow.pov"}))
       << "a temporary file was left behind";
 }
 
@@ -203,7 +205,8 @@ TEST(Interrupt, SigintCreatesNoOutputFile) {
   const fs::path output = folder.path() / "out.exr";
   interrupt_render(folder.path(), output);
   EXPECT_FALSE(fs::exists(output));
-  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"slow.pov"})) << "a file was left behind";
+  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"out.povtrace-state", "slow.pov"}))
+      << "a file was left behind";
 }
 
 }  // namespace
@@ -227,6 +230,103 @@ TEST(Interrupt, SigintStopsAnEndlessParse) {
   expect_interrupted(render, "error: interrupted while parsing");
   EXPECT_EQ(read_file(output), old_bytes);
   EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"endless.pov", "out.exr"})) << "a file was left behind";
+}
+
+}  // namespace
+
+namespace {
+
+// povtrace run to its end; its exit status (0 expected) and stderr.
+int run_to_end(const std::vector<std::string>& args, std::string* output = nullptr) {
+  RunningRender render(args);
+  const std::optional<int> status = render.wait_for_exit(std::chrono::minutes(5));
+  if (output) *output = render.output();
+  if (!status || !WIFEXITED(*status)) return -1;
+  return WEXITSTATUS(*status);
+}
+
+// The slow scene at 320 × 240 with method 1 antialiasing and jitter (about 6 s on 2 cores): interrupted once it
+// reports progress, continued with +C; the file equals an uninterrupted render's byte for byte, and the state file
+// is gone afterwards.
+TEST(Interrupt, ContinueGivesTheBytesOfAnUninterruptedRender) {
+  const ScratchFolder folder;
+  const fs::path scene = folder.path() / "slow.pov";
+  write_file(scene, kSlowScene);
+  const std::vector<std::string> args = {"--no-povray-ini", "-D", "+W320", "+H240", "+A0.0", "+R3", "+FE",
+                                         scene.string()};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> all = args;
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  };
+  const fs::path part = folder.path() / "part.exr", state = folder.path() / "part.povtrace-state";
+  {
+    RunningRender render(with({"+O" + part.string()}));
+    ASSERT_TRUE(render.wait_for_line("povtrace: rendering", kStartLimit)) << render.output();
+    render.signal(SIGINT);
+    expect_interrupted(render, "+C continues the render");
+  }
+  ASSERT_FALSE(fs::exists(part));
+  ASSERT_TRUE(fs::exists(state));
+  std::string log;
+  ASSERT_EQ(run_to_end(with({"+C", "+O" + part.string()}), &log), 0) << log;
+  EXPECT_NE(log.find("continuing from"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(state));
+
+  const fs::path full = folder.path() / "full.exr";
+  ASSERT_EQ(run_to_end(with({"+O" + full.string()}), &log), 0) << log;
+  EXPECT_EQ(read_file(part), read_file(full)) << "the continued render differs from the uninterrupted one";
+  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"full.exr", "part.exr", "slow.pov"}));
+
+  // +C once more: the file exists and no state says otherwise, so it is "already rendered" (POV-Ray's rule).
+  const auto written = fs::last_write_time(part);
+  ASSERT_EQ(run_to_end(with({"+C", "+O" + part.string()}), &log), 0) << log;
+  EXPECT_NE(log.find("already rendered"), std::string::npos) << log;
+  EXPECT_EQ(fs::last_write_time(part), written);
+}
+
+// An animation of three frames interrupted (SIGTERM this time) in frame 2: frame 1 is written, frame 2 has a state
+// file. +C skips
+// frame 1 (its file exists), continues frame 2 and renders frame 3; frame 2 equals an uninterrupted render of it.
+TEST(Interrupt, ContinueAnInterruptedAnimation) {
+  const ScratchFolder folder;
+  const fs::path scene = folder.path() / "slow.pov";
+  write_file(scene, std::string(kSlowScene) + "sphere { <clock * 4 - 2, 1.5, 0>, 0.3 pigment { rgb 1 } }\n");
+  const std::vector<std::string> args = {"--no-povray-ini", "-D", "+W240", "+H180", "+A0.0", "+R3", "+FE",
+                                         "+KFI1", "+KFF3", scene.string()};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> all = args;
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  };
+  const fs::path out = folder.path() / "a.exr";
+  {
+    RunningRender render(with({"+O" + out.string()}));
+    ASSERT_TRUE(render.wait_for_line("povtrace: frame 2", kStartLimit)) << render.output();
+    // Frame 2's first progress line (frame 1's come before the frame 2 note).
+    ASSERT_TRUE(render.wait_for_line("povtrace: rendering", kStartLimit, render.output().find("povtrace: frame 2")))
+        << render.output();
+    ASSERT_EQ(render.output().find("povtrace: frame 3"), std::string::npos) << "frame 2 ended too soon";
+    render.signal(SIGTERM);
+    expect_interrupted(render, "+C continues the render");
+  }
+  ASSERT_TRUE(fs::exists(folder.path() / "a1.exr"));
+  ASSERT_FALSE(fs::exists(folder.path() / "a2.exr"));
+  ASSERT_TRUE(fs::exists(folder.path() / "a2.povtrace-state"));
+  const std::string a1 = read_file(folder.path() / "a1.exr");
+  const auto a1_written = fs::last_write_time(folder.path() / "a1.exr");
+
+  std::string log;
+  ASSERT_EQ(run_to_end(with({"+C", "+O" + out.string()}), &log), 0) << log;
+  EXPECT_NE(log.find("a1.exr' is already rendered"), std::string::npos) << log;
+  EXPECT_NE(log.find("continuing from"), std::string::npos) << log;
+  EXPECT_EQ(fs::last_write_time(folder.path() / "a1.exr"), a1_written);
+  EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"a1.exr", "a2.exr", "a3.exr", "slow.pov"}));
+
+  // Frame 2 alone, uninterrupted (Subset_Start/End_Frame keep the numbering and the clock).
+  const fs::path ref = folder.path() / "ref.exr";
+  ASSERT_EQ(run_to_end(with({"+SF2", "+EF2", "+O" + ref.string()}), &log), 0) << log;
+  EXPECT_EQ(read_file(folder.path() / "a2.exr"), read_file(folder.path() / "ref2.exr"));
 }
 
 }  // namespace

@@ -203,7 +203,7 @@ TEST(RegionRender, BlockDoneCoversTheRegionOnce) {
     std::mutex m;
     std::vector<int> hits(static_cast<std::size_t>(o.width * o.height), 0);
     int calls = 0;
-    s.block_done = [&](const PixelRect& r) {
+    s.block_done = [&](const image::Image&, const PixelRect& r) {
       std::lock_guard lock(m);
       ++calls;
       for (int y = r.y0; y <= r.y1; ++y)
