@@ -345,6 +345,14 @@ Vec3 Tracer::layer_normal(const RenderNormal& normal, const ShadingPoint& sp, co
 Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
                               const TexturePoint& at, int level, double weight, const RayState& state) {
   if (quality_.full_ambient) [[unlikely]] return unlit_layers(texture, at);
+  // With radiosity, a separate instance of the layer loop, so that the loop without it is the one it always was.
+  if (gatherer_) [[unlikely]] return shade_layers_as<true>(ray, sp, texture, at, level, weight, state);
+  return shade_layers_as<false>(ray, sp, texture, at, level, weight, state);
+}
+
+template <bool Radiosity>
+Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
+                                 const TexturePoint& at, int level, double weight, const RayState& state) {
   const Vec3 point = sp.point;
   const Vec3 raw_normal = sp.raw_normal;
   const SurfaceHit& hit = sp.hit;
@@ -357,8 +365,9 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
   double trans = 1.0;
   const std::size_t first_reflection = reflections_.size();
   // Radiosity: POV-Ray computes it for surfaces below recursion_limit (CheckRadiosityTraceLevel).
-  const bool radiosity = gatherer_ && state.radiosity_depth < static_cast<int>(scene_.radiosity->depths.size());
-  AmbientSides ambient;
+  [[maybe_unused]] AmbientSides ambient;
+  [[maybe_unused]] const bool radiosity =
+      Radiosity && state.radiosity_depth < static_cast<int>(scene_.radiosity->depths.size());
   Vec3 top_normal = raw_normal;   // the top layer's normal: refraction and TIR use it (§4)
   for (const RenderLayer& layer : texture.layers) {
     if (trans <= adc_bailout_) break;
@@ -377,10 +386,11 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
       }
       reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal});
     }
-    Rgb lit = model_ == ShadingModel::povray ? lit_layer_povray(layer, s, point, normal, ray.direction, state)
-                                             : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
-    if (radiosity) [[unlikely]]
-      lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
+    Rgb lit = model_ == ShadingModel::povray
+                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state)
+                  : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
+    if constexpr (Radiosity)
+      if (radiosity) lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
     out.colour += mul(lit, filter);
     if (found) {
       filter = mul(filter, pass_through(s));
@@ -720,6 +730,7 @@ Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, doub
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
+template <bool Radiosity>
 Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
                              const RayState& state) {
   const Finish& fin = layer.finish;
@@ -730,6 +741,9 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   // POV-Ray's light loop runs only for a finish with diffuse, diffuse_back, phong or specular (trace.cpp
   // ComputeDiffuseLight); skipping it is its behaviour, not a shortcut: its shadow rays would move the shadow cache.
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
+  // No light gives highlights to a radiosity sample ray's tree (trace.cpp: "NK rad").
+  bool highlights = layer.has_highlights;
+  if constexpr (Radiosity) highlights = highlights && state.radiosity_depth == 0;
 
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
     const RenderLight& l = scene_.lights[li];
@@ -755,8 +769,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     if (fin.diffuse > 0)
       out += mul(pigment, lc) *
              (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
-    // Fill lights give no highlights, nor does any light to a radiosity sample ray's tree (trace.cpp: "NK rad").
-    if (l.light.shadowless || !layer.has_highlights || state.radiosity_depth > 0) continue;
+    if (l.light.shadowless || !highlights) continue;   // fill lights give no highlights
 
     Rgb highlight = lc;
     if (fin.metallic != 0) {
@@ -794,17 +807,22 @@ Rgb Tracer::radiosity_layer(const RenderLayer& layer, const Colour& s, Rgb filte
     const Vec3 bent = back ? -normal : normal;
     return gatherer_->ambient({sp.point, raw, bent, weight * seen * diffuse, state.radiosity_depth, max_level_}, *this);
   };
+  // A side not computed yet adds nothing (POV-Ray's ambCol is still black then).
+  auto store = [](double* slot, Rgb v) { slot[0] = v.x, slot[1] = v.y, slot[2] = v.z; };
   if (!sides.front_done && seen * fin.diffuse_raw > adc_bailout_) {
-    sides.front = query(false, fin.diffuse_raw);
+    store(sides.front, query(false, fin.diffuse_raw));
     sides.front_done = true;
   }
-  Rgb out = mul(pigment, sides.front) * (att * fin.diffuse_raw);
+  Rgb out;
+  if (sides.front_done)
+    out = mul(pigment, Rgb{sides.front[0], sides.front[1], sides.front[2]}) * (att * fin.diffuse_raw);
   if (fin.diffuse_back != 0) {
     if (!sides.back_done && seen * fin.diffuse_back_raw > adc_bailout_) {
-      sides.back = query(true, fin.diffuse_back_raw);
+      store(sides.back, query(true, fin.diffuse_back_raw));
       sides.back_done = true;
     }
-    out += mul(pigment, sides.back) * (att * fin.diffuse_back_raw);
+    if (sides.back_done)
+      out += mul(pigment, Rgb{sides.back[0], sides.back[1], sides.back[2]}) * (att * fin.diffuse_back_raw);
   }
   return out;
 }

@@ -109,6 +109,9 @@ class Tracer : private radiosity::SampleTracer {
                          int level, double weight, const RayState& state);
   Radiance shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
                         int level, double weight, const RayState& state);
+  template <bool Radiosity>   // the layer loop, with the radiosity term or without
+  Radiance shade_layers_as(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
+                           int level, double weight, const RayState& state);
   // +Q0/+Q1: the pigment colour alone (POV-Ray's Q_FULL_AMBIENT).
   Radiance unlit_layers(const RenderTexture& texture, const TexturePoint& at) const;
   Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
@@ -138,15 +141,17 @@ class Tracer : private radiosity::SampleTracer {
   double relative_ior(const InteriorRef& self, const RayState& state) const;
   InteriorRef interior_of(const SurfaceHit& hit) const;
   // The radiosity values of one shade_layers call (POV-Ray computes each side at most once per textured hit).
+  // Only the flags are initialised: shade_layers makes one per call, with or without radiosity.
   struct AmbientSides {
     bool front_done = false, back_done = false;
-    Rgb front, back;
+    double front[3], back[3];   // valid once *_done
   };
   // The radiosity term of one layer (trace.cpp ComputeLightedTexture): S·A·att·diffuse_raw, plus the back side's
   // with diffuse_back; A is computed for the first layer whose largest possible contribution passes the bailout.
-  Rgb radiosity_layer(const RenderLayer& layer, const Colour& pigment, Rgb filter, const ShadingPoint& sp,
+  [[gnu::noinline]] Rgb radiosity_layer(const RenderLayer& layer, const Colour& pigment, Rgb filter, const ShadingPoint& sp,
                       Vec3 normal, double weight, const RayState& state, AmbientSides& sides);
   radiosity::SampleRayResult trace_sample(Vec3 origin, Vec3 direction, const radiosity::SampleRayParams& p) override;
+  template <bool Radiosity>   // the scene has radiosity: sample rays get no highlights
   Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
                        const RayState& state);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
