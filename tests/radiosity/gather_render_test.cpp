@@ -161,6 +161,21 @@ TEST(GatherRender, NoRadiosityObjectsAreInvisibleToSampleRaysOnly) {
                      pool_mean([](Vec3 d) { return all(d.y); }));
 }
 
+TEST(GatherRender, SampleRaysSeeNoHighlights) {
+  // A sphere seen only by sample rays (no_image), lit by a light: its phong and specular change nothing in the
+  // radiosity of the plane below (POV-Ray skips highlights for radiosity rays), its diffuse does.
+  auto scene = [](const std::string& finish) {
+    return "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 200 recursion_limit 1 } }\n"
+           "camera { orthographic location <0, 10, 0> look_at 0 right x * 4 up z * 3 }\n"
+           "light_source { <1.5, 0.2, 0> rgb 1 }\n"
+           "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+           "sphere { <0, 1.5, 0>, 0.5 pigment { rgb 0.5 } finish { ambient 0 " + finish + " } no_image }\n";
+  };
+  const image::Image plain = rendered(scene("diffuse 0.6"));
+  EXPECT_EQ(rendered(scene("diffuse 0.6 phong 1 phong_size 1 specular 1 roughness 1")).rgba, plain.rgba);
+  EXPECT_NE(rendered(scene("diffuse 0.9")).rgba, plain.rgba);
+}
+
 TEST(GatherRender, TheImageDoesNotDependOnTheThreadCount) {
   // Few rays per sample, so each sample's directions depend on the block's cursor; a light, a sphere and a second
   // bounce, so that reuse and recursion happen.
