@@ -116,6 +116,10 @@ struct ShapeData {
 // One geometric primitive in its own object space plus the transform to world space.
 struct Primitive {
   ShapeType type = ShapeType::sphere;
+  // The object's own `radiosity { importance }` (a CSG child's as the parser resolved it), negative when it wrote
+  // none: the scene's #default applies then. Read by radiosity sample rays at their first hit (the leaf hit, as
+  // POV-Ray's Intersection::Object). Stored in the padding after `type`.
+  float radiosity_importance = -1;
   // Object-space parameters: sphere a = centre, radius; plane a = unit normal N, radius = distance d (surface
   // N·P = d); box a = lo corner, b = hi corner; cylinder, cone, disc, torus: see renderer/shapes/quadric_shapes.hpp.
   Vec3 a, b;

@@ -113,7 +113,8 @@ radiosity::SampleRayResult Tracer::trace_sample(Vec3 origin, Vec3 direction, con
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
   const radiosity::RenderRadiosity& rad = *scene_.radiosity;
   radiosity::SampleRayResult out;
-  out.importance = hit.found() ? rad.object_importance[hit.surface.leaf->object] : rad.default_importance;
+  const float own = hit.found() ? hit.surface.leaf->radiosity_importance : -1.0f;
+  out.importance = own < 0 ? rad.default_importance : own;
   out.depth = hit.found() ? hit.t : HUGE_VAL;
   out.kept = !(out.importance < p.importance_queried);
   if (!out.kept) return out;

@@ -23,13 +23,10 @@ DepthSettings depth_settings(const RadiositySettings& s, int depth) {
 
 RenderRadiosity make_render_radiosity(const SceneDescription& scene) {
   const RadiositySettings& s = *scene.radiosity;
-  RenderRadiosity r{s, {}, DirectionPool(static_cast<std::size_t>(s.direction_pool)), true, {}, 1.0f};
+  RenderRadiosity r{s, {}, DirectionPool(static_cast<std::size_t>(s.direction_pool)), true, 1.0f};
   for (int d = 0; d < s.recursion_limit; ++d) r.depths.push_back(depth_settings(s, d));
   r.drop_ambient = scene.effective_language_version() >= 370;
   r.default_importance = static_cast<float>(scene.radiosity_default_importance);
-  r.object_importance.reserve(scene.objects.size());
-  for (const Object& o : scene.objects)
-    r.object_importance.push_back(static_cast<float>(o.radiosity_importance.value_or(scene.radiosity_default_importance)));
   return r;
 }
 

@@ -29,9 +29,9 @@ struct RenderRadiosity {
   // A layer's `ambient · ambient_light` is dropped (trace.cpp ComputeLightedTexture): the scene's effective
   // language version is 3.7 or later (study §1.1). Older scenes keep it as a light source too.
   bool drop_ambient = true;
-  // The importance of each top-level object (its own, else the final #default), which a sample ray compares with
-  // its share i/(n−1) at its first hit (study §4.4), and the importance of a miss (the #default).
-  std::vector<float> object_importance;
+  // The final #default { radiosity { importance } }: the importance of a miss and of every object that wrote none
+  // (study §1.3), which a sample ray compares with its share i/(n−1) at its first hit (§4.4). An object's own is
+  // Primitive::radiosity_importance.
   float default_importance = 1;
 };
 

@@ -138,6 +138,27 @@ TEST(GatherRender, ImportanceKeepsTheFirstShareOfTheRays) {
   expect_every_pixel(rendered("#default { radiosity { importance 0.25 } }\n" + sky_scene(grey_y)), y400);
 }
 
+TEST(GatherRender, ACsgChildHasItsOwnImportance) {
+  // The emissive disc of EmissionOnlyUnderADisc as a union child with importance 0.25 (the union hidden from the
+  // camera): rays i > 399 that hit it are dropped, the kept hits weigh 1600/400 = 4, misses (black sky, default
+  // importance 1) weigh 1, so A = 4·hits₄₀₀ / (4·hits₄₀₀ + misses).
+  const std::string scene =
+      "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 1600 recursion_limit 1 } }\n"
+      "camera { orthographic location <0, 10, 0> look_at 0 right x * 0.01 up z * 0.01 }\n"
+      "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+      "union { disc { <0, 1, 0>, y, 1 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 1 } "
+      "radiosity { importance 0.25 } } sphere { <0, -50, 0>, 1 } no_image }\n";
+  const radiosity::DirectionPool pool(1600);
+  double hits = 0, misses = 0;
+  for (std::size_t k = 0; k < 1600; ++k) {
+    const Vec3 d = pool[k];
+    const bool hit = std::sqrt(d.x * d.x + d.z * d.z) / d.y < 1.0;
+    if (hit && k < 400) hits += 1;
+    if (!hit) misses += 1;
+  }
+  expect_every_pixel(rendered(scene, 9, 1, 1, 1), all(4 * hits / (4 * hits + misses)));
+}
+
 TEST(GatherRender, MaxSampleClampsEachRay) {
   const Vec3 clamped = pool_mean([](Vec3 d) { return all(std::min(d.y, 0.5)); });
   expect_every_pixel(rendered(sky_scene(grey_y, "max_sample 0.5")), clamped);
