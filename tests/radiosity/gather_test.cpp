@@ -153,4 +153,39 @@ TEST(Gatherer, CursorRunsOnWithinABlockAndRestartsPerBlock) {
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(r.directions[10 + i], pool[i]) << i;
 }
 
+TEST(Gatherer, NormalOnShootsAroundTheLayerNormalAboveTheSurface) {
+  RenderRadiosity rad = settings();
+  rad.settings.normal = true;
+  Gatherer g(rad, camera);
+  g.begin_block(0, final_pass_id);
+  struct Recorder final : SampleTracer {
+    std::vector<Vec3> directions;
+    SampleRayResult trace_sample(Vec3, Vec3 d, const SampleRayParams&) override {
+      directions.push_back(d);
+      return SampleRayResult{{1, 1, 1}, 1, 1, true};
+    }
+  } r;
+  const Vec3 raw{0, 1, 0};
+  const Vec3 bent = normalize(Vec3{0.3, 1, 0});
+  (void)g.ambient(AmbientQuery{{0, 0, 0}, raw, bent, 1.0, 0, 5}, r);
+  ASSERT_EQ(r.directions.size(), 35u);
+  double towards_bend = 0;
+  for (const Vec3& d : r.directions) {
+    EXPECT_GT(dot(d, raw), 0);   // rejected below the raw surface
+    towards_bend += d.x;
+  }
+  EXPECT_GT(towards_bend / 35, 0.1);   // centred on the bent normal, not on +y
+  ASSERT_EQ(g.block_samples().size(), 1u);
+  EXPECT_EQ(g.block_samples()[0].geometry.normal, bent);   // most rays used the bent frame
+  // Without `normal on` the raw normal is used throughout.
+  const RenderRadiosity plain = settings();
+  Gatherer h(plain, camera);
+  h.begin_block(0, final_pass_id);
+  Recorder q;
+  (void)h.ambient(AmbientQuery{{0, 0, 0}, raw, bent, 1.0, 0, 5}, q);
+  const DirectionPool pool(1600);
+  for (std::size_t i = 0; i < 35; ++i) EXPECT_EQ(q.directions[i], pool[i]);
+  EXPECT_EQ(h.block_samples()[0].geometry.normal, raw);
+}
+
 }  // namespace
