@@ -286,7 +286,7 @@ JobResult render_one_frame(const RenderOptions& options, const FramePlan& plan, 
   const auto build_start = Clock::now();
   const render::RenderScene scene = render::build_render_scene(
       description, {options.output_alpha, options.povray_tolerances, options.specialise,
-                    render::Quality::quick_colours_at(options.quality)});
+                    render::Quality::quick_colours_at(options.quality), options.quality});
   r.times.build_s = seconds_since(build_start);
   if (scene.scale != 1.0 && options.verbose) {
     std::ostringstream note;

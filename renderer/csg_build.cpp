@@ -99,7 +99,8 @@ bool all_children_without_shadow(const Csg& csg) {
 
 void set_ray_flags(Primitive& p, const Object& o) {
   p.ray_flags = static_cast<std::uint8_t>((o.no_image ? ray_flag::no_image : 0) |
-                                          (o.no_reflection ? ray_flag::no_reflection : 0));
+                                          (o.no_reflection ? ray_flag::no_reflection : 0) |
+                                          (o.no_radiosity ? ray_flag::no_radiosity : 0));
   p.hidden_from = ray_flag::hidden_from(p.ray_flags, false);
 }
 

@@ -44,14 +44,20 @@ inline constexpr std::uint8_t refracted = 4;                // refraction flag o
 inline constexpr std::uint8_t reflected_refracted = 8;      // both flags
 inline constexpr std::uint8_t image = primary | refracted;  // Ray::IsImageRay
 inline constexpr std::uint8_t reflection = reflected | reflected_refracted;   // Ray::IsReflectionRay
+// Added to the kinds above: a radiosity sample ray and every ray traced from it (Ray::IsRadiosityRay). A sample
+// ray itself is POV-Ray's OtherRay with that flag: `radiosity` alone.
+inline constexpr std::uint8_t radiosity = 16;
 
 // The kind of a ray reflected (SetFlags(ReflectionRay, ray)) or refracted (SetFlags(RefractionRay, ray)) from a
 // ray of kind k; `other` stays `other` (the scene has no flags).
 constexpr std::uint8_t after_reflection(std::uint8_t k) {
-  return k == other ? other : (k & (refracted | reflected_refracted)) ? reflected_refracted : reflected;
+  if (k == other) return other;
+  return static_cast<std::uint8_t>(((k & (refracted | reflected_refracted)) ? reflected_refracted : reflected) |
+                                   (k & radiosity));
 }
 constexpr std::uint8_t after_refraction(std::uint8_t k) {
-  return k == other ? other : (k & reflection) ? reflected_refracted : refracted;
+  if (k == other) return other;
+  return static_cast<std::uint8_t>(((k & reflection) ? reflected_refracted : refracted) | (k & radiosity));
 }
 }  // namespace ray_kind
 
@@ -59,6 +65,7 @@ constexpr std::uint8_t after_refraction(std::uint8_t k) {
 namespace ray_flag {
 inline constexpr std::uint8_t no_image = 1;
 inline constexpr std::uint8_t no_reflection = 2;
+inline constexpr std::uint8_t no_radiosity = 4;   // set only when the scene renders radiosity
 
 // The ray kinds that skip an object with `flags`, as POV-Ray tests it: at the top level and for merge children
 // (NoSomethingFlagRayObjectCondition, csg.cpp Test_Ray_Flags_Shadow) no_image hides from every image ray; for
@@ -68,6 +75,7 @@ constexpr std::uint8_t hidden_from(std::uint8_t flags, bool union_child) {
   std::uint8_t kinds = 0;
   if (flags & no_image) kinds |= union_child ? ray_kind::refracted : ray_kind::image;
   if (flags & no_reflection) kinds |= ray_kind::reflection;
+  if (flags & no_radiosity) kinds |= ray_kind::radiosity;   // union and merge children alike (Test_Ray_Flags*)
   return kinds;
 }
 }  // namespace ray_flag
@@ -108,6 +116,10 @@ struct ShapeData {
 // One geometric primitive in its own object space plus the transform to world space.
 struct Primitive {
   ShapeType type = ShapeType::sphere;
+  // The object's own `radiosity { importance }` (a CSG child's as the parser resolved it), negative when it wrote
+  // none: the scene's #default applies then. Read by radiosity sample rays at their first hit (the leaf hit, as
+  // POV-Ray's Intersection::Object). Stored in the padding after `type`.
+  float radiosity_importance = -1;
   // Object-space parameters: sphere a = centre, radius; plane a = unit normal N, radius = distance d (surface
   // N·P = d); box a = lo corner, b = hi corner; cylinder, cone, disc, torus: see renderer/shapes/quadric_shapes.hpp.
   Vec3 a, b;

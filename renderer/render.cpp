@@ -43,8 +43,9 @@ class BlockRenderer {
   BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy)
       : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading, Quality::at_level(s.quality)) {}
 
-  void render_block(int x0, int y0, int w, int h) {
-    tracer_.forget_shadow_cache();
+  // `serial`: the block's number in the frame's row-major grid (its radiosity tile id).
+  void render_block(int serial, int x0, int y0, int w, int h) {
+    tracer_.begin_block(serial);
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);
@@ -230,7 +231,7 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
       const image::PixelRect stored{std::max(x0, area.x0), std::max(y0, area.y0), std::min(x0 + w - 1, area.x1),
                                     std::min(y0 + h - 1, area.y1)};
       if (!settings.skip_block || !settings.skip_block(stored)) {
-        br.render_block(x0, y0, w, h);
+        br.render_block((y0 / bs) * ((settings.width + bs - 1) / bs) + x0 / bs, x0, y0, w, h);
         if (settings.block_done) settings.block_done(result.image, stored);
       }
       ++done;

@@ -113,11 +113,12 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
 
 
 // Whether some object (a CSG child included) has no_image or no_reflection. For the scene's list and CSG children.
+// no_radiosity counts only where radiosity is rendered.
 template <class ObjectList>
-bool any_ray_flags(const ObjectList& objects) {
+bool any_ray_flags(const ObjectList& objects, bool radiosity) {
   for (const Object& o : objects) {
-    if (o.no_image || o.no_reflection) return true;
-    if (const auto* csg = std::get_if<Csg>(&o.shape); csg && any_ray_flags(csg->children)) return true;
+    if (o.no_image || o.no_reflection || (radiosity && o.no_radiosity)) return true;
+    if (const auto* csg = std::get_if<Csg>(&o.shape); csg && any_ray_flags(csg->children, radiosity)) return true;
   }
   return false;
 }
@@ -147,11 +148,25 @@ Specialisation choose_specialisation(const RenderScene& r, const SpecialisationC
 }
 }  // namespace
 
+namespace {
+// Radiosity's render-ready settings; in a 3.7 scene the `ambient · ambient_light` term goes (study §1.1): the
+// tracer's ambient term then multiplies by a black ambient_light.
+void add_radiosity(RenderScene& r, const SceneDescription& scene) {
+  auto rad = std::make_shared<radiosity::RenderRadiosity>(radiosity::make_render_radiosity(scene));
+  if (rad->drop_ambient) r.settings.ambient_light = Colour{0, 0, 0};
+  if (rad->settings.direction_pool < kRadiosityTableDirections)
+    r.warnings.push_back("radiosity: a direction pool below 1600 (count's second value) uses POV-Ray's fixed "
+                         "table, which povtrace does not have; the Halton pool of that size is used instead");
+  r.radiosity = std::move(rad);
+}
+}  // namespace
+
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
-  // Radiosity is parsed and checked whole but not computed yet. POV-Ray lights such a scene by radiosity (and drops
-  // its ambient term in 3.7 scenes, issue19-study §1.1), so rendering it without would be silently wrong: refused
-  // where the scene turns it on, at every quality level (POV-Ray itself computes it only at +Q9).
-  if (scene.radiosity)
+  // POV-Ray computes radiosity only at +Q9 (+Q10, +Q11 are 9) and renders the scene as without its radiosity block
+  // below (study §7). At +Q9 the evaluator exists but not the pretrace (issue 19 step 7), and POV-Ray lights such a
+  // scene by radiosity (dropping its ambient term in 3.7 scenes, §1.1): rendering it without the pretrace would be
+  // silently wrong, so it is refused where the scene turns radiosity on, unless a test asks for the evaluator.
+  if (scene.radiosity && options.quality >= 9 && !options.allow_incomplete_radiosity)
     fail_at_scene(scene.radiosity->loc, "unsupported: the global setting 'radiosity' is a POV-Ray feature that "
                                         "povtrace does not render yet");
   if (options.povray_tolerances) return build_scene(with_world_space_spheres(scene), options, false);
@@ -181,7 +196,8 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     }
   }
   for (const auto& p : primitives) r.any_casts_shadow = r.any_casts_shadow || p.casts_shadow;
-  r.any_ray_flags = any_ray_flags(scene.objects);
+  const bool radiosity = scene.radiosity && options.quality >= 9;
+  r.any_ray_flags = any_ray_flags(scene.objects, radiosity);
   for (const auto& p : primitives) {
     const Material& m = r.materials[p.material];
     const Interior& in = m.interior;
@@ -201,6 +217,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = make_render_camera(scene.camera);
   r.settings = scene.settings;
+  if (radiosity) add_radiosity(r, scene);
   r.language_version = scene.language_version;
   // Background (pipeline §5) as POV-Ray's parser leaves it.
   const Colour& bg = scene.background;

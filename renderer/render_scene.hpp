@@ -16,6 +16,7 @@
 #include "renderer/interior_list.hpp"
 #include "renderer/pattern/image_map.hpp"
 #include "renderer/pattern/pattern.hpp"
+#include "renderer/radiosity/render_settings.hpp"
 
 namespace povtrace::render {
 
@@ -195,7 +196,10 @@ struct RenderScene {
   std::vector<Material> materials;
   std::vector<RenderLight> lights;
   RenderCamera camera;
+  // As parsed, except ambient_light, which is black when radiosity drops the `ambient` term (3.7 scenes, study §1.1).
   GlobalSettings settings;
+  // Radiosity, when the scene has a radiosity block and the quality level computes it (+Q9); null otherwise.
+  std::shared_ptr<const radiosity::RenderRadiosity> radiosity;
   // The background as POV-Ray keeps it after parsing (pipeline §5): 3.7 scenes without alpha output premultiply
   // rgb by 1 − t and clear f and t; with alpha output it stays as written. Older scenes clear f, and set t to 1
   // with alpha output, 0 without.
@@ -209,7 +213,7 @@ struct RenderScene {
   GammaMode gamma_mode = GammaMode::power;
   double assumed_gamma = 1.0;
   bool any_casts_shadow = false;     // no shadow rays at all when nothing casts one
-  // Some object has no_image or no_reflection: rays carry their kind (geometry.hpp ray_kind); otherwise every ray
+  // Some object has no_image or no_reflection (or no_radiosity, with radiosity): rays carry their kind (geometry.hpp ray_kind); otherwise every ray
   // is traced as ray_kind::other and no object is skipped.
   bool any_ray_flags = false;
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
@@ -234,6 +238,13 @@ struct BuildOptions {
   // wherever it is used (POV-Ray's Compute_Pigment returns the quick colour first). Objects keep the opacity of
   // their real pigments (POV-Ray's opaque flag is set by the parser).
   bool quick_colours = false;
+  // The quality level (+Q): POV-Ray computes radiosity only at +Q9 and renders a radiosity scene as if it had no
+  // radiosity block below that (study §7, checked with povray 3.7.0.10: +Q8 images are identical).
+  int quality = 9;
+  // TEST ONLY, until issue 19 step 7 (the pretrace) is done: build a radiosity scene at +Q9 with the evaluator of
+  // renderer/radiosity/gather.hpp instead of refusing it. Without the pretrace the result is not POV-Ray's, so
+  // the application never sets this; tests of the evaluator do.
+  bool allow_incomplete_radiosity = false;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

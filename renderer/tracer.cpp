@@ -4,6 +4,7 @@
 #include "renderer/render.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 
@@ -48,6 +49,21 @@ Quality Quality::at_level(int level) {
   return q;
 }
 
+Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
+    : scene_(scene), model_(model), quality_(quality), fog_(quality.fog && !scene.fogs.empty()),
+      transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL),
+      max_level_(scene.settings.max_trace_level), adc_bailout_(scene.settings.adc_bailout) {
+  if (scene.radiosity) {
+    gatherer_ = std::make_unique<radiosity::Gatherer>(*scene.radiosity, scene.camera.location);
+    sample_volume_ = scene.radiosity->settings.media;
+  }
+}
+
+void Tracer::begin_block(int tile) {
+  forget_shadow_cache();
+  if (gatherer_) gatherer_->begin_block(tile, radiosity::final_pass_id);
+}
+
 double metallic_fade(double x) {
   const double d = x - 1.12;
   return std::clamp(0.014567225 / (d * d) - 0.011612903, 0.0, 1.0);
@@ -74,13 +90,56 @@ Radiance Tracer::trace_camera_ray(const Ray& ray) {
 
 // Levels beyond max_trace_level and rays lighter than adc_bailout yield black, not the background (§4).
 Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
-  if (level > scene_.settings.max_trace_level || weight < scene_.settings.adc_bailout) return {};
+  if (level > max_level_ || weight < adc_bailout_) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
   const Radiance r =
       hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
   // Fog reaches rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away (hit.t).
-  if (fog_ && state.interiors.all_hollow()) return with_fog(ray, hit.t, r);
+  // Radiosity sample rays see it only with radiosity's `media on`.
+  if (fog_ && state.interiors.all_hollow() && (state.radiosity_depth == 0 || sample_volume_))
+    return with_fog(ray, hit.t, r);
   return r;
+}
+
+// A radiosity sample ray (radiosity.cpp GatherLight, trace.cpp TraceRay; study §4.4): traced as an ordinary ray
+// from a fresh ticket — its own trace level, maximum level and ADC bailout for its whole tree, no interiors, no
+// background transparency, flagged radiosity (no_radiosity objects are not there for it). At its first hit it
+// compares the object's importance with its share i/(n−1) of the sample and is dropped, unshaded, below it; its
+// hit distance counts either way.
+radiosity::SampleRayResult Tracer::trace_sample(Vec3 origin, Vec3 direction, const radiosity::SampleRayParams& p) {
+  assert(gatherer_ && p.level <= p.max_level && p.weight >= p.adc_bailout);
+  ++counts_.secondary;
+  const Ray ray{origin, direction, scene_.any_ray_flags ? ray_kind::radiosity : ray_kind::other};
+  const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
+  const radiosity::RenderRadiosity& rad = *scene_.radiosity;
+  radiosity::SampleRayResult out;
+  const float own = hit.found() ? hit.surface.leaf->radiosity_importance : -1.0f;
+  out.importance = own < 0 ? rad.default_importance : own;
+  out.depth = hit.found() ? hit.t : HUGE_VAL;
+  out.kept = !(out.importance < p.importance_queried);
+  if (!out.kept) return out;
+  struct TicketScope {   // the ticket's limits and the radiosity shadow caches, restored after the ray
+    Tracer& t;
+    int max_level;
+    double adc_bailout, transmit_bailout;
+    std::size_t shadow_base;
+    ~TicketScope() {
+      t.max_level_ = max_level;
+      t.adc_bailout_ = adc_bailout;
+      t.transmit_bailout_ = transmit_bailout;
+      t.shadow_cache_base_ = shadow_base;
+    }
+  } scope{*this, max_level_, adc_bailout_, transmit_bailout_, shadow_cache_base_};
+  max_level_ = p.max_level;
+  adc_bailout_ = p.adc_bailout;
+  transmit_bailout_ = quality_.refraction ? p.adc_bailout : HUGE_VAL;
+  shadow_cache_base_ = 2 * scene_.lights.size();
+  RayState state;
+  state.alpha_background = false;
+  state.radiosity_depth = p.depth;
+  const Radiance r = hit.found() ? shade_hit(ray, hit.surface, p.level, p.weight, state) : background(direction, state);
+  out.colour = (fog_ && sample_volume_) ? with_fog(ray, hit.t, r).colour : r.colour;
+  return out;
 }
 
 // The colour of a miss (pipeline §5, POV-Ray's ComputeSky): the sky_sphere's pigments, last written first, at the
@@ -220,7 +279,7 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
   // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
   Radiance out;
   for (int k = 0; k < blend.count; ++k) {
-    if (blend.weight[k] < scene_.settings.adc_bailout) continue;
+    if (blend.weight[k] < adc_bailout_) continue;
     const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], at, level, weight, state);
     out.colour += r.colour * blend.weight[k];
     out.transmit += r.transmit * blend.weight[k];
@@ -287,6 +346,14 @@ Vec3 Tracer::layer_normal(const RenderNormal& normal, const ShadingPoint& sp, co
 Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
                               const TexturePoint& at, int level, double weight, const RayState& state) {
   if (quality_.full_ambient) [[unlikely]] return unlit_layers(texture, at);
+  // With radiosity, a separate instance of the layer loop, so that the loop without it is the one it always was.
+  if (gatherer_) [[unlikely]] return shade_layers_as<true>(ray, sp, texture, at, level, weight, state);
+  return shade_layers_as<false>(ray, sp, texture, at, level, weight, state);
+}
+
+template <bool Radiosity>
+Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture,
+                                 const TexturePoint& at, int level, double weight, const RayState& state) {
   const Vec3 point = sp.point;
   const Vec3 raw_normal = sp.raw_normal;
   const SurfaceHit& hit = sp.hit;
@@ -298,9 +365,13 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
   Rgb filter{1, 1, 1};
   double trans = 1.0;
   const std::size_t first_reflection = reflections_.size();
+  // Radiosity: POV-Ray computes it for surfaces below recursion_limit (CheckRadiosityTraceLevel).
+  [[maybe_unused]] AmbientSides ambient;
+  [[maybe_unused]] const bool radiosity =
+      Radiosity && state.radiosity_depth < static_cast<int>(scene_.radiosity->depths.size());
   Vec3 top_normal = raw_normal;   // the top layer's normal: refraction and TIR use it (§4)
   for (const RenderLayer& layer : texture.layers) {
-    if (trans <= scene_.settings.adc_bailout) break;
+    if (trans <= adc_bailout_) break;
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
     const Vec3 normal = layer.normal && quality_.normals ? layer_normal(*layer.normal, sp, at) : raw_normal;
     if (&layer == &texture.layers.front()) top_normal = normal;
@@ -316,8 +387,11 @@ Radiance Tracer::shade_layers(const Ray& ray, const ShadingPoint& sp, const Rend
       }
       reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal});
     }
-    const Rgb lit = model_ == ShadingModel::povray ? lit_layer_povray(layer, s, point, normal, ray.direction, state)
-                                                   : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
+    Rgb lit = model_ == ShadingModel::povray
+                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state)
+                  : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
+    if constexpr (Radiosity)
+      if (radiosity) lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
     out.colour += mul(lit, filter);
     if (found) {
       filter = mul(filter, pass_through(s));
@@ -364,7 +438,7 @@ Radiance Tracer::unlit_layers(const RenderTexture& texture, const TexturePoint& 
   Rgb filter{1, 1, 1};
   double trans = 1.0;
   for (const RenderLayer& layer : texture.layers) {
-    if (trans <= scene_.settings.adc_bailout) break;
+    if (trans <= adc_bailout_) break;
     const auto [s, found] = sample_pigment(layer.pigment, at);
     out.colour = Rgb{s.r, s.g, s.b};
     if (found) filter = mul(filter, pass_through(s));
@@ -580,9 +654,9 @@ constexpr std::uint32_t kNoOccluder = ~0u;
 }  // namespace
 
 std::uint32_t& Tracer::shadow_cache_slot(const RenderLight& l) {
-  if (shadow_cache_.empty()) shadow_cache_.assign(2 * scene_.lights.size(), kNoOccluder);
+  if (shadow_cache_.empty()) shadow_cache_.assign((gatherer_ ? 4 : 2) * scene_.lights.size(), kNoOccluder);
   const auto light = static_cast<std::size_t>(&l - scene_.lights.data());
-  return shadow_cache_[2 * light + (shading_level_ == 1 ? 0 : 1)];
+  return shadow_cache_[shadow_cache_base_ + 2 * light + (shading_level_ == 1 ? 0 : 1)];
 }
 
 // POV-Ray tests the cached object with FindIntersection(object, …, light distance): any hit from MIN_ISECT_DEPTH
@@ -650,12 +724,14 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
 Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, Rgb colour,
                            const RayState& state) {
   if (!quality_.shadows) return colour;   // below +Q4 (POV-Ray traces no shadow ray then)
-  if (l.light.area && quality_.area_lights) return area_light_shadow(l, point, to_light, colour, state);
+  // Radiosity sample rays treat area lights as point lights (POV-Ray clears Q_AREA_LIGHT for them, study §1.1).
+  if (l.light.area && quality_.area_lights && state.radiosity_depth == 0) return area_light_shadow(l, point, to_light, colour, state);
   return mul(colour, shadow_filter(l, point, to_light, distance, state));
 }
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
+template <bool Radiosity>
 Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
                              const RayState& state) {
   const Finish& fin = layer.finish;
@@ -666,6 +742,9 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   // POV-Ray's light loop runs only for a finish with diffuse, diffuse_back, phong or specular (trace.cpp
   // ComputeDiffuseLight); skipping it is its behaviour, not a shortcut: its shadow rays would move the shadow cache.
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
+  // No light gives highlights to a radiosity sample ray's tree (trace.cpp: "NK rad").
+  bool highlights = layer.has_highlights;
+  if constexpr (Radiosity) highlights = highlights && state.radiosity_depth == 0;
 
   for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
     const RenderLight& l = scene_.lights[li];
@@ -691,7 +770,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     if (fin.diffuse > 0)
       out += mul(pigment, lc) *
              (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
-    if (l.light.shadowless || !layer.has_highlights) continue;   // fill lights give no highlights
+    if (l.light.shadowless || !highlights) continue;   // fill lights give no highlights
 
     Rgb highlight = lc;
     if (fin.metallic != 0) {
@@ -709,6 +788,42 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
       const double h = dot(normal, half) / length(half);
       if (h > 0) out += highlight * (fin.specular * std::pow(h, layer.specular_exponent));
     }
+  }
+  return out;
+}
+
+// The radiosity term of one layer (trace.cpp ComputeLightedTexture, study §1.1): A is asked for once per side and
+// textured hit, by the first layer whose largest possible contribution grey(filter·S)·att·diffuse_raw exceeds the
+// ADC bailout, with the ray weight times that contribution; layers before it add nothing, layers after it reuse it.
+// The back side (diffuse_back ≠ 0) asks with both normals negated.
+Rgb Tracer::radiosity_layer(const RenderLayer& layer, const Colour& s, Rgb filter, const ShadingPoint& sp, Vec3 normal,
+                            double weight, const RayState& state, AmbientSides& sides) {
+  const Finish& fin = layer.finish;
+  const Rgb pigment{s.r, s.g, s.b};
+  const double att = scene_.language_version >= 370 ? 1.0 - s.f - s.t
+                                                     : 1.0 - (s.f * std::max({s.r, s.g, s.b}) + s.t);
+  const double seen = grey(mul(filter, pigment)) * att;
+  auto query = [&](bool back, double diffuse) {
+    const Vec3 raw = back ? -sp.raw_normal : sp.raw_normal;
+    const Vec3 bent = back ? -normal : normal;
+    return gatherer_->ambient({sp.point, raw, bent, weight * seen * diffuse, state.radiosity_depth, max_level_}, *this);
+  };
+  // A side not computed yet adds nothing (POV-Ray's ambCol is still black then).
+  auto store = [](double* slot, Rgb v) { slot[0] = v.x, slot[1] = v.y, slot[2] = v.z; };
+  if (!sides.front_done && seen * fin.diffuse_raw > adc_bailout_) {
+    store(sides.front, query(false, fin.diffuse_raw));
+    sides.front_done = true;
+  }
+  Rgb out;
+  if (sides.front_done)
+    out = mul(pigment, Rgb{sides.front[0], sides.front[1], sides.front[2]}) * (att * fin.diffuse_raw);
+  if (fin.diffuse_back != 0) {
+    if (!sides.back_done && seen * fin.diffuse_back_raw > adc_bailout_) {
+      store(sides.back, query(true, fin.diffuse_back_raw));
+      sides.back_done = true;
+    }
+    if (sides.back_done)
+      out += mul(pigment, Rgb{sides.back[0], sides.back[1], sides.back[2]}) * (att * fin.diffuse_back_raw);
   }
   return out;
 }

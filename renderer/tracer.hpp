@@ -5,11 +5,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
-
 #include <vector>
 
 #include "renderer/interior_list.hpp"
+#include "renderer/radiosity/gather.hpp"
 #include "renderer/render_scene.hpp"
 
 namespace povtrace::render {
@@ -56,11 +57,11 @@ struct Quality {
   static bool quick_colours_at(int level) { return level <= 5; }
 };
 
-class Tracer {
+// With radiosity (RenderScene::radiosity), the Tracer is also the SampleTracer its Gatherer shoots sample rays
+// through (renderer/radiosity/gather.hpp).
+class Tracer : private radiosity::SampleTracer {
  public:
-  Tracer(const RenderScene& scene, ShadingModel model, Quality quality = {})
-      : scene_(scene), model_(model), quality_(quality), fog_(quality.fog && !scene.fogs.empty()),
-        transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL) {}
+  Tracer(const RenderScene& scene, ShadingModel model, Quality quality = {});
 
   // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera.
   Radiance trace_camera_ray(const Ray& ray);
@@ -68,13 +69,21 @@ class Tracer {
   // Empties POV-Ray's shadow cache (see shadow_cache_): done at the start of every block, so that an image does
   // not depend on which thread rendered which block before.
   void forget_shadow_cache() { shadow_cache_.clear(); }
+  // Starts a block: forgets the shadow cache and, with radiosity, starts the block's private samples and direction
+  // cursors (POV-Ray's BeforeTile) under tile id `tile`.
+  void begin_block(int tile);
+  // The radiosity evaluator of this tracer (null without radiosity): its block samples, its global level.
+  radiosity::Gatherer* gatherer() { return gatherer_.get(); }
 
  private:
   // What a ray carries besides its geometry: the interiors it is in, and whether a miss may show the background's
   // transparency (POV-Ray clears that for reflected rays and everything traced from them, pipeline §5).
+  // With radiosity, also the radiosity depth of the surfaces it hits (POV-Ray's ticket.radiosityRecursionDepth,
+  // which only sample rays and the rays traced from them raise; > 0 is POV-Ray's IsRadiosityRay, study §1.1).
   struct RayState {
     InteriorList interiors;
     bool alpha_background = true;
+    int radiosity_depth = 0;
   };
   // One layer's reflection, computed in the layer loop and traced after the transmitted ray (pipeline §4).
   struct PendingReflection {
@@ -100,6 +109,9 @@ class Tracer {
                          int level, double weight, const RayState& state);
   Radiance shade_layers(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
                         int level, double weight, const RayState& state);
+  template <bool Radiosity>   // the layer loop, with the radiosity term or without
+  Radiance shade_layers_as(const Ray& ray, const ShadingPoint& sp, const RenderTexture& texture, const TexturePoint& at,
+                           int level, double weight, const RayState& state);
   // +Q0/+Q1: the pigment colour alone (POV-Ray's Q_FULL_AMBIENT).
   Radiance unlit_layers(const RenderTexture& texture, const TexturePoint& at) const;
   Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
@@ -128,6 +140,18 @@ class Tracer {
   // Relative ior n_to/n_from for fresnel reflection at a surface of `self` (POV-Ray's ComputeRelativeIOR).
   double relative_ior(const InteriorRef& self, const RayState& state) const;
   InteriorRef interior_of(const SurfaceHit& hit) const;
+  // The radiosity values of one shade_layers call (POV-Ray computes each side at most once per textured hit).
+  // Only the flags are initialised: shade_layers makes one per call, with or without radiosity.
+  struct AmbientSides {
+    bool front_done = false, back_done = false;
+    double front[3], back[3];   // valid once *_done
+  };
+  // The radiosity term of one layer (trace.cpp ComputeLightedTexture): S·A·att·diffuse_raw, plus the back side's
+  // with diffuse_back; A is computed for the first layer whose largest possible contribution passes the bailout.
+  [[gnu::noinline]] Rgb radiosity_layer(const RenderLayer& layer, const Colour& pigment, Rgb filter, const ShadingPoint& sp,
+                      Vec3 normal, double weight, const RayState& state, AmbientSides& sides);
+  radiosity::SampleRayResult trace_sample(Vec3 origin, Vec3 direction, const radiosity::SampleRayParams& p) override;
+  template <bool Radiosity>   // the scene has radiosity: sample rays get no highlights
   Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
                        const RayState& state);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
@@ -169,6 +193,14 @@ class Tracer {
   // A hit's transmitted ray is traced when the layers let through more than this: adc_bailout, or never below +Q6
   // (one comparison either way: the default path pays nothing for the quality level).
   double transmit_bailout_;
+  // POV-Ray's ticket limits: the deepest trace level and the ADC bailout. The scene's, except while a radiosity
+  // sample ray is traced (its own, study §4.4).
+  int max_level_;
+  double adc_bailout_;
+  std::unique_ptr<radiosity::Gatherer> gatherer_;   // with radiosity only
+  bool sample_volume_ = false;          // sample rays see fog: radiosity's `media on` (POV-Ray's Q_VOLUME, §7)
+  std::size_t shadow_cache_base_ = 0;   // 2·lights while a sample ray is traced: POV-Ray's radiosity tracer has
+                                        // shadow caches of its own
   RayCounts counts_;
   std::vector<PendingReflection> reflections_;   // a stack shared by the recursion (entries by index)
   std::vector<const RenderTexture*> warps_;       // the patterned textures above the one being shaded

@@ -436,8 +436,8 @@ struct Object {
   // (post_process); the renderer decides per ray kind (renderer/geometry.hpp, ray_kind).
   bool no_image = false;
   bool no_reflection = false;
-  // no_radiosity [bool]: POV-Ray leaves the object out of radiosity rays only. povtrace refuses radiosity by name,
-  // so for every scene it renders this flag changes nothing; it is kept (and inherited) for completeness.
+  // no_radiosity [bool]: POV-Ray leaves the object out of radiosity sample rays (and the rays traced from them)
+  // only; the renderer tests it through ray_flag::no_radiosity where it renders radiosity.
   bool no_radiosity = false;
   // radiosity { importance F }, F in (0, 1]: the share of a gathering's sample rays that may stop at this object
   // (issue19-study §1). Unset on an object that did not write it: the renderer then uses the scene's
@@ -566,7 +566,8 @@ struct SceneDescription {
   // POV-Ray's "radiosity enabled" (blocks in several global_settings edit the same settings). POV-Ray computes
   // radiosity only at +Q9 and above; where it does, a layer's `ambient · ambient_light` term is dropped when
   // effective_language_version() ≥ 370 and kept for older scenes, and `emission` is always added (§1.1, trace.cpp).
-  // The renderer does not compute radiosity yet and refuses such a scene at `radiosity->loc`.
+  // Below +Q9 the renderer renders the scene as without this block, as POV-Ray does; at +Q9 it refuses it at
+  // `radiosity->loc` until the pretrace exists (issue 19 step 7; the evaluator is renderer/radiosity/gather.hpp).
   std::optional<RadiositySettings> radiosity;
   // #default { radiosity { importance F } } as it stands at the end of the parse: the importance of every object
   // whose radiosity_importance is unset (POV-Ray's defaultImportance, read when rendering). 1.0 unless written.
