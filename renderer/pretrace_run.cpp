@@ -86,18 +86,26 @@ PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& sett
                                           std::min(y0 + bs, settings.height) - 1};
   }
   std::vector<PretraceBlockState> states(static_cast<std::size_t>(blocks));
+  const bool one_order = settings.radiosity_povray_order;
+  if (one_order) threads = 1;
   std::vector<std::unique_ptr<Tracer>> tracers;
   for (int t = 0; t < threads; ++t)
     tracers.push_back(std::make_unique<Tracer>(scene, settings.shading, Quality::at_level(settings.quality)));
   std::atomic<bool> cancelled{false};
 
   for (int pass = 0; pass < passes && !cancelled; ++pass) {
-    const int groups = std::min(blocks, 1 << std::min(pass, 20));
+    const int groups = one_order ? 1 : std::min(blocks, 1 << std::min(pass, 20));
     std::vector<radiosity::CacheLevel> made(static_cast<std::size_t>(groups));
     parallel_items(std::min(threads, groups), groups, [&](int thread, int group) {
       Tracer& tracer = *tracers[static_cast<std::size_t>(thread)];
-      tracer.gatherer()->set_global(&result.cache);
-      tracer.begin_block(group, pass + 1);
+      if (!one_order) {
+        tracer.gatherer()->set_global(&result.cache);
+        tracer.begin_block(group, pass + 1);
+      } else if (pass == 0) {
+        tracer.begin_block(0, 1);   // POV-Ray's one task: tile 0, its samples all in its own level
+      } else {
+        tracer.gatherer()->set_pass(pass + 1);
+      }
       for (int serial = group; serial < blocks; serial += groups) {
         if (cancelled || (settings.cancel && settings.cancel->load())) {
           cancelled = true;
@@ -108,10 +116,11 @@ PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& sett
           pretrace_block(tracer, scene, settings, serial, rects[static_cast<std::size_t>(serial)], state, sizes,
                          end_size);
       }
-      made[static_cast<std::size_t>(group)] = tracer.gatherer()->block_samples();
+      if (!one_order) made[static_cast<std::size_t>(group)] = tracer.gatherer()->block_samples();
     });
     radiosity::merge_blocks(result.cache, std::span<radiosity::CacheLevel>(made));
   }
+  if (one_order) result.cache = tracers.front()->gatherer()->block_samples();
   for (const auto& t : tracers) result.rays += t->counts();
   result.cancelled = cancelled;
   return result;

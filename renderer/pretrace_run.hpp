@@ -25,7 +25,8 @@ struct PretraceResult {
 };
 
 // The pretrace of `scene` (which has radiosity) for an image of settings.width × settings.height in blocks of
-// settings.block_size, on `threads` threads.
+// settings.block_size, on `threads` threads (on one in settings.radiosity_povray_order, where the cache is the
+// pretrace's samples in the order made, every pass's blocks one group whose cursors run on across the passes).
 PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& settings, int threads);
 
 }  // namespace povtrace::render

@@ -46,12 +46,17 @@ class BlockRenderer {
   BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy,
                 const radiosity::CacheLevel* radiosity_cache)
       : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading, Quality::at_level(s.quality)) {
-    if (tracer_.gatherer()) tracer_.gatherer()->set_global(radiosity_cache);
+    if (tracer_.gatherer()) {
+      tracer_.gatherer()->set_global(radiosity_cache);
+      // POV-Ray's one-thread order: one tile for the whole final pass, its samples kept for the blocks after.
+      if (s.radiosity_povray_order) tracer_.begin_block(0);
+    }
   }
 
   // `serial`: the block's number in the frame's row-major grid (its radiosity tile id).
   void render_block(int serial, int x0, int y0, int w, int h) {
-    tracer_.begin_block(serial);
+    if (s_.radiosity_povray_order && tracer_.gatherer()) tracer_.forget_shadow_cache();
+    else tracer_.begin_block(serial);
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);
@@ -221,7 +226,10 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   std::atomic<int> next{0}, done{0};
   std::atomic<bool> stop{false};
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const int threads = std::clamp(settings.threads > 0 ? settings.threads : static_cast<int>(hw), 1, std::max(1, blocks));
+  const int threads = scene.radiosity && settings.radiosity_povray_order
+                          ? 1
+                          : std::clamp(settings.threads > 0 ? settings.threads : static_cast<int>(hw), 1,
+                                       std::max(1, blocks));
   std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
 
   // Radiosity: the pretrace first, over the whole frame; then every block of the final pass reads its samples and

@@ -37,12 +37,16 @@ Gatherer::Gatherer(const RenderRadiosity& radiosity, Vec3 camera)
     : radiosity_(radiosity), camera_(camera), error_bound_(radiosity.settings.error_bound),
       cursors_(radiosity.depths.size(), 0) {}
 
-void Gatherer::begin_block(int tile, int pass) {
-  tile_ = tile;
+void Gatherer::set_pass(int pass) {
   pass_ = pass;
   final_pass_ = pass == final_pass_id;
   error_bound_ = final_pass_ ? radiosity_.settings.error_bound
                              : radiosity_.settings.error_bound * radiosity_.settings.low_error_factor;
+}
+
+void Gatherer::begin_block(int tile, int pass) {
+  tile_ = tile;
+  set_pass(pass);
   std::fill(cursors_.begin(), cursors_.end(), 0);
   block_.clear();
   top_queries_ = 0;

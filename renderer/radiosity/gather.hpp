@@ -74,6 +74,9 @@ class Gatherer {
   // (study §9.2 item 5), top-level statistics reset. A tile is one block, or a group of pretrace blocks run one
   // after the other that see each other's samples (renderer/pretrace_run.cpp).
   void begin_block(int tile, int pass);
+  // Goes on to radiosity pass `pass` keeping the samples and the direction cursors (POV-Ray's one-thread order,
+  // where one evaluator runs the whole pretrace).
+  void set_pass(int pass);
   // Resets the depth-0 statistics only (POV-Ray's ResetTopLevelStats, before each adaptive sub-block).
   void reset_top_level_stats() {
     top_queries_ = 0;
