@@ -96,7 +96,7 @@ TEST(GatherRender, BelowQuality9TheSceneRendersWithoutRadiosity) {
   b.quality = 8;
   EXPECT_NO_THROW((void)build_render_scene(parsed(lit), b));
   b.quality = 9;
-  EXPECT_THROW((void)build_render_scene(parsed(lit), b), ParseError);   // until the pretrace exists (step 7)
+  EXPECT_TRUE(build_render_scene(parsed(lit), b).radiosity);
 }
 
 TEST(GatherRender, AmbientIsDroppedIn37ScenesAndKeptInOlderOnes) {
