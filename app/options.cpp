@@ -105,6 +105,8 @@ constexpr LongOption kLongOptions[] = {
     {"switch-table", Arg::none, [](RenderOptions& o, string_view, string_view) { o.print = RenderOptions::Print::switch_table; }},
     {"man-page", Arg::none, [](RenderOptions& o, string_view, string_view) { o.print = RenderOptions::Print::man_page; }},
     {"version", Arg::none, [](RenderOptions& o, string_view, string_view) { o.version = true; }},
+    {"radiosity-povray-order", Arg::none,
+     [](RenderOptions& o, string_view, string_view) { o.radiosity_povray_order = true; }},
     {"allow-shellout", Arg::none, [](RenderOptions& o, string_view, string_view) { o.allow_shellout = true; }},
     {"no-povray-ini", Arg::none, [](RenderOptions&, string_view, string_view) {}},  // seen by parse_command_line
     {"benchmark", Arg::none,

@@ -65,6 +65,7 @@ render::RenderSettings render_settings_from(const RenderOptions& o) {
   s.output_alpha = o.output_alpha;
   s.shading = o.lighting == LightingModel::textbook ? render::ShadingModel::textbook : render::ShadingModel::povray;
   s.quality = o.quality;
+  s.radiosity_povray_order = o.radiosity_povray_order;
   return s;
 }
 

@@ -1,5 +1,7 @@
 #include "renderer/render.hpp"
 
+#include "renderer/pretrace_run.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
@@ -40,12 +42,21 @@ std::pair<double, double> jitter2d(double x, double y) {
 class BlockRenderer {
  public:
   // `out` holds the pixels from (ox, oy) on: the whole frame, or a cropped region.
-  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy)
-      : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading, Quality::at_level(s.quality)) {}
+  // `radiosity_cache`: the pretrace's samples, which every block's radiosity queries read (null without radiosity).
+  BlockRenderer(const RenderScene& scene, const RenderSettings& s, image::Image& out, int ox, int oy,
+                const radiosity::CacheLevel* radiosity_cache)
+      : scene_(scene), s_(s), out_(out), ox_(ox), oy_(oy), tracer_(scene, s.shading, Quality::at_level(s.quality)) {
+    if (tracer_.gatherer()) {
+      tracer_.gatherer()->set_global(radiosity_cache);
+      // POV-Ray's one-thread order: one tile for the whole final pass, its samples kept for the blocks after.
+      if (s.radiosity_povray_order) tracer_.begin_block(0);
+    }
+  }
 
   // `serial`: the block's number in the frame's row-major grid (its radiosity tile id).
   void render_block(int serial, int x0, int y0, int w, int h) {
-    tracer_.begin_block(serial);
+    if (s_.radiosity_povray_order && tracer_.gatherer()) tracer_.forget_shadow_cache();
+    else tracer_.begin_block(serial);
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);
@@ -215,11 +226,27 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
   std::atomic<int> next{0}, done{0};
   std::atomic<bool> stop{false};
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const int threads = std::clamp(settings.threads > 0 ? settings.threads : static_cast<int>(hw), 1, std::max(1, blocks));
+  const int threads = scene.radiosity && settings.radiosity_povray_order
+                          ? 1
+                          : std::clamp(settings.threads > 0 ? settings.threads : static_cast<int>(hw), 1,
+                                       std::max(1, blocks));
   std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
 
+  // Radiosity: the pretrace first, over the whole frame; then every block of the final pass reads its samples and
+  // keeps the ones it makes to itself (POV-Ray's High_Reproducibility rule for the final pass), so a block's
+  // pixels do not depend on which blocks ran before it.
+  PretraceResult pretrace;
+  if (scene.radiosity && blocks > 0) {
+    pretrace = run_pretrace(scene, settings, std::max(1, settings.threads > 0 ? settings.threads : static_cast<int>(hw)));
+    result.rays += pretrace.rays;
+    if (pretrace.cancelled) {
+      result.cancelled = true;
+      return result;
+    }
+  }
+
   auto worker = [&](int id) {
-    BlockRenderer br(scene, settings, result.image, ox, oy);
+    BlockRenderer br(scene, settings, result.image, ox, oy, scene.radiosity ? &pretrace.cache : nullptr);
     // Blocks are handed out one at a time, so no core idles at the end of a frame while work remains.
     for (int b = next++; b < blocks; b = next++) {
       if (stop.load(std::memory_order_relaxed) || (settings.cancel && settings.cancel->load())) {

@@ -162,13 +162,6 @@ void add_radiosity(RenderScene& r, const SceneDescription& scene) {
 }  // namespace
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options) {
-  // POV-Ray computes radiosity only at +Q9 (+Q10, +Q11 are 9) and renders the scene as without its radiosity block
-  // below (study §7). At +Q9 the evaluator exists but not the pretrace (issue 19 step 7), and POV-Ray lights such a
-  // scene by radiosity (dropping its ambient term in 3.7 scenes, §1.1): rendering it without the pretrace would be
-  // silently wrong, so it is refused where the scene turns radiosity on, unless a test asks for the evaluator.
-  if (scene.radiosity && options.quality >= 9 && !options.allow_incomplete_radiosity)
-    fail_at_scene(scene.radiosity->loc, "unsupported: the global setting 'radiosity' is a POV-Ray feature that "
-                                        "povtrace does not render yet");
   if (options.povray_tolerances) return build_scene(with_world_space_spheres(scene), options, false);
   return build_scene(scene, options, true);
 }

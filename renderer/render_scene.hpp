@@ -241,10 +241,6 @@ struct BuildOptions {
   // The quality level (+Q): POV-Ray computes radiosity only at +Q9 and renders a radiosity scene as if it had no
   // radiosity block below that (study §7, checked with povray 3.7.0.10: +Q8 images are identical).
   int quality = 9;
-  // TEST ONLY, until issue 19 step 7 (the pretrace) is done: build a radiosity scene at +Q9 with the evaluator of
-  // renderer/radiosity/gather.hpp instead of refusing it. Without the pretrace the result is not POV-Ray's, so
-  // the application never sets this; tests of the evaluator do.
-  bool allow_incomplete_radiosity = false;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

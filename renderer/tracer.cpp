@@ -59,9 +59,9 @@ Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
   }
 }
 
-void Tracer::begin_block(int tile) {
+void Tracer::begin_block(int tile, int pass) {
   forget_shadow_cache();
-  if (gatherer_) gatherer_->begin_block(tile, radiosity::final_pass_id);
+  if (gatherer_) gatherer_->begin_block(tile, pass);
 }
 
 double metallic_fade(double x) {

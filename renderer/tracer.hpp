@@ -70,8 +70,9 @@ class Tracer : private radiosity::SampleTracer {
   // not depend on which thread rendered which block before.
   void forget_shadow_cache() { shadow_cache_.clear(); }
   // Starts a block: forgets the shadow cache and, with radiosity, starts the block's private samples and direction
-  // cursors (POV-Ray's BeforeTile) under tile id `tile`.
-  void begin_block(int tile);
+  // cursors (POV-Ray's BeforeTile) under tile id `tile` in radiosity pass `pass` (pretrace 1, 2, … or the final
+  // render).
+  void begin_block(int tile, int pass = radiosity::final_pass_id);
   // The radiosity evaluator of this tracer (null without radiosity): its block samples, its global level.
   radiosity::Gatherer* gatherer() { return gatherer_.get(); }
 

@@ -33,15 +33,20 @@ double importance_compensation(float p, int n) {
 }
 }  // namespace
 
-Gatherer::Gatherer(const RenderRadiosity& radiosity, Vec3 camera, bool final_pass)
-    : radiosity_(radiosity), camera_(camera), final_pass_(final_pass),
-      error_bound_(final_pass ? radiosity.settings.error_bound
-                              : radiosity.settings.error_bound * radiosity.settings.low_error_factor),
+Gatherer::Gatherer(const RenderRadiosity& radiosity, Vec3 camera)
+    : radiosity_(radiosity), camera_(camera), error_bound_(radiosity.settings.error_bound),
       cursors_(radiosity.depths.size(), 0) {}
+
+void Gatherer::set_pass(int pass) {
+  pass_ = pass;
+  final_pass_ = pass == final_pass_id;
+  error_bound_ = final_pass_ ? radiosity_.settings.error_bound
+                             : radiosity_.settings.error_bound * radiosity_.settings.low_error_factor;
+}
 
 void Gatherer::begin_block(int tile, int pass) {
   tile_ = tile;
-  pass_ = pass;
+  set_pass(pass);
   std::fill(cursors_.begin(), cursors_.end(), 0);
   block_.clear();
   top_queries_ = 0;
@@ -80,7 +85,7 @@ Vec3 Gatherer::ambient(const AmbientQuery& q, SampleTracer& tracer) {
   double reuse = found.weight_sum;
   if (q.depth == 0) {
     ++top_queries_;
-    top_reuse_ += reuse * 4;
+    top_reuse_ = static_cast<float>(top_reuse_ + reuse * 4);
   }
   Vec3 a = found.illuminance;
   if (!reuse_is_enough(reuse, ds.reuse_count, final_pass_, s.always_sample)) {

@@ -66,12 +66,22 @@ struct AmbientQuery {
 
 class Gatherer {
  public:
-  // `camera` is the camera location (the reuse radii scale with the distance to it); `final_pass` false for a
-  // pretrace pass (E × low_error_factor, linear weights).
-  Gatherer(const RenderRadiosity& radiosity, Vec3 camera, bool final_pass = true);
+  // `camera` is the camera location (the reuse radii scale with the distance to it).
+  Gatherer(const RenderRadiosity& radiosity, Vec3 camera);
 
-  // Starts a block (POV-Ray's BeforeTile): its tile id and pass, direction cursors back to 0 (study §9.2 item 5).
+  // Starts a tile (POV-Ray's BeforeTile): its tile id and pass (1, 2, … in the pretrace, with E × low_error_factor
+  // and linear weights; final_pass_id for the render), no samples of its own yet, direction cursors back to 0
+  // (study §9.2 item 5), top-level statistics reset. A tile is one block, or a group of pretrace blocks run one
+  // after the other that see each other's samples (renderer/pretrace_run.cpp).
   void begin_block(int tile, int pass);
+  // Goes on to radiosity pass `pass` keeping the samples and the direction cursors (POV-Ray's one-thread order,
+  // where one evaluator runs the whole pretrace).
+  void set_pass(int pass);
+  // Resets the depth-0 statistics only (POV-Ray's ResetTopLevelStats, before each adaptive sub-block).
+  void reset_top_level_stats() {
+    top_queries_ = 0;
+    top_reuse_ = 0;
+  }
   // The samples every lookup may see besides the block's own (null: none). Immutable during a pass.
   void set_global(const CacheLevel* global) { global_ = global; }
 
@@ -84,7 +94,7 @@ class Gatherer {
   CacheLevel& block_samples() { return block_; }
   // Depth-0 queries since begin_block and the sum of their 4·Σw before any gather (adaptive pretrace, §2.4).
   long top_level_queries() const { return top_queries_; }
-  double top_level_reuse() const { return top_reuse_; }
+  float top_level_reuse() const { return top_reuse_; }
   float running_quality() const { return quality_; }
 
   // The radiosity value of the samples offered to query q: Σw and Σw·A/Σw (A is 0 when Σw is 0), summed in
@@ -105,7 +115,7 @@ class Gatherer {
 
   const RenderRadiosity& radiosity_;
   Vec3 camera_;
-  bool final_pass_;
+  bool final_pass_ = true;
   double error_bound_;                 // E0, × low_error_factor in the pretrace
   const CacheLevel* global_ = nullptr;
   CacheLevel block_;
@@ -115,7 +125,7 @@ class Gatherer {
   int pass_ = 0;
   float quality_ = 1;                  // POV-Ray's ticket.radiosityQuality
   long top_queries_ = 0;
-  double top_reuse_ = 0;
+  float top_reuse_ = 0;                // single precision, as POV-Ray sums it
 };
 
 // The pass id of the final pass (POV-Ray's FINAL_TRACE), distinct from the pretrace passes 1, 2, …

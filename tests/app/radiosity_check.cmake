@@ -1,7 +1,7 @@
-# Radiosity is parsed whole but not rendered at +Q9 yet (issue 19, until step 7): a scene with a valid radiosity
-# block is refused after its parse, naming radiosity at the block's position (exit status 1, no output file), and a
-# bad block gets the precise parse error instead. Below +Q9 POV-Ray renders it as without the block, and so does
-# povtrace. Run from the scene's folder, as the sample-scene survey does.
+# Radiosity through the program: a bad radiosity block gets the precise parse error (exit status 1, no output
+# file); a valid one renders at +Q9 (the default) and, as in POV-Ray, is left out below +Q9, so the +Q8 image is
+# the one without the block and differs from the +Q9 one. Run from the scene's folder, as the sample-scene survey
+# does.
 # Usage: cmake -DPOVTRACE=<exe> -DWORK=<scratch folder> -P radiosity_check.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -22,21 +22,35 @@ function(expect_error scene text expected)
   endif()
 endfunction()
 
-# The refusal comes after the whole scene is read: the error in the last line is found first.
 expect_error(late_error.pov
   "#version 3.7;\nglobal_settings { radiosity { count 100 } }\nsphere { 0, 1 pigment { rgb 1 } }\nsphere { 0, Q }\n"
   "late_error.pov:4:13: error: ")
-expect_error(refused.pov
-  "#version 3.7;\nglobal_settings {\n  radiosity { count 100 nearest_count 8, 2 }\n}\nsphere { 0, 1 pigment { rgb 1 } radiosity { importance 0.5 } }\n"
-  "refused.pov:3:3: error: unsupported: the global setting 'radiosity' is a POV-Ray feature that povtrace does not render yet\n  radiosity { count 100 nearest_count 8, 2 }\n  ^")
 expect_error(bad_block.pov
   "#version 3.7;\nglobal_settings { radiosity { count 10, 5 } }\nsphere { 0, 1 pigment { rgb 1 } }\n"
   "bad_block.pov:2:41: error: Radiosity count can not be more than direction pool size (count 2nd value) (found 5); count is 10\nglobal_settings { radiosity { count 10, 5 } }\n                                        ^")
-# +Q8: rendered, as if the block were not there.
-file(WRITE "${WORK}/q8.pov" "#version 3.7;\nglobal_settings { radiosity { count 100 } }\nsphere { 0, 1 pigment { rgb 1 } }\n")
-execute_process(COMMAND "${POVTRACE}" +W32 +H24 -D +Q8 "+O${WORK}/q8.png" q8.pov
-                WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0 OR NOT EXISTS "${WORK}/q8.png")
-  message(FATAL_ERROR "q8.pov at +Q8: exit status ${status}, expected a render\n${out}${err}")
+# +Q9 renders the radiosity (a white sphere lit only by a white sky: bright), +Q8 the scene without the block
+# (no light, ambient 0: black), and the +Q8 image
+# is the one of the scene written without the block.
+set(lit "#version 3.7;\nglobal_settings { ambient_light 0 }\nsky_sphere { pigment { rgb 1 } }\ncamera { location <0, 0, -4> look_at 0 }\nsphere { 0, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n")
+file(WRITE "${WORK}/with.pov" "${lit}global_settings { radiosity { count 100 } }\n")
+file(WRITE "${WORK}/without.pov" "${lit}")
+foreach(run "with;9" "with;8" "without;8")
+  list(GET run 0 name)
+  list(GET run 1 q)
+  execute_process(COMMAND "${POVTRACE}" +W32 +H24 -D +Q${q} "+O${WORK}/${name}_q${q}.png" ${name}.pov
+                  WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0 OR NOT EXISTS "${WORK}/${name}_q${q}.png")
+    message(FATAL_ERROR "${name}.pov at +Q${q}: exit status ${status}, expected a render\n${out}${err}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/with_q8.png" "${WORK}/without_q8.png"
+                RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "+Q8 with the radiosity block differs from the scene without it")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/with_q9.png" "${WORK}/with_q8.png"
+                RESULT_VARIABLE same)
+if(same EQUAL 0)
+  message(FATAL_ERROR "+Q9 rendered the radiosity scene as +Q8 does: no radiosity computed")
 endif()
 file(REMOVE_RECURSE "${WORK}")

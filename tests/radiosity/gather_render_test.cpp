@@ -1,8 +1,7 @@
-// The radiosity evaluator (renderer/radiosity/gather.*) through the renderer, one block and no pretrace (issue 19
-// step 6, docs/issue19-study.md §9.3): scenes whose radiosity value follows from the direction pool alone, with
-// the expected values computed here from the pool (the "small script"), and the quality rule (+Q8 renders as if
-// there were no radiosity block). Built with BuildOptions::allow_incomplete_radiosity, which the application
-// never sets until the pretrace exists.
+// The radiosity evaluator (renderer/radiosity/gather.*) through the renderer (issue 19 step 6,
+// docs/issue19-study.md §9.3): scenes whose radiosity value follows from the direction pool alone, with the
+// expected values computed here from the pool (the "small script"), and the quality rule (+Q8 renders as if there
+// were no radiosity block).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,7 +26,6 @@ SceneDescription parsed(const std::string& text) {
 image::Image rendered(const std::string& text, int quality = 9, int threads = 1, int width = 16, int height = 12) {
   BuildOptions b;
   b.quality = quality;
-  b.allow_incomplete_radiosity = true;
   const RenderScene scene = build_render_scene(parsed(text), b);
   RenderSettings s;
   s.width = width;
@@ -98,7 +96,7 @@ TEST(GatherRender, BelowQuality9TheSceneRendersWithoutRadiosity) {
   b.quality = 8;
   EXPECT_NO_THROW((void)build_render_scene(parsed(lit), b));
   b.quality = 9;
-  EXPECT_THROW((void)build_render_scene(parsed(lit), b), ParseError);   // until the pretrace exists (step 7)
+  EXPECT_TRUE(build_render_scene(parsed(lit), b).radiosity);
 }
 
 TEST(GatherRender, AmbientIsDroppedIn37ScenesAndKeptInOlderOnes) {

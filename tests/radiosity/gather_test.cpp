@@ -117,7 +117,7 @@ TEST(Gatherer, ImportanceDropsRaysAndCompensatesTheKeptOnes) {
 
 TEST(Gatherer, PretraceNeedsEnoughWeightAndBlendsWhatItFound) {
   const RenderRadiosity rad = settings();
-  Gatherer g(rad, camera, false);
+  Gatherer g(rad, camera);
   g.begin_block(3, 1);
   ScriptedTracer t;
   (void)g.ambient(at_origin(), t);
@@ -129,12 +129,12 @@ TEST(Gatherer, PretraceNeedsEnoughWeightAndBlendsWhatItFound) {
   EXPECT_NEAR(a.y, 0.625, 1e-12);
   EXPECT_EQ(g.block_samples().size(), 2u);
   EXPECT_EQ(g.block_samples()[1].geometry.tile, 3);
-  EXPECT_DOUBLE_EQ(g.top_level_reuse(), 4.0);   // 0 before the first gather, 4·1 before the second
+  EXPECT_FLOAT_EQ(g.top_level_reuse(), 4.0f);   // 0 before the first gather, 4·1 before the second
 }
 
 TEST(Gatherer, CursorRunsOnWithinABlockAndRestartsPerBlock) {
   const RenderRadiosity rad = settings(5);
-  Gatherer g(rad, camera, false);
+  Gatherer g(rad, camera);
   struct Recorder final : SampleTracer {
     std::vector<Vec3> directions;
     SampleRayResult trace_sample(Vec3, Vec3 d, const SampleRayParams&) override {
