@@ -54,7 +54,7 @@ void pretrace_block(Tracer& tracer, const RenderScene& scene, const RenderSettin
         radiosity::pretrace_points(rect, state, sub, size, jitter);
     for (const radiosity::PretracePoint& p : points)
       if (const std::optional<Ray> ray = camera_ray(scene.camera, p.x, p.y, settings.width, settings.height))
-        (void)tracer.trace_camera_ray(*ray);
+        (void)tracer.trace_camera_ray(*ray, true);
     if (radiosity::pretrace_again(static_cast<int>(points.size()), gatherer.top_level_queries(),
                                   gatherer.top_level_reuse(), coverage))
       for (int y = 0; y < split_y; ++y)

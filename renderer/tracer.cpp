@@ -69,10 +69,11 @@ double metallic_fade(double x) {
   return std::clamp(0.014567225 / (d * d) - 0.011612903, 0.0, 1.0);
 }
 
-Radiance Tracer::trace_camera_ray(const Ray& ray) {
+Radiance Tracer::trace_camera_ray(const Ray& ray, bool pretrace) {
   ++counts_.camera;
   RayState state;
   state.alpha_background = scene_.output_alpha;
+  state.pretrace = pretrace;
   // A perspective camera's rays all start at its location; an orthographic camera's start across its image
   // plane, so POV-Ray finds the containing objects for each of them.
   if (origins_vary(scene_.camera)) {
@@ -742,6 +743,9 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   // POV-Ray's light loop runs only for a finish with diffuse, diffuse_back, phong or specular (trace.cpp
   // ComputeDiffuseLight); skipping it is its behaviour, not a shortcut: its shadow rays would move the shadow cache.
   if (fin.diffuse == 0 && fin.diffuse_back == 0 && !layer.has_highlights) return out;
+  // A pretrace ray's colour is thrown away: only its radiosity queries count, and lights play no part in them.
+  if constexpr (Radiosity)
+    if (state.pretrace) return out;
   // No light gives highlights to a radiosity sample ray's tree (trace.cpp: "NK rad").
   bool highlights = layer.has_highlights;
   if constexpr (Radiosity) highlights = highlights && state.radiosity_depth == 0;

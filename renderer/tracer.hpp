@@ -63,8 +63,10 @@ class Tracer : private radiosity::SampleTracer {
  public:
   Tracer(const RenderScene& scene, ShadingModel model, Quality quality = {});
 
-  // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera.
-  Radiance trace_camera_ray(const Ray& ray);
+  // A camera ray (level 1, weight 1), starting inside the interiors that contain the camera. A radiosity pretrace
+  // ray (`pretrace`) is traced only for the radiosity queries of its tree: as POV-Ray does for pretrace rays
+  // (trace.cpp, IsPretraceRay), its tree's surfaces skip the lights (sample rays traced from it do not).
+  Radiance trace_camera_ray(const Ray& ray, bool pretrace = false);
   const RayCounts& counts() const { return counts_; }
   // Empties POV-Ray's shadow cache (see shadow_cache_): done at the start of every block, so that an image does
   // not depend on which thread rendered which block before.
@@ -85,6 +87,7 @@ class Tracer : private radiosity::SampleTracer {
     InteriorList interiors;
     bool alpha_background = true;
     int radiosity_depth = 0;
+    bool pretrace = false;   // a radiosity pretrace ray or one traced from it, not a sample ray (trace_camera_ray)
   };
   // One layer's reflection, computed in the layer loop and traced after the transmitted ray (pipeline §4).
   struct PendingReflection {

@@ -62,10 +62,10 @@ Gatherer::Lookup Gatherer::lookup(const Query& q) {
     out.weight_sum += w;
     sum += s.illuminance * w;
   };
-  if (global_) for_each_candidate(*global_, block_, q.point, scratch_, visit);
+  if (global_) for_each_candidate(*global_, block_, q.point, scratch_, visit, q.depth);
   else {
     scratch_.clear();
-    block_.covering(q.point, scratch_);
+    block_.covering(q.point, scratch_, q.depth);
     for (const std::uint32_t id : scratch_) visit(block_[id]);
   }
   if (out.weight_sum > 0) out.illuminance = sum / out.weight_sum;
@@ -154,7 +154,8 @@ Gatherer::Gathered Gatherer::gather(const AmbientQuery& q, Vec3 effective_normal
     g.depth = q.depth;
     g.pass = pass_;
     g.tile = tile_;
-    block_.add(filing_node(q.point, mean * filing_factor(s.error_bound, q.depth)), CachedSample{g, illuminance});
+    block_.add(filing_node(q.point, mean * filing_factor(s.error_bound, q.depth)), CachedSample{g, illuminance},
+               q.depth);
   }
   quality_ = std::max(saved_quality, static_cast<float>(quality));
   return {illuminance, quality};

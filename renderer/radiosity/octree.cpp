@@ -1,10 +1,8 @@
 #include "renderer/radiosity/octree.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <cfloat>
-#include <climits>
 #include <cmath>
 
 namespace povtrace::render::radiosity {
@@ -33,21 +31,6 @@ double max3(double a, double b, double c) { return std::max(a, std::max(b, c)); 
 
 bool axis_covers(double p, int i, double side) {
   return std::fabs(p + octree_bias - (static_cast<double>(i) + 0.5) * side) < side;
-}
-
-// The positions along one axis whose node of this side covers coordinate p: mathematically ⌊t⌋ − 1 … ⌊t⌋ + 1
-// with t = (p + 1e7)/side (two of them, or one on a boundary); ±2 are tested too, against rounding.
-struct AxisPositions {
-  std::array<int, 5> at{};
-  int count = 0;
-};
-AxisPositions covering_positions(double p, double side) {
-  AxisPositions out;
-  const double t = std::floor((p + octree_bias) / side);
-  if (!(t > static_cast<double>(INT_MIN) + 2 && t < static_cast<double>(INT_MAX) - 2)) return out;
-  for (int i = static_cast<int>(t) - 2; i <= static_cast<int>(t) + 2; ++i)
-    if (axis_covers(p, i, side)) out.at[static_cast<std::size_t>(out.count++)] = i;
-  return out;
 }
 
 }  // namespace
@@ -87,45 +70,61 @@ double filing_factor(double error_bound, int depth) {
   return error_bound * std::pow(2.0, depth) / overfill;
 }
 
-std::size_t NodeKeyHash::operator()(const NodeKey& k) const {
-  std::size_t h = static_cast<std::size_t>(k.size_code);
-  for (const int v : {k.x, k.y, k.z}) h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(v);
-  return h ^ (h >> 29);
+namespace {
+// The ancestor of `node` of size code `size_code` (≥ the node's own).
+NodeKey ancestor_at(NodeKey node, int size_code) {
+  while (node.size_code < size_code) node = parent_node(node);
+  return node;
+}
+}  // namespace
+
+std::uint32_t NodeIndex::child_of(std::uint32_t parent, const NodeKey& key) {
+  for (const std::uint32_t c : nodes_[parent].children)
+    if (nodes_[c].key == key) return c;
+  const auto made = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.push_back(Node{key, node_side(key.size_code), {}, {}});
+  nodes_[parent].children.push_back(made);
+  return made;
 }
 
 void NodeIndex::insert(const NodeKey& node, std::uint32_t id) {
-  std::vector<std::uint32_t>& list = nodes_[node];
-  assert(list.empty() || list.back() < id);
-  list.push_back(id);
-  const auto level = std::lower_bound(levels_.begin(), levels_.end(), node.size_code);
-  if (level == levels_.end() || *level != node.size_code) levels_.insert(level, node.size_code);
+  if (nodes_.empty()) {
+    nodes_.push_back(Node{node, node_side(node.size_code), {}, {}});
+    root_ = 0;
+  }
+  // Grow the root until it is the node or one of its ancestors (the positions converge within ~32 parents).
+  while (nodes_[root_].key.size_code < node.size_code ||
+         ancestor_at(node, nodes_[root_].key.size_code) != nodes_[root_].key) {
+    const auto grown = static_cast<std::uint32_t>(nodes_.size());
+    const NodeKey up = parent_node(nodes_[root_].key);
+    nodes_.push_back(Node{up, node_side(up.size_code), {}, {root_}});
+    root_ = grown;
+  }
+  std::uint32_t at = root_;
+  for (int code = nodes_[root_].key.size_code - 1; code >= node.size_code; --code)
+    at = child_of(at, ancestor_at(node, code));
+  nodes_[at].samples.push_back(id);
   ++count_;
 }
 
-void NodeIndex::covering_at_level(int size_code, Vec3 p, std::vector<std::uint32_t>& ids) const {
-  const double side = node_side(size_code);
-  const AxisPositions xs = covering_positions(p.x, side);
-  const AxisPositions ys = covering_positions(p.y, side);
-  const AxisPositions zs = covering_positions(p.z, side);
-  for (int a = 0; a < xs.count; ++a)
-    for (int b = 0; b < ys.count; ++b)
-      for (int c = 0; c < zs.count; ++c) {
-        const NodeKey key{size_code, xs.at[static_cast<std::size_t>(a)], ys.at[static_cast<std::size_t>(b)],
-                          zs.at[static_cast<std::size_t>(c)]};
-        const auto found = nodes_.find(key);
-        if (found != nodes_.end()) ids.insert(ids.end(), found->second.begin(), found->second.end());
-      }
+void NodeIndex::walk(std::uint32_t node, Vec3 p, std::vector<std::uint32_t>& ids) const {
+  const Node& n = nodes_[node];
+  ids.insert(ids.end(), n.samples.begin(), n.samples.end());
+  for (const std::uint32_t c : n.children) {
+    const Node& child = nodes_[c];
+    if (axis_covers(p.x, child.key.x, child.side) && axis_covers(p.y, child.key.y, child.side) &&
+        axis_covers(p.z, child.key.z, child.side))
+      walk(c, p, ids);
+  }
 }
 
 void NodeIndex::covering(Vec3 p, std::vector<std::uint32_t>& ids) const {
-  const std::size_t first = ids.size();
-  for (const int level : levels_) covering_at_level(level, p, ids);
-  std::sort(ids.begin() + static_cast<std::ptrdiff_t>(first), ids.end());
+  if (!nodes_.empty() && node_covers(nodes_[root_].key, p)) walk(root_, p, ids);
 }
 
 void NodeIndex::clear() {
   nodes_.clear();
-  levels_.clear();
+  root_ = 0;
   count_ = 0;
 }
 

@@ -2,8 +2,11 @@
 // support/octree.cpp ot_index_sphere, ot_index_box, ot_point_in_node, ot_parent, ot_dist_traverse). POV-Ray
 // files each sample in one cubic octree node chosen from the sample's position and filing radius, and a lookup
 // walks only nodes that "cover" the query point. Since a node's parent covers every point the node covers, the
-// samples a lookup sees are exactly those whose node covers the point; this index keeps that rule without the
-// tree: samples are grouped by node, and a lookup tests the few nodes per node size that can cover the point.
+// samples a lookup sees are exactly those whose node covers the point. This index is such a tree: nodes hold their
+// samples, a lookup descends from the root into the children that cover the point.
+//
+// (POV-Ray's parent of a negative position i is (i + 1)/2 truncated, whose cube need not contain the child's; such
+// positions mean coordinates below −1e7, where the walk may miss a sample the "covers" rule would offer.)
 //
 // POV-Ray's walk never tests the root node itself, so samples filed exactly at the current root are offered to
 // every lookup; povtrace does not reproduce that artefact of insertion history (the reuse test of weights.hpp
@@ -12,7 +15,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "scene/vecmath.hpp"
@@ -52,26 +54,30 @@ NodeKey filing_node(Vec3 centre, double radius);
 // error_bound, never multiplied by low_error_factor.
 double filing_factor(double error_bound, int depth);
 
-struct NodeKeyHash {
-  std::size_t operator()(const NodeKey& k) const;
-};
-
-// Sample ids (in the order they were inserted) grouped by node.
+// Sample ids grouped by node, in a tree of nodes (each node's parent is parent_node of it).
 class NodeIndex {
  public:
-  // File sample `id` under `node`; ids must be inserted in increasing order.
+  // File sample `id` under `node`.
   void insert(const NodeKey& node, std::uint32_t id);
-  // Append to `ids`, in increasing order, the id of every sample whose node covers p.
+  // Append to `ids` the id of every sample whose node covers p, in a fixed order for a given insertion history
+  // (the tree walk's: a node's samples in insertion order, then its children's in the order they were created).
   void covering(Vec3 p, std::vector<std::uint32_t>& ids) const;
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
   void clear();
 
  private:
-  void covering_at_level(int size_code, Vec3 p, std::vector<std::uint32_t>& ids) const;
+  struct Node {
+    NodeKey key;
+    double side = 1;   // node_side(key.size_code)
+    std::vector<std::uint32_t> samples;
+    std::vector<std::uint32_t> children;   // indices into nodes_
+  };
+  void walk(std::uint32_t node, Vec3 p, std::vector<std::uint32_t>& ids) const;
+  std::uint32_t child_of(std::uint32_t parent, const NodeKey& key);
 
-  std::unordered_map<NodeKey, std::vector<std::uint32_t>, NodeKeyHash> nodes_;
-  std::vector<int> levels_;   // size codes that hold at least one node, ascending
+  std::vector<Node> nodes_;
+  std::uint32_t root_ = 0;   // meaningful when nodes_ is not empty
   std::size_t count_ = 0;
 };
 
