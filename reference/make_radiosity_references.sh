@@ -4,6 +4,7 @@
 # +WT2 (POV-Ray's own spread: with two threads the result depends on thread timing, docs/issue19-study.md §6),
 # their render times (times.csv), the per-scene bars (bars.csv, from scripts/radiosity_compare.py) and README.md.
 # Usage: reference/make_radiosity_references.sh [NAME...]   (no names = every case)
+#        reference/make_radiosity_references.sh --no-render  (only bars.csv and README.md, from the stored renders)
 # Each case's scene folder is copied to a scratch folder and the scene is rendered there, from its own folder, with
 # exactly:
 #   povray -D -A +W160 +H120 +FE +WTn [switches] +ONAME.wt1.exr (or NAME.wt2-K.exr) SCENE_FILE_NAME
@@ -43,9 +44,11 @@ render() {
   echo "ok    $name $output (${wall} s)"
 }
 
+render_cases=1
+if [ "${1:-}" = "--no-render" ]; then render_cases=0; shift; fi
 failed=0
 found=0
-while read -r name scene switches; do
+[ $render_cases -eq 1 ] && while read -r name scene switches; do
   case $name in ''|'#'*) continue ;; esac
   if [ $# -gt 0 ]; then
     wanted=0
@@ -68,12 +71,16 @@ while read -r name scene switches; do
     render "$name" "$(dirname "$path")" "$(basename "$path")" 2 "$name.wt2-$k.exr" "${extra[@]}" || failed=1
   done
 done < "$out/cases.txt"
-if [ $# -gt 0 ] && [ "$found" -ne $# ]; then echo "FAIL  some of the names $* are not in cases.txt"; failed=1; fi
+if [ $render_cases -eq 1 ] && [ $# -gt 0 ] && [ "$found" -ne $# ]; then echo "FAIL  some of the names $* are not in cases.txt"; failed=1; fi
 
 # The bar of each case: the worst PSNR of its +WT2 renders against its +WT1 render (scripts/radiosity_compare.py).
 povdiff=${POVDIFF:-$repo/build/povdiff}
+spread="(not measured: no povdiff)"
+counterparts="(not measured: no povdiff)"
 if [ -x "$povdiff" ]; then
-  python3 "$repo/scripts/radiosity_compare.py" --povdiff "$povdiff" --write-bars "$out/bars.csv" > /dev/null || failed=1
+  spread=$(python3 "$repo/scripts/radiosity_compare.py" --povdiff "$povdiff" --write-bars "$out/bars.csv" | grep '^|' \
+             | cut -d'|' -f2,4 | sed 's/^/|/; s/$/|/') || failed=1
+  counterparts=$(python3 "$repo/scripts/radiosity_compare.py" --povdiff "$povdiff" --counterparts) || failed=1
 else
   echo "FAIL  no povdiff at $povdiff (build first, or set POVDIFF): bars.csv not rewritten"; failed=1
 fi
@@ -97,8 +104,8 @@ redoes only those):
   the run (the machine has 2 cores and is shared, so the times are indicative).
 - \`bars.csv\`: per case, the worst (lowest) PSNR of the +WT2 renders against \`NAME.wt1.exr\`, with that run's mean
   relative difference and RMS, written by \`scripts/radiosity_compare.py --write-bars\`. The CTest tests
-  \`radiosity_samples.NAME\` (label \`radiosity\`) require povtrace's render to be at least as close to the +WT1
-  reference as the worst +WT2 run is.
+  \`radiosity_samples.NAME\` (sample scenes) and \`radiosity_settings.NAME\` (setting scenes), label \`radiosity\`,
+  require povtrace's render to be at least as close to the +WT1 reference as the worst +WT2 run is.
 
 - POV-Ray version (first line of \`povray --version\`): \`$version\` (Debian's povray package)
 - Scenes: \`samples:PATH\` = Debian's povray-examples, \`/usr/share/povray-3.7/scenes/PATH\` (not copied into this
@@ -112,6 +119,20 @@ redoes only those):
 - Generated: $(date -u +%Y-%m-%d), on a shared machine with $(nproc) cores.
 
 Compare a povtrace render with \`python3 scripts/radiosity_compare.py\` (see its --help); it uses the same PSNR as
-povdiff (linear light, R, G, B, peak 1.0).
+povdiff (linear light, R, G, B as stored, peak 1.0, no clipping); mean rel = Σ|b − a| / Σ|a| over every channel value.
+
+## POV-Ray's own spread (the bars)
+
+The worst of the +WT2 renders against the +WT1 render, per case (bars.csv):
+
+$spread
+
+## Do the setting scenes' tests see their setting?
+
+Each \`scenes/radiosity/radiosity_SETTING.pov\` names a counterpart (\`// counterpart:\`), the same room without that
+setting. If the counterpart's +WT1 render is further from the case's +WT1 reference than the case's bar, a renderer
+that ignored the setting would fail the case's test (\`radiosity_compare.py --counterparts\`):
+
+$counterparts
 README
 exit $failed
