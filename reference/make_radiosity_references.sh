@@ -121,6 +121,18 @@ redoes only those):
 Compare a povtrace render with \`python3 scripts/radiosity_compare.py\` (see its --help); it uses the same PSNR as
 povdiff (linear light, R, G, B as stored, peak 1.0, no clipping); mean rel = Σ|b − a| / Σ|a| over every channel value.
 
+## Running the tests and the comparison
+
+- \`ctest -L radiosity\` (in build/) runs the 33 tests. Until povtrace renders radiosity at +Q9 they are reported as
+  *skipped* (povtrace's "unsupported: the global setting 'radiosity'" refusal); any other failure fails.
+- \`python3 scripts/radiosity_compare.py --povtrace build/povtrace\` renders every case with povtrace (same command,
+  from a copy of the scene's folder), prints the table with the verdict and the time ratios POV-Ray/povtrace;
+  \`--candidate IMAGE NAME\` or \`--candidate-dir DIR\` compare images made elsewhere; \`--details\` lists every +WT2 run.
+- The bar in bars.csv is povdiff's 3-decimal PSNR of the worst +WT2 run minus 0.0005 dB (the lowest the unrounded
+  PSNR can be), so that the worst run itself passes its own test (checked: all 99 +WT2 renders pass their case's test
+  with \`-DCANDIDATE=\`, every counterpart marked "detects" below fails it).
+- The bar is the worst of only $runs_wt2 +WT2 runs: a fourth POV-Ray +WT2 run would itself land below it now and then.
+
 ## POV-Ray's own spread (the bars)
 
 The worst of the +WT2 renders against the +WT1 render, per case (bars.csv):
