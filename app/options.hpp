@@ -117,7 +117,7 @@ struct RenderOptions {
   MessageStreams streams;                       // +GA +GD +GF +GR +GS +GW +GP and the *_Console/*_File keys
   std::optional<std::filesystem::path> create_ini;  // +GI / Create_Ini: write the resolved settings here
   ShellCommands shell_commands;                 // *_Command / *_Return
-  // --radiosity-povray-order: radiosity in POV-Ray's one-thread order, on one thread (render.hpp
+  // --radiosity-povray-order: radiosity's final pass in POV-Ray's one-thread order too, on one thread (render.hpp
   // RenderSettings::radiosity_povray_order).
   bool radiosity_povray_order = false;
   bool allow_shellout = false;                  // --allow-shellout: run the shell commands

@@ -1,12 +1,9 @@
 #include "renderer/pretrace_run.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <memory>
+#include <cstdlib>
 #include <optional>
-#include <span>
-#include <thread>
 #include <vector>
 
 #include "renderer/radiosity/pretrace.hpp"
@@ -16,19 +13,6 @@ namespace povtrace::render {
 namespace {
 using radiosity::BlockRect;
 using radiosity::PretraceBlockState;
-
-// Calls work(thread, item) for every item in [0, items) on `threads` threads, items handed out in order.
-template <class Work>
-void parallel_items(int threads, int items, Work&& work) {
-  std::atomic<int> next{0};
-  auto loop = [&](int thread) {
-    for (int i = next++; i < items; i = next++) work(thread, i);
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(loop, t);
-  loop(0);
-  for (std::thread& t : pool) t.join();
-}
 
 // One pass of one block (radiositytask.cpp's block loop): its sub-blocks still incomplete, each traced at its
 // jittered points and judged by the depth-0 statistics of its rays; the block's state advances one pass.
@@ -68,7 +52,7 @@ void pretrace_block(Tracer& tracer, const RenderScene& scene, const RenderSettin
 }
 }  // namespace
 
-PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& settings, int threads) {
+PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& settings) {
   PretraceResult result;
   const RadiositySettings& rs = scene.radiosity->settings;
   const std::vector<double> sizes =
@@ -79,50 +63,25 @@ PretraceResult run_pretrace(const RenderScene& scene, const RenderSettings& sett
   const int bs = std::max(4, settings.block_size);
   const int across = (settings.width + bs - 1) / bs, down = (settings.height + bs - 1) / bs;
   const int blocks = across * down;
-  std::vector<BlockRect> rects(static_cast<std::size_t>(blocks));
-  for (int b = 0; b < blocks; ++b) {
-    const int x0 = (b % across) * bs, y0 = (b / across) * bs;
-    rects[static_cast<std::size_t>(b)] = {x0, y0, std::min(x0 + bs, settings.width) - 1,
-                                          std::min(y0 + bs, settings.height) - 1};
-  }
   std::vector<PretraceBlockState> states(static_cast<std::size_t>(blocks));
-  const bool one_order = settings.radiosity_povray_order;
-  if (one_order) threads = 1;
-  std::vector<std::unique_ptr<Tracer>> tracers;
-  for (int t = 0; t < threads; ++t)
-    tracers.push_back(std::make_unique<Tracer>(scene, settings.shading, Quality::at_level(settings.quality)));
-  std::atomic<bool> cancelled{false};
-
-  for (int pass = 0; pass < passes && !cancelled; ++pass) {
-    const int groups = one_order ? 1 : std::min(blocks, 1 << std::min(pass, 20));
-    std::vector<radiosity::CacheLevel> made(static_cast<std::size_t>(groups));
-    parallel_items(std::min(threads, groups), groups, [&](int thread, int group) {
-      Tracer& tracer = *tracers[static_cast<std::size_t>(thread)];
-      if (!one_order) {
-        tracer.gatherer()->set_global(&result.cache);
-        tracer.begin_block(group, pass + 1);
-      } else if (pass == 0) {
-        tracer.begin_block(0, 1);   // POV-Ray's one task: tile 0, its samples all in its own level
-      } else {
-        tracer.gatherer()->set_pass(pass + 1);
+  Tracer tracer(scene, settings.shading, Quality::at_level(settings.quality));
+  tracer.begin_block(0, 1);   // POV-Ray's one pretrace task: tile 0 throughout, its samples all in its own level
+  for (int pass = 0; pass < passes; ++pass) {
+    if (pass > 0) tracer.gatherer()->set_pass(pass + 1);
+    for (int serial = 0; serial < blocks; ++serial) {
+      if (settings.cancel && settings.cancel->load()) {
+        result.cancelled = true;
+        return result;
       }
-      for (int serial = group; serial < blocks; serial += groups) {
-        if (cancelled || (settings.cancel && settings.cancel->load())) {
-          cancelled = true;
-          return;
-        }
-        PretraceBlockState& state = states[static_cast<std::size_t>(serial)];
-        if (state.pass == pass && !state.finished(passes))
-          pretrace_block(tracer, scene, settings, serial, rects[static_cast<std::size_t>(serial)], state, sizes,
-                         end_size);
-      }
-      if (!one_order) made[static_cast<std::size_t>(group)] = tracer.gatherer()->block_samples();
-    });
-    radiosity::merge_blocks(result.cache, std::span<radiosity::CacheLevel>(made));
+      PretraceBlockState& state = states[static_cast<std::size_t>(serial)];
+      if (state.finished(passes)) continue;
+      const int x0 = (serial % across) * bs, y0 = (serial / across) * bs;
+      const BlockRect rect{x0, y0, std::min(x0 + bs, settings.width) - 1, std::min(y0 + bs, settings.height) - 1};
+      pretrace_block(tracer, scene, settings, serial, rect, state, sizes, end_size);
+    }
   }
-  if (one_order) result.cache = tracers.front()->gatherer()->block_samples();
-  for (const auto& t : tracers) result.rays += t->counts();
-  result.cancelled = cancelled;
+  result.cache = tracer.gatherer()->block_samples();
+  result.rays = tracer.counts();
   return result;
 }
 

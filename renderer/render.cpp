@@ -56,7 +56,7 @@ class BlockRenderer {
   // `serial`: the block's number in the frame's row-major grid (its radiosity tile id).
   void render_block(int serial, int x0, int y0, int w, int h) {
     if (s_.radiosity_povray_order && tracer_.gatherer()) tracer_.forget_shadow_cache();
-    else tracer_.begin_block(serial);
+    else tracer_.begin_block(serial);   // final-pass samples stay the block's own
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);
@@ -232,12 +232,12 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings) {
                                        std::max(1, blocks));
   std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
 
-  // Radiosity: the pretrace first, over the whole frame; then every block of the final pass reads its samples and
-  // keeps the ones it makes to itself (POV-Ray's High_Reproducibility rule for the final pass), so a block's
-  // pixels do not depend on which blocks ran before it.
+  // Radiosity: the pretrace first, over the whole frame (POV-Ray's one-thread order: renderer/pretrace_run.hpp);
+  // then every block of the final pass reads its samples and keeps the ones it makes to itself (POV-Ray's
+  // High_Reproducibility rule for the final pass), so a block's pixels do not depend on which blocks ran before it.
   PretraceResult pretrace;
   if (scene.radiosity && blocks > 0) {
-    pretrace = run_pretrace(scene, settings, std::max(1, settings.threads > 0 ? settings.threads : static_cast<int>(hw)));
+    pretrace = run_pretrace(scene, settings);
     result.rays += pretrace.rays;
     if (pretrace.cancelled) {
       result.cancelled = true;

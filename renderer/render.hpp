@@ -56,10 +56,10 @@ struct RenderSettings {
   // The blocks that are rendered are computed exactly as without skipping (every block is independent).
   std::function<bool(const image::PixelRect& block)> skip_block;
   const std::atomic<bool>* cancel = nullptr;            // set to stop promptly (Ctrl-C)
-  // Radiosity in POV-Ray's one-thread order (povray +WT1), on one thread: the pretrace blocks one after the other,
-  // pass after pass, each seeing every sample made before it, one direction cursor running through the pretrace and
-  // another through the final pass, and final-pass samples kept for the blocks after (renderer/pretrace_run.hpp).
-  // Reproduces POV-Ray's +WT1 radiosity sample for sample; the default order is parallel and as reproducible.
+  // Radiosity's final pass in POV-Ray's one-thread order (povray +WT1) too, on one thread: the blocks one after the
+  // other, one direction cursor running through them, each block seeing the samples of the blocks before it. With
+  // the pretrace (always in that order, renderer/pretrace_run.hpp) it reproduces POV-Ray's +WT1 radiosity sample
+  // for sample. By default the final pass is parallel, each block keeping its new samples to itself.
   bool radiosity_povray_order = false;
 };
 

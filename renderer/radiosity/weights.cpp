@@ -5,10 +5,7 @@
 
 namespace povtrace::render::radiosity {
 
-bool sample_visible(const Query& q, const SampleGeometry& s) {
-  if (s.depth != q.depth) return false;
-  return !(s.pass == q.pass && s.tile != q.tile);
-}
+bool sample_visible(const Query& q, const SampleGeometry& s) { return s.depth == q.depth; }
 
 double effective_radius(const SampleGeometry& s, Vec3 query_point) {
   const Vec3 delta = query_point - s.point;

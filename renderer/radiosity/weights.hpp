@@ -42,8 +42,10 @@ inline constexpr double in_front_limit = -0.05;    // IN_FRONT_LIMIT
 inline constexpr double weight_epsilon = 0.001;    // RAD_EPSILON: weights at or below are dropped
 inline constexpr double weak_ray_weight = 0.25;    // WEIGHT_ERROR_BOUND_OFFSET
 
-// The sample is offered to this query at all: same bounce depth, and not made in the query's own pass by
-// another tile (POV-Ray's reproducibility rule; the octree walk does the depth test, AverageNearBlock the rest).
+// The sample is offered to this query at all: same bounce depth (the octree walk's test in POV-Ray). Which
+// samples of the query's own pass it may see is decided by the store (sample_levels.hpp: what was merged is seen
+// by every later block, a block's new samples by itself only), so POV-Ray's High_Reproducibility rule on pass
+// and tile ids is not applied here; the ids stay on the samples as a record of where they were made.
 bool sample_visible(const Query& q, const SampleGeometry& s);
 
 // The sample's radius of influence towards the query point, ρ: its stored radius, pulled towards its nearest-hit

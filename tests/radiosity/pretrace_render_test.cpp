@@ -23,10 +23,11 @@ RenderScene built(const std::string& text) {
   return build_render_scene(parse_scene_text(text, "pretrace.pov", o), BuildOptions{});
 }
 
-// A small Cornell-like box: coloured walls, a light, two boxes; two bounces, few rays, so it stays fast.
+// A small Cornell-like box: coloured walls, a light, two boxes; two bounces, few rays, so it stays fast; a coarse
+// pretrace and a small error bound, so that the final pass gathers too.
 const std::string box_scene =
     "#version 3.7;\n"
-    "global_settings { assumed_gamma 1 radiosity { count 24 recursion_limit 2 nearest_count 3 } }\n"
+    "global_settings { assumed_gamma 1 radiosity { count 24 recursion_limit 2 nearest_count 3 error_bound 0.6 pretrace_start 0.25 pretrace_end 0.25 } }\n"
     "camera { location <0, 1, -0.95> look_at <0, 1, 0> angle 90 }\n"
     "light_source { <0, 1.9, -0.5>, rgb 1 }\n"
     "#declare W = finish { ambient 0 diffuse 0.8 }\n"
@@ -67,7 +68,7 @@ TEST(PretraceRender, PovRaysOrderIsTheSameForAnyThreadCountAndDiffersFromThePara
   const RenderScene scene = built(box_scene);
   const image::Image one = render_with(scene, 1, true);
   EXPECT_TRUE(same_pixels(one, render_with(scene, 4, true)));
-  // Not the same order: the default keeps final-pass samples to their block and groups the pretrace blocks.
+  // Not the same order: the default keeps final-pass samples to their block, each block starting its cursors anew.
   EXPECT_FALSE(same_pixels(one, render_with(scene, 1, false)));
 }
 
@@ -106,10 +107,10 @@ TEST(PretraceRender, BlocksThatSeeNoRadiositySurfaceStopAfterTheFirstPass) {
   s.threads = 2;
   const std::uint64_t first = points_in_pass(64, 64, 32, 5.12), second = points_in_pass(64, 64, 32, 2.56);
   EXPECT_EQ(first, 13u * 13u);   // 7 + 6 grid points across: 0 … 30.72 and 35.84 … 61.44
-  const PretraceResult sky = run_pretrace(built(sky_only), s, 2);
+  const PretraceResult sky = run_pretrace(built(sky_only), s);
   EXPECT_EQ(sky.rays.camera, first);
   EXPECT_TRUE(sky.cache.empty());
-  const PretraceResult planes = run_pretrace(built(plane_only), s, 2);
+  const PretraceResult planes = run_pretrace(built(plane_only), s);
   EXPECT_EQ(planes.rays.camera, first + second);
   EXPECT_FALSE(planes.cache.empty());
 }

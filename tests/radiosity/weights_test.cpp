@@ -139,18 +139,13 @@ TEST(RadiosityWeight, QualityScalesAfterTheSmallWeightCut) {
   EXPECT_EQ(sample_weight(query({0, 0, 0.9991}, 1.0), sample()), 0.0);
 }
 
-TEST(RadiosityWeight, PassTileAndDepthExclusion) {
+TEST(RadiosityWeight, DepthExclusion) {
   SampleGeometry s = sample();   // pass 1, tile 3
   Query q = query({0, 0, 0.36}, 1.8);
   q.pass = 1;
   q.tile = 0;
-  EXPECT_FALSE(sample_visible(q, s));                  // same pass, another tile
-  EXPECT_EQ(sample_weight(q, s), 0.0);
-  q.tile = 3;
-  EXPECT_TRUE(sample_visible(q, s));                   // same pass, same tile
-  q.pass = 2;
-  q.tile = 0;
-  EXPECT_TRUE(sample_visible(q, s));                   // an earlier pass, any tile
+  EXPECT_TRUE(sample_visible(q, s));                   // same pass, another tile: the store decides
+  EXPECT_GT(sample_weight(q, s), 0.0);
   q.depth = 1;
   EXPECT_FALSE(sample_visible(q, s));                  // another bounce depth
   EXPECT_EQ(sample_weight(q, s), 0.0);
