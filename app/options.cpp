@@ -386,6 +386,8 @@ std::string usage_text() {
          "  --no-specialise[=NAME,...]  the general paths instead of those chosen for what the scene holds\n"
          "                      (same image, slower; for measuring what each gains); NAME: all (default),\n"
          "                      nearest-shadow-first, no-shadow-rays, embree-meshes\n"
+         "  --radiosity-povray-order  radiosity's final pass in POV-Ray's one-thread order too (on one thread):\n"
+         "                      reproduces povray +WT1's radiosity; by default the final pass is parallel\n"
          "  --allow-shellout    run the *_Command shell-outs (otherwise they are reported and skipped)\n"
          "  --no-povray-ini     do not read a povray.ini\n"
          "  --switch-table      print every POV-Ray switch and INI key with what povtrace does (Markdown)\n"
