@@ -53,4 +53,18 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/with_q9.png" 
 if(same EQUAL 0)
   message(FATAL_ERROR "+Q9 rendered the radiosity scene as +Q8 does: no radiosity computed")
 endif()
+# +QR (3.6's radiosity quality switch) is not a POV-Ray 3.7 option: povray fails to parse it; so does povtrace
+# (its usage-error status 2), naming it, with no image.
+execute_process(COMMAND "${POVTRACE}" +W32 +H24 -D +QR "+O${WORK}/qr.png" with.pov
+                WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "\\+QR" OR EXISTS "${WORK}/qr.png")
+  message(FATAL_ERROR "+QR: exit status ${status} (expected 2, an error naming +QR, no image)\n${out}${err}")
+endif()
+# +QR (3.6's radiosity quality switch) is not a POV-Ray 3.7 option: povray fails to parse it; so does povtrace
+# (its usage-error status 2), naming it, with no image.
+execute_process(COMMAND "${POVTRACE}" +W32 +H24 -D +QR "+O${WORK}/qr.png" with.pov
+                WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "\\+QR" OR EXISTS "${WORK}/qr.png")
+  message(FATAL_ERROR "+QR: exit status ${status} (expected 2, an error naming +QR, no image)\n${out}${err}")
+endif()
 file(REMOVE_RECURSE "${WORK}")
