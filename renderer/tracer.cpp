@@ -116,6 +116,7 @@ radiosity::SampleRayResult Tracer::trace_sample(Vec3 origin, Vec3 direction, con
   radiosity::SampleRayResult out;
   const float own = hit.found() ? hit.surface.leaf->radiosity_importance : -1.0f;
   out.importance = own < 0 ? rad.default_importance : own;
+  gatherer_->importance_found(out.importance);
   out.depth = hit.found() ? hit.t : HUGE_VAL;
   out.kept = !(out.importance < p.importance_queried);
   if (!out.kept) return out;

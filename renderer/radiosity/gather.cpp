@@ -125,9 +125,12 @@ Gatherer::Gathered Gatherer::gather(const AmbientQuery& q, Vec3 effective_normal
     const Vec3 d = directions.next();
     quality_ = 1.0f;   // POV-Ray resets the ticket's quality for every ray; deeper queries lower it
     params.importance_queried = static_cast<float>(i) / static_cast<float>(n - 1);
+    const unsigned long writes = importance_writes_;
     const SampleRayResult r = tracer.trace_sample(q.point, d, params);
-    if (r.kept) {
-      const double quality = static_cast<double>(quality_) * importance_compensation(r.importance, n);
+    // The ticket's importance after the ray: its own, or the last one a sample ray below it found (importance_found).
+    const float found = importance_writes_ != writes ? found_importance_ : r.importance;
+    if (r.kept && !(found < params.importance_queried)) {
+      const double quality = static_cast<double>(quality_) * importance_compensation(found, n);
       quality_sum += quality;
       colour_sum += clamp_to_max_sample(r.colour, s.max_sample) * quality;
     }

@@ -77,6 +77,14 @@ class Gatherer {
   // Goes on to radiosity pass `pass` keeping the samples and the direction cursors (POV-Ray's one-thread order,
   // where one evaluator runs the whole pretrace).
   void set_pass(int pass);
+  // The importance a sample ray found at its first hit (or the default for a miss), as the tracer finds it, before
+  // the hit is shaded. POV-Ray keeps it in the ray's ticket, which the sample rays of any gather made while shading
+  // that hit overwrite: a ray is then kept and compensated by the importance the last of those found (radiosity.cpp
+  // GatherLight reads the ticket after TraceRay). Reproduced, since it changes images with importance < 1.
+  void importance_found(float importance) {
+    found_importance_ = importance;
+    ++importance_writes_;
+  }
   // Resets the depth-0 statistics only (POV-Ray's ResetTopLevelStats, before each adaptive sub-block).
   void reset_top_level_stats() {
     top_queries_ = 0;
@@ -124,6 +132,8 @@ class Gatherer {
   int tile_ = 0;
   int pass_ = 0;
   float quality_ = 1;                  // POV-Ray's ticket.radiosityQuality
+  float found_importance_ = 1;         // POV-Ray's ticket.radiosityImportanceFound (importance_found)
+  unsigned long importance_writes_ = 0;
   long top_queries_ = 0;
   float top_reuse_ = 0;                // single precision, as POV-Ray sums it
 };

@@ -188,4 +188,34 @@ TEST(Gatherer, NormalOnShootsAroundTheLayerNormalAboveTheSurface) {
   EXPECT_EQ(h.block_samples()[0].geometry.normal, raw);
 }
 
+TEST(Gatherer, AGatherBelowARayOverwritesTheImportanceItIsKeptBy) {
+  // POV-Ray keeps the importance a sample ray found in the ticket, which the sample rays of a gather made while
+  // shading its hit overwrite; GatherLight then keeps and compensates the ray by the last value written. Here every
+  // ray hits an object of importance 1 whose shading "gathers" with a last ray that finds 0.25: of 5 rays only
+  // i/4 ≤ 0.25 (i = 0, 1) are kept, each weighted 5/(⌊0.25·4⌋ + 1) = 2.5.
+  const RenderRadiosity rad = settings(5);
+  Gatherer g(rad, camera);
+  g.begin_block(0, final_pass_id);
+  struct Nested final : SampleTracer {
+    Gatherer* g = nullptr;
+    int i = 0;
+    SampleRayResult trace_sample(Vec3, Vec3, const SampleRayParams& p) override {
+      g->importance_found(1.0f);    // the ray's own hit, before shading
+      g->importance_found(0.25f);   // the last sample ray of a gather below it
+      SampleRayResult r;
+      r.colour = Vec3{1, 1, 1} * static_cast<double>(i++);
+      r.depth = 1;
+      r.importance = 1.0f;
+      r.kept = !(r.importance < p.importance_queried);
+      return r;
+    }
+  } t;
+  t.g = &g;
+  const Vec3 a = g.ambient(at_origin(), t);
+  EXPECT_EQ(t.i, 5);
+  EXPECT_NEAR(a.x, 0.5, 1e-12);   // rays 0 and 1 only; the plain rule would keep all five (mean 2)
+  ASSERT_EQ(g.block_samples().size(), 1u);
+  EXPECT_NEAR(g.block_samples()[0].geometry.quality, 2 * 2.5 / 5, 1e-6);   // Σ quality / n
+}
+
 }  // namespace
