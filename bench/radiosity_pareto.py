@@ -180,14 +180,21 @@ def render(args, renderer, scene_path, library, image, work):
     return {"ok": ok, "render_s": render_s, "pretrace_s": pretrace_s, "wall_s": result["wall_s"], "error": error}
 
 
-def reference(args, renderer, name, source, work, notes):
-    """Display values of `renderer`'s converged reference of a scene, rendered once and cached in
-    --results/references. Returns (values or None, cache dict)."""
-    setting = {"count": args.ref_count, "error_bound": args.ref_error_bound,
+def reference_setting(args, source, check=False):
+    """The reference's radiosity items; check: the convergence check's (half the count, 1.5 x the error_bound)."""
+    setting = {"count": args.ref_count / 2 if check else args.ref_count,
+               "error_bound": args.ref_error_bound * 1.5 if check else args.ref_error_bound,
                "pretrace_end": args.ref_pretrace_end, "nearest_count": args.ref_nearest_count}
     start = pretrace_start_of(source)
     if start is not None and setting["pretrace_end"] > start:
         setting["pretrace_end"] = start
+    return setting
+
+
+def reference(args, renderer, name, source, work, check=False):
+    """Display values of `renderer`'s converged reference of a scene (check: the convergence check), rendered once and
+    cached in --results/references. Returns (values or None, dict of render_s, settings, date, ... or error)."""
+    setting = reference_setting(args, source, check)
     key = f"{name}_{args.width}x{args.height}_" + setting_label(setting).replace(" ", "")
     if renderer == "povray":
         key += f"_povray_wt{args.threads}"
@@ -196,18 +203,19 @@ def reference(args, renderer, name, source, work, notes):
     folder = os.path.join(args.results, "references")
     os.makedirs(folder, exist_ok=True)
     image, meta_path = os.path.join(folder, key + ".ppm"), os.path.join(folder, key + ".json")
-    meta = None
+    what = f"{renderer} reference" + (" check" if check else "")
     if os.path.exists(image) and os.path.exists(meta_path) and not args.refresh_references:
         with open(meta_path) as f:
             meta = json.load(f)
-        print(f"{name}: {renderer} reference from the cache ({os.path.relpath(image, REPO)})", flush=True)
+        print(f"{name}: {what} from the cache ({os.path.relpath(image, args.results)})", flush=True)
     else:
-        print(f"{name}: {renderer} reference ({setting_items(setting)})", flush=True)
+        print(f"{name}: {what} ({setting_items(setting)})", flush=True)
         path = write_scene_copy(source, setting, work, f"{name}_reference_{renderer}")
-        r = render(args, renderer, path, os.path.dirname(source), image + ".tmp.ppm", work)
+        temporary = os.path.join(work, key + ".ppm")
+        r = render(args, renderer, path, os.path.dirname(source), temporary, work)
         if not r["ok"]:
             return None, {"error": r["error"]}
-        os.replace(image + ".tmp.ppm", image)
+        shutil.move(temporary, image)
         meta = {"render_s": r["render_s"], "settings": setting_items(setting), "date": now_text(),
                 "renderer": renderer, "binary": args.povtrace if renderer != "povray" else povray_version(args.povray)}
         with open(meta_path, "w") as f:
@@ -219,6 +227,27 @@ def reference(args, renderer, name, source, work, notes):
     return values, meta
 
 
+def reference_notes(args, name, source, work):
+    """(POV-Ray's reference values or None, notes): the reference, povtrace's reference and the check."""
+    notes = {"scene": name, "source": source}
+    ref, meta = reference(args, "povray", name, source, work)
+    notes["reference_povray"] = meta
+    if ref is None:
+        notes["error"] = f"POV-Ray's reference failed: {meta['error']}"
+        return None, notes
+    if args.povtrace_reference:
+        pt_ref, meta = reference(args, "povtrace", name, source, work)
+        notes["reference_povtrace"] = meta
+        if pt_ref is not None:
+            notes["references_rmse"] = rmse(pt_ref, ref)
+    if args.ref_check:
+        check, meta = reference(args, "povray", name, source, work, check=True)
+        notes["reference_check"] = meta
+        if check is not None:
+            notes["reference_check_rmse"] = rmse(check, ref)
+    return ref, notes
+
+
 def sweep(args):
     keys = ("count", "error_bound", "pretrace_end", "nearest_count")
     lists = [args.counts, args.error_bounds, args.pretrace_ends or [None], args.nearest_counts or [None]]
@@ -227,20 +256,11 @@ def sweep(args):
 
 def measure_scene(args, name, work):
     source = os.path.join(args.scene_root, SCENES[name])
-    notes = {"scene": name, "source": source}
     if not os.path.exists(source):
-        notes["error"] = f"{source} not found"
-        return [], notes
-    ref, meta = reference(args, "povray", name, source, work, notes)
-    notes["reference_povray"] = meta
+        return [], {"scene": name, "error": f"{source} not found"}
+    ref, notes = reference_notes(args, name, source, work)
     if ref is None:
-        notes["error"] = f"POV-Ray's reference failed: {meta['error']}"
         return [], notes
-    if args.povtrace_reference:
-        pt_ref, meta = reference(args, "povtrace", name, source, work, notes)
-        notes["reference_povtrace"] = meta
-        if pt_ref is not None:
-            notes["references_rmse"] = rmse(pt_ref, ref)
     renderers = ["povtrace", "povray"] + (["povtrace-povray-order"] if args.povray_order else [])
     rows = []
     for k, setting in enumerate(sweep(args)):
@@ -377,6 +397,16 @@ def write_markdown(path, rows, notes, header, args, plot, plot_note):
                               f"RMSE {fmt(n.get('references_rmse'), 5)} (PSNR "
                               f"{fmt(psnr(n['references_rmse']) if n.get('references_rmse') is not None else None, 2)}"
                               " dB): errors near or below this are not resolved")
+            chk = n.get("reference_check")
+            if chk is None:
+                checks.append("no convergence check (--no-ref-check)")
+            elif chk.get("error"):
+                checks.append(f"the convergence check failed: {chk['error']}")
+            else:
+                e = n.get("reference_check_rmse")
+                checks.append(f"convergence check: POV-Ray at {chk.get('settings')} ({fmt(chk.get('render_s'))} s) "
+                              f"is RMSE {fmt(e, 5)} (PSNR {fmt(psnr(e) if e is not None else None, 2)} dB) from "
+                              "the reference: the reference's own error is presumably below that")
             f.write("Reference: " + "; ".join(checks) + ".\n\n")
             lines, verdict = scene_summary(name, rows)
             verdicts.append((name, verdict))
@@ -432,11 +462,26 @@ def write_plot(rows, notes, args, work):
                 f.writelines(f"{r['render_s_min']:.6g} {r['psnr_db']:.6g}\n" for r in front)
             curves.append(f"{gnuplot_string(path)} using 1:2 with steps lw 2 lc rgb '{colours[renderer]}' "
                           f"title {gnuplot_string(NAMES[renderer] + ' Pareto front')}")
-        if n.get("references_rmse"):
-            curves.append(f"{psnr(n['references_rmse']):.6g} with lines dt 2 lc rgb '#777777' "
-                          "title 'povtrace reference vs POV-Ray reference'")
+        values = [r["psnr_db"] for r in rows if r["scene"] == name and r["psnr_db"] is not None
+                  and math.isfinite(r["psnr_db"])]
+        if not values:
+            continue
+        low, high = min(values) - 1, max(values) + 2
+        top = high
+        for key, colour, dash, title in (("references_rmse", "#777777", 2, "povtrace reference vs POV-Ray reference"),
+                                         ("reference_check_rmse", "#222222", 4,
+                                          "convergence check vs POV-Ray reference")):
+            if not n.get(key):
+                continue
+            level = psnr(n[key])
+            if level <= high + 12:     # a line far above the points would squash them: named in the key instead
+                top = max(top, level + 1)
+                curves.append(f"{level:.6g} with lines dt {dash} lc rgb '{colour}' title {gnuplot_string(title)}")
+            else:
+                curves.append(f"NaN with lines dt {dash} lc rgb '{colour}' "
+                              f"title {gnuplot_string(f'{title}: {level:.1f} dB (above the plot)')}")
         if curves:
-            panels.append((name, curves))
+            panels.append((name, curves, low, top))
     if not panels:
         return None, "no measured points to plot"
     cols = 2 if len(panels) > 1 else 1
@@ -447,12 +492,11 @@ def write_plot(rows, notes, args, work):
     out = [f"set terminal pngcairo size {760 * cols},{560 * layout_rows + 40}", f"set output '{png}'",
            "set termoption noenhanced", "set logscale x", "set grid", "set key bottom right font ',7'",
            "set xlabel 'render time, s (log; POV-Ray Radiosity + Trace Time, povtrace render_s)'",
-           "set ylabel 'PSNR against POV-Ray reference, dB'", "set offsets graph 0.03, graph 0.03, graph 0.05, "
-           "graph 0.05",
+           "set ylabel 'PSNR against POV-Ray reference, dB'", "set offsets graph 0.03, graph 0.03, 0, 0",
            f"set multiplot layout {layout_rows},{cols} title "
            f"{gnuplot_string('Radiosity: render time against error' + chr(10) + subtitle)}"]
-    for name, curves in panels:
-        out += [f"set title {gnuplot_string(name)}", "plot " + ", ".join(curves)]
+    for name, curves, low, top in panels:
+        out += [f"set title {gnuplot_string(name)}", f"set yrange [{low:.3f}:{top:.3f}]", "plot " + ", ".join(curves)]
     out.append("unset multiplot")
     script = os.path.join(work, "radiosity_pareto.gp")
     with open(script, "w") as f:
@@ -483,6 +527,11 @@ def parse_args(argv=None):
     ap.add_argument("--ref-nearest-count", type=float, default=20)
     ap.add_argument("--no-povtrace-reference", dest="povtrace_reference", action="store_false",
                     help="skip povtrace's reference (the distance between the renderers at convergence)")
+    ap.add_argument("--no-ref-check", dest="ref_check", action="store_false",
+                    help="skip the convergence check (POV-Ray at half the reference count and 1.5 x its error_bound)")
+    ap.add_argument("--references-only", action="store_true",
+                    help="only make (or load) the references and the checks, put them into the run JSON of "
+                         "--results and write the summary again from the CSV")
     ap.add_argument("--refresh-references", action="store_true", help="render the references even when cached")
     ap.add_argument("--povray-order", action="store_true",
                     help="also povtrace --radiosity-povray-order (+WT1) as a third series")
@@ -552,10 +601,41 @@ def resummarize(args):
     return 0 if rows else 1
 
 
+def references_only(args):
+    """Makes (or loads) the references and checks of --scenes and puts them into the run JSON's notes; then
+    writes the summary again when the CSV exists."""
+    run_json = os.path.join(args.results, "radiosity_pareto_run.json")
+    saved = None
+    if os.path.exists(run_json):
+        with open(run_json) as f:
+            saved = json.load(f)
+        for key in ("width", "height", "threads", "ref_count", "ref_error_bound", "ref_pretrace_end",
+                    "ref_nearest_count"):
+            if key in saved["run"] and saved["run"][key] != getattr(args, key):
+                print(f"{key} is {saved['run'][key]} in {run_json}: used instead of {getattr(args, key)}")
+                setattr(args, key, saved["run"][key])
+    os.makedirs(args.results, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="povtrace-radpareto-") as work:
+        fresh = {}
+        for name in args.scenes:
+            source = os.path.join(args.scene_root, SCENES[name])
+            fresh[name] = reference_notes(args, name, source, work)[1]
+            print(json.dumps(fresh[name], indent=1))
+    if saved is None:
+        return 0
+    notes = [dict(n, **fresh[n["scene"]]) if n["scene"] in fresh else n for n in saved["notes"]]
+    saved["notes"] = notes
+    with open(run_json, "w") as f:
+        json.dump(saved, f, indent=1)
+    return resummarize(args)
+
+
 def main(argv=None):
     args = parse_args(argv)
     if args.resummarize:
         return resummarize(args)
+    if args.references_only:
+        return references_only(args)
     work = os.path.abspath(args.keep) if args.keep else tempfile.mkdtemp(prefix="povtrace-radpareto-")
     os.makedirs(work, exist_ok=True)
     os.makedirs(args.results, exist_ok=True)
