@@ -355,8 +355,10 @@ def scene_summary(name, rows):
                      f"{fmt(p['render_s_min'])} | {fmt(p['psnr_db'], 2)} | {fmt(ratio, 2)} |")
     ratios = [r for r in ratios if r is not None]
     if ratios:
-        lines += ["", f"Speed at equal or lower error: {min(ratios):.2f}–{max(ratios):.2f} over the "
-                  f"{len(ratios)} matched POV-Ray front points ({len(pr_front) - len(ratios)} unmatched)."]
+        speed = (f"speed at equal or lower error {min(ratios):.2f}–{max(ratios):.2f} over the {len(ratios)} matched "
+                 f"POV-Ray front points ({len(pr_front) - len(ratios)} unmatched)")
+        lines += ["", speed[0].upper() + speed[1:] + "."]
+        verdict += f"; {speed}"
     lines += ["", "Pareto fronts:", "", "| renderer | setting | render s (min) | PSNR dB | RMSE |", "|---|---|---:|---:|---:|"]
     for renderer in RENDERERS:
         for r in points(renderer, True):
