@@ -469,7 +469,9 @@ def write_plot(rows, notes, args, work):
                   and math.isfinite(r["psnr_db"])]
         if not values:
             continue
+        times = [r["render_s_min"] for r in rows if r["scene"] == name and r["render_s_min"]]
         low, high = min(values) - 1, max(values) + 2
+        left, right = min(times) / 1.4, max(times) * 1.4
         top = high
         for key, colour, dash, title in (("references_rmse", "#777777", 2, "povtrace reference vs POV-Ray reference"),
                                          ("reference_check_rmse", "#222222", 4,
@@ -484,7 +486,7 @@ def write_plot(rows, notes, args, work):
                 curves.append(f"NaN with lines dt {dash} lc rgb '{colour}' "
                               f"title {gnuplot_string(f'{title}: {level:.1f} dB (above the plot)')}")
         if curves:
-            panels.append((name, curves, low, top))
+            panels.append((name, curves, low, top, left, right))
     if not panels:
         return None, "no measured points to plot"
     cols = 2 if len(panels) > 1 else 1
@@ -493,13 +495,14 @@ def write_plot(rows, notes, args, work):
                f"points along a dotted line: count {' '.join(f'{c:g}' for c in args.counts)}" + \
                (f" — {args.label}" if args.label else "")
     out = [f"set terminal pngcairo size {760 * cols},{560 * layout_rows + 40}", f"set output '{png}'",
-           "set termoption noenhanced", "set logscale x", "set grid", "set key bottom right font ',7'",
+           "set termoption noenhanced", "set logscale x", "set grid", "set key top left opaque font ',7'",
            "set xlabel 'render time, s (log; POV-Ray Radiosity + Trace Time, povtrace render_s)'",
            "set ylabel 'PSNR against POV-Ray reference, dB'", "set offsets graph 0.03, graph 0.03, 0, 0",
            f"set multiplot layout {layout_rows},{cols} title "
            f"{gnuplot_string('Radiosity: render time against error' + chr(10) + subtitle)}"]
-    for name, curves, low, top in panels:
-        out += [f"set title {gnuplot_string(name)}", f"set yrange [{low:.3f}:{top:.3f}]", "plot " + ", ".join(curves)]
+    for name, curves, low, top, left, right in panels:
+        out += [f"set title {gnuplot_string(name)}", f"set yrange [{low:.3f}:{top:.3f}]",
+                f"set xrange [{left:.6g}:{right:.6g}]", "plot " + ", ".join(curves)]
     out.append("unset multiplot")
     script = os.path.join(work, "radiosity_pareto.gp")
     with open(script, "w") as f:
