@@ -1,5 +1,5 @@
 """Unit tests of the benchmark scripts (bench/): scene generators and their .scn twins, PPM reading, the ground
-truth's box filter, Pareto fronts, and the bench's summary of failed runs. No renderer is run; fast."""
+truth's box filter, Pareto fronts, the radiosity bench's settings injection and summary, and the bench's summary of failed runs. No renderer is run; fast."""
 import array
 import math
 import os
@@ -14,6 +14,7 @@ sys.path.insert(0, BENCH)
 import bench_scenes  # noqa: E402
 import bench_tools  # noqa: E402
 import pareto  # noqa: E402
+import radiosity_pareto  # noqa: E402
 import run_bench  # noqa: E402
 import specialisation_gain  # noqa: E402
 
@@ -227,6 +228,53 @@ class ParetoTests(unittest.TestCase):
         self.assertEqual(pareto.aa_switches((0, 0.0, 0)), ["-A"])
         self.assertEqual(pareto.aa_switches((2, 0.05, 4)), ["+AM2", "+A0.05", "+R4", "-J"])
         self.assertEqual(pareto.aa_switches((1, 0, 3)), ["+AM1", "+A0.0", "+R3", "-J"])   # POV-Ray rejects +A0
+
+
+class RadiosityParetoTests(unittest.TestCase):
+    POV_STATS = ("Render Time:\n  Photon Time:      No photons\n"
+                 "  Radiosity Time:   0 hours  0 minutes  6 seconds (6.315 seconds)\n"
+                 "  Trace Time:       0 hours  0 minutes  0 seconds (0.317 seconds)\n")
+
+    def test_povray_times_are_pretrace_and_final_pass(self):
+        self.assertEqual(radiosity_pareto.povray_render_times(self.POV_STATS), (6.315, 0.317))
+        self.assertEqual(radiosity_pareto.povray_render_times("  Radiosity Time:   No radiosity\n"), (None, None))
+
+    def test_override_is_appended_and_names_only_the_set_items(self):
+        setting = {"count": 20.0, "error_bound": 1.8, "pretrace_end": None, "nearest_count": None}
+        with tempfile.TemporaryDirectory() as d:
+            src = os.path.join(d, "s.pov")
+            with open(src, "w") as f:
+                f.write("global_settings { radiosity { pretrace_start 0.04 // pretrace_start 9\n count 200 } }\n")
+            path = radiosity_pareto.write_scene_copy(src, setting, d, "copy")
+            with open(path) as f:
+                text = f.read()
+            self.assertTrue(text.startswith("global_settings { radiosity { pretrace_start 0.04"))
+            self.assertTrue(text.endswith("global_settings { radiosity { count 20 error_bound 1.8 } }\n"))
+            self.assertEqual(radiosity_pareto.pretrace_start_of(src), 0.04)   # the comment is not read
+        self.assertEqual(radiosity_pareto.setting_label(dict(setting, nearest_count=20.0)), "count 20 eb 1.8 nc 20")
+
+    def test_sweep_is_the_product_of_the_lists(self):
+        args = radiosity_pareto.parse_args(["--counts", "20", "50", "--error-bounds", "1", "--nearest-counts", "5",
+                                            "10"])
+        self.assertEqual(len(radiosity_pareto.sweep(args)), 4)
+        self.assertTrue(all(s["pretrace_end"] is None for s in radiosity_pareto.sweep(args)))
+
+    def test_summary_matches_each_povray_front_point(self):
+        rows = []
+        for tool, pts in (("povtrace", [(0.5, 0.5), (1.0, 0.2), (0.7, 0.6)]),
+                          ("povray", [(1.0, 0.5), (2.0, 0.2), (3.0, 0.1)])):
+            for t, e in pts:
+                rows.append({"scene": "s", "renderer": tool, "render_s_min": t, "rmse": e,
+                             "psnr_db": pareto.psnr(e), "setting": f"{tool} {t}"})
+        radiosity_pareto.mark_fronts(rows)
+        self.assertEqual([r["on_front"] for r in rows], [True, True, False, True, True, True])
+        lines, verdict = radiosity_pareto.scene_summary("s", rows)
+        text = "\n".join(lines)
+        self.assertTrue(verdict.startswith("neither front dominates the other; speed at equal or lower error 2.00–2.00"))
+        self.assertIn("| povray 1.0 | 1.000 | 6.02 | povtrace 0.5 | 0.500 | 6.02 | 2.00 |", text)
+        self.assertIn("| povray 3.0 | 3.000 | 20.00 | none as accurate |", text)
+        self.assertIn("Speed at equal or lower error 2.00–2.00 over the 2 matched POV-Ray front points (1 unmatched)",
+                      text)
 
 
 if __name__ == "__main__":
