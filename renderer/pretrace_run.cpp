@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -28,7 +27,6 @@ void pretrace_block(Tracer& tracer, const RenderScene& scene, const RenderSettin
   const int split_y = radiosity::pretrace_split(rect.height(), next_size, state.sub_count_y, coverage);
   radiosity::PretraceJitter jitter;
   jitter.seed(pass_id, serial);
-  tracer.forget_shadow_cache();
   const std::size_t subs = state.incomplete.size();
   for (std::size_t i = 0; i < subs; ++i) {
     gatherer.reset_top_level_stats();

@@ -55,8 +55,8 @@ class BlockRenderer {
 
   // `serial`: the block's number in the frame's row-major grid (its radiosity tile id).
   void render_block(int serial, int x0, int y0, int w, int h) {
-    if (s_.radiosity_povray_order && tracer_.gatherer()) tracer_.forget_shadow_cache();
-    else tracer_.begin_block(serial);   // final-pass samples stay the block's own
+    // POV-Ray's one-thread order: one Trace object for the whole final pass, so its shadow cache runs on too.
+    if (!(s_.radiosity_povray_order && tracer_.gatherer())) tracer_.begin_block(serial);   // final-pass samples stay the block's own
     if (!s_.antialias) plain(x0, y0, w, h);
     else if (s_.sampling_method == 2) recursive(x0, y0, w, h);
     else adaptive(x0, y0, w, h);
