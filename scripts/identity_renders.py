@@ -21,8 +21,10 @@ import hashlib
 import json
 import os
 import shlex
+import shutil
 import subprocess
 import sys
+import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SAMPLES = "/usr/share/doc/povray/examples"
@@ -36,16 +38,16 @@ def scene_switches(scene):
     return []
 
 
-def jobs():
-    """(key, command, working directory) for every scene to render."""
+def jobs(scenes_dir, samples_dir):
+    """(key, command, working directory) for every scene to render, run from the given copies of scenes/ and of the
+    sample scenes (some scenes #write files next to themselves: never into the sources or the installed samples)."""
     out = []
     for ref in sorted(glob.glob(os.path.join(ROOT, "reference", "*.exr"))):
         name = os.path.splitext(os.path.basename(ref))[0]
-        scene = os.path.join(ROOT, "scenes", name + ".pov")
-        out.append(("scenes/" + name, ["-D", "-A", "+W320", "+H240"] + scene_switches(scene) + [scene],
-                    os.path.join(ROOT, "scenes")))
-    for scene in sorted(glob.glob(os.path.join(SAMPLES, "**", "*.pov"), recursive=True)):
-        rel = os.path.relpath(scene, SAMPLES)
+        scene = os.path.join(scenes_dir, name + ".pov")
+        out.append(("scenes/" + name, ["-D", "-A", "+W320", "+H240"] + scene_switches(scene) + [scene], scenes_dir))
+    for scene in sorted(glob.glob(os.path.join(samples_dir, "**", "*.pov"), recursive=True)):
+        rel = os.path.relpath(scene, samples_dir)
         out.append(("samples/" + rel[:-4], ["-D", "-A", "+W64", "+H48", os.path.basename(scene)],
                     os.path.dirname(scene)))
     return out
@@ -73,9 +75,13 @@ def render(a):
     os.makedirs(a.out, exist_ok=True)
     povtrace = os.path.abspath(a.povtrace)
     results = {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
-        for key, r in pool.map(lambda j: render_one(povtrace, a.out, a.timeout, j), jobs()):
-            results[key] = r
+    with tempfile.TemporaryDirectory() as tmp:
+        scenes_dir, samples_dir = os.path.join(tmp, "scenes"), os.path.join(tmp, "samples")
+        shutil.copytree(os.path.join(ROOT, "scenes"), scenes_dir)
+        shutil.copytree(SAMPLES, samples_dir)
+        with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
+            for key, r in pool.map(lambda j: render_one(povtrace, a.out, a.timeout, j), jobs(scenes_dir, samples_dir)):
+                results[key] = r
     with open(os.path.join(a.out, "renders.json"), "w") as f:
         json.dump(results, f, indent=1, sort_keys=True)
     rendered = sum(1 for r in results.values() if r["sha256"])
