@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <thread>
 #include <vector>
 
@@ -37,6 +38,13 @@ std::pair<double, double> jitter2d(double x, double y) {
   const double jx = static_cast<double>(h & 0xFFFFFF) / 16777215.0 - 0.5;
   const double jy = static_cast<double>((h >> 24) & 0xFFFFFF) / 16777215.0 - 0.5;
   return {jx, jy};
+}
+
+// A linear value into the single-precision framebuffer: beyond float's range it saturates at the largest float
+// instead of becoming infinite (a pigment of rgb 1e59 is legal SDL; its pixels stay finite, and PNG clips them).
+float to_pixel(double v) {
+  constexpr double top = std::numeric_limits<float>::max();
+  return static_cast<float>(std::clamp(v, -top, top));
 }
 
 class BlockRenderer {
@@ -87,9 +95,9 @@ class BlockRenderer {
     if (s_.region && !s_.region->contains(x, y)) return;   // computed for its block's sake only
     float* p = out_.pixel(x - ox_, y - oy_);
     const double alpha = s_.output_alpha ? 1.0 - s.transmit : 1.0;
-    p[0] = static_cast<float>(working_to_linear(scene_, s.colour.x));
-    p[1] = static_cast<float>(working_to_linear(scene_, s.colour.y));
-    p[2] = static_cast<float>(working_to_linear(scene_, s.colour.z));
+    p[0] = to_pixel(working_to_linear(scene_, s.colour.x));
+    p[1] = to_pixel(working_to_linear(scene_, s.colour.y));
+    p[2] = to_pixel(working_to_linear(scene_, s.colour.z));
     p[3] = static_cast<float>(alpha);
   }
 
