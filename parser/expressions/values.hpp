@@ -2,6 +2,8 @@
 // typed by what was last stored in them; the interpreter branches on that type.
 #pragma once
 
+#include <limits>
+
 #include <array>
 #include <memory>
 #include <optional>
@@ -28,12 +30,18 @@ struct Numeric {
   }
   Vec3 as_vec3() const { return {v[0], v[1], v[2]}; }
   // POV-Ray stores colours in single precision (a declared rgb 0.1 reads back as 0.100000001490) while floats
-  // and vectors stay double: colour values are rounded to float wherever they are stored.
+  // and vectors stay double: colour values are rounded to float wherever they are stored. Beyond float's range
+  // they saturate at the largest float: POV-Ray's become infinite, and shading then makes NaN pixels of them
+  // (ambient 0 times infinity; found by the render fuzzer with rgb 1e59).
   Numeric stored() const {
     if (!colour) return *this;
     Numeric n = *this;
-    for (double& c : n.v) c = static_cast<float>(c);
+    for (double& c : n.v) c = single_saturating(c);
     return n;
+  }
+  static double single_saturating(double c) {
+    constexpr double top = std::numeric_limits<float>::max();
+    return static_cast<float>(c < -top ? -top : (c > top ? top : c));
   }
   Colour as_colour() const { return {v[0], v[1], v[2], v[3], v[4]}; }
 };
