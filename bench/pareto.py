@@ -303,6 +303,20 @@ def scene_summary(name, rows):
     return lines, verdict
 
 
+def write_markdown_tail(f, verdicts, plot, plot_note, rows):
+    """The end of a summary: the verdict per scene, the plot and the failed runs (also radiosity_pareto.py's)."""
+    if verdicts:
+        f.write("## Verdict\n\n" + "\n".join(f"- {name}: {v or 'no verdict'}" for name, v in verdicts) + "\n\n")
+    if plot:
+        f.write(f"![{plot}]({plot})\n\n")
+    if plot_note:
+        f.write(f"Plot: {plot_note}\n\n")
+    failures = [r for r in rows if r["error"]]
+    if failures:
+        f.write("## Failures\n\n" + "\n".join(f"- {r['scene']} {r['renderer']} {r['setting']}: {r['error']}"
+                                             for r in failures) + "\n")
+
+
 def write_markdown(path, rows, notes, header, args, plot, plot_note):
     with open(path, "w") as f:
         f.write("# Antialiasing: render time against error" + (f" ({args.label})" if args.label else "") + "\n\n")
@@ -334,16 +348,7 @@ def write_markdown(path, rows, notes, header, args, plot, plot_note):
             lines, verdict = scene_summary(name, rows)
             verdicts.append((name, verdict))
             f.write("\n".join(lines) + "\n\n")
-        if verdicts:
-            f.write("## Verdict\n\n" + "\n".join(f"- {name}: {v or 'no verdict'}" for name, v in verdicts) + "\n\n")
-        if plot:
-            f.write(f"![{plot}]({plot})\n\n")
-        if plot_note:
-            f.write(f"Plot: {plot_note}\n\n")
-        failures = [r for r in rows if r["error"]]
-        if failures:
-            f.write("## Failures\n\n" + "\n".join(f"- {r['scene']} {r['renderer']} {r['setting']}: {r['error']}"
-                                                 for r in failures) + "\n")
+        write_markdown_tail(f, verdicts, plot, plot_note, rows)
 
 
 def write_plot(rows, scenes, args, work):

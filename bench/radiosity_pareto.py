@@ -68,7 +68,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_tools import (REPO, cpu_name, ensure_gnuplot, gnuplot_string, load_average, now_text,  # noqa: E402
                          povray_version, repo_commit, run_gnuplot, run_measured, tail)
 from pareto import (ERROR_TOLERANCE, as_accurate, display_values, fmt, front_coverage, pareto_front,  # noqa: E402
-                    psnr, rmse)
+                    psnr, rmse, write_markdown_tail)
 
 SCENE_ROOT = "/usr/share/povray-3.7/scenes"
 SCENES = {
@@ -431,16 +431,7 @@ def write_markdown(path, rows, notes, header, args, plot, plot_note):
             lines, verdict = scene_summary(name, rows)
             verdicts.append((name, verdict))
             f.write("\n".join(lines) + "\n\n")
-        if verdicts:
-            f.write("## Verdict\n\n" + "\n".join(f"- {name}: {v or 'no verdict'}" for name, v in verdicts) + "\n\n")
-        if plot:
-            f.write(f"![{plot}]({plot})\n\n")
-        if plot_note:
-            f.write(f"Plot: {plot_note}\n\n")
-        failures = [r for r in rows if r["error"]]
-        if failures:
-            f.write("## Failures\n\n" + "\n".join(f"- {r['scene']} {r['renderer']} {r['setting']}: {r['error']}"
-                                                 for r in failures) + "\n")
+        write_markdown_tail(f, verdicts, plot, plot_note, rows)
 
 
 def write_plot(rows, notes, args, work):
