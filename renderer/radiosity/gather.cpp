@@ -80,7 +80,7 @@ Vec3 Gatherer::ambient(const AmbientQuery& q, SampleTracer& tracer) {
   const Vec3 normal = s.normal ? q.layer_normal : q.raw_normal;
   double e = error_bound_;
   if (q.weight < weak_ray_weight) e += weak_ray_weight - q.weight;
-  const Query query{q.point, normal, e * ds.error_bound_factor, q.depth, pass_, tile_, final_pass_};
+  const Query query{q.point, normal, e * ds.error_bound_factor, q.depth, final_pass_};
   Lookup found = lookup(query);
   double reuse = found.weight_sum;
   if (q.depth == 0) {

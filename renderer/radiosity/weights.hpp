@@ -31,8 +31,6 @@ struct Query {
   Vec3 normal;          // unit
   double error_bound = 0;
   int depth = 0;
-  int pass = 0;
-  int tile = 0;
   bool final_pass = false;   // the final render, not a pretrace pass
 };
 
