@@ -16,9 +16,12 @@
 
 namespace povtrace::render {
 
+struct MediaSet;   // renderer/media/render_media.hpp
+
 struct InteriorRef {
   std::uint32_t object = 0;             // top-level scene object
   const Interior* interior = nullptr;   // its values (owned by the render scene's materials)
+  const MediaSet* media = nullptr;      // its media ready for sampling, if it has any
 };
 
 inline bool same_interior(const InteriorRef& a, const InteriorRef& b) {
@@ -27,7 +30,7 @@ inline bool same_interior(const InteriorRef& a, const InteriorRef& b) {
   const Interior& x = *a.interior;
   const Interior& y = *b.interior;
   return x.ior == y.ior && x.fade_distance == y.fade_distance && x.fade_power == y.fade_power &&
-         x.fade_colour == y.fade_colour && x.refraction == y.refraction && x.hollow == y.hollow;
+         x.fade_colour == y.fade_colour && x.refraction == y.refraction && x.hollow == y.hollow && x.media == y.media;
 }
 
 class InteriorList {
@@ -53,6 +56,12 @@ class InteriorList {
   const InteriorRef& back() const { return entries_[count_ - 1]; }
   bool contains(const InteriorRef& r) const { return find(r) >= 0; }
   // True when every interior the ray is in is hollow (or it is in none): POV-Ray's "hollow ray", which fog reaches.
+  bool any_media() const {
+    for (int i = 0; i < count_; ++i)
+      if (entries_[i].media) return true;
+    return false;
+  }
+  const InteriorRef& operator[](int i) const { return entries_[i]; }
   bool all_hollow() const {
     for (int i = 0; i < count_; ++i)
       if (!entries_[i].interior->hollow) return false;

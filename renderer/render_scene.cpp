@@ -9,10 +9,12 @@
 #include "renderer/shapes/triangle_shapes.hpp"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "renderer/pattern/normal_perturbation.hpp"
+#include "renderer/media/render_media.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/pattern/render_texture.hpp"
 
@@ -130,7 +132,7 @@ std::vector<InteriorRef> RenderScene::containing_interiors(Vec3 point) const {
   std::vector<InteriorRef> out;
   accelerator.for_each_containing(point, [&](std::uint32_t i) {
     const Primitive& p = accelerator.primitives()[i];
-    out.push_back(InteriorRef{p.object, &materials[p.material].interior});
+    out.push_back(InteriorRef{p.object, &materials[p.material].interior, materials[p.material].media.get()});
   });
   return out;
 }
@@ -158,6 +160,34 @@ void add_radiosity(RenderScene& r, const SceneDescription& scene) {
     r.warnings.push_back("radiosity: a direction pool below 1600 (count's second value) uses POV-Ray's fixed "
                          "table, which povtrace does not have; the Halton pool of that size is used instead");
   r.radiosity = std::move(rad);
+}
+}  // namespace
+
+namespace {
+// The interiors' media and the atmosphere's, ready for sampling: materials with one media list share its sampling
+// form. Their densities use the scene's noise generator as pigments do.
+void add_media(RenderScene& r, const SceneDescription& scene, ImageCache& images, bool quick_colours, int generator) {
+  std::map<const std::vector<Media>*, std::shared_ptr<const MediaSet>> built;
+  const auto build = [&](const std::vector<Media>& media) {
+    auto set = std::make_shared<MediaSet>();
+    for (const Media& m : media) {
+      set->media.push_back(build_render_media(m, &images, quick_colours));
+      for (RenderPigment& d : set->media.back().densities) {
+        set_generator(d, generator == 1 ? NoiseGenerator::original : NoiseGenerator::range_corrected);
+        set_function_generator(d, generator);
+      }
+    }
+    return std::shared_ptr<const MediaSet>(std::move(set));
+  };
+  for (Material& m : r.materials) {
+    const auto& media = m.interior.media;
+    if (!media || media->empty()) continue;
+    auto& slot = built[media.get()];
+    if (!slot) slot = build(*media);
+    m.media = slot;
+    r.any_interior_media = true;
+  }
+  if (!scene.atmosphere.empty()) r.atmosphere = build(scene.atmosphere);
 }
 }  // namespace
 
@@ -198,6 +228,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
       r.any_shadow_fade = true;
   }
   use_noise_generator(r.materials, static_cast<NoiseGenerator>(generator));
+  add_media(r, scene, images, options.quick_colours, generator);
   r.specialisation = choose_specialisation(r, options.specialise);
   if (r.specialisation.embree_meshes)
     for (Primitive& p : primitives)

@@ -135,9 +135,12 @@ struct RenderTexture {
   bool patterned() const { return !children.empty(); }
 };
 
+struct MediaSet;   // renderer/media/render_media.hpp
+
 struct Material {
   RenderTexture texture;
   Interior interior;
+  std::shared_ptr<const MediaSet> media;   // the interior's media ready for sampling (none without media)
   bool opaque = true;                // blocks shadow rays outright (pipeline §3 "opaque" flag)
   bool uv_mapping = false;           // the object's uv_mapping: textures at the hit's <u, v, 0>
   bool needs_uv = false;             // uv coordinates are read somewhere (uv_mapping of any kind)
@@ -218,6 +221,8 @@ struct RenderScene {
   bool any_ray_flags = false;
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
   std::vector<Fog> fogs;             // as POV-Ray lists them (the last written first)
+  std::shared_ptr<const MediaSet> atmosphere;   // top-level media (none without)
+  bool any_interior_media = false;   // some interior has media: shadow rays track the interiors they cross
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;   // for turbulent fog
   std::vector<InteriorRef> camera_interiors;   // the interiors that contain the camera location
   std::vector<InteriorRef> containing_interiors(Vec3 point) const;

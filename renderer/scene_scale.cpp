@@ -12,8 +12,25 @@ namespace {
 // objects and its maximum distance (1e7) far beyond them; rescaled scenes land near the middle of it, in log terms.
 constexpr double kSmallest = 0.05, kLargest = 1e4, kTarget = 2;
 
+// Media coefficients are per unit length: lengths k times longer need coefficients k times smaller (their
+// densities already moved with the objects' transforms, or below for the atmosphere).
+void scale_media_coefficients(Media& m, double k) {
+  for (Colour* c : {&m.absorption, &m.emission, &m.scattering}) {
+    c->r /= k;
+    c->g /= k;
+    c->b /= k;
+  }
+}
+
 void scale_interiors(Object& o, double k) {
-  if (o.interior) o.interior->fade_distance *= k;
+  if (o.interior) {
+    o.interior->fade_distance *= k;
+    if (o.interior->media) {
+      auto media = std::make_shared<std::vector<Media>>(*o.interior->media);
+      for (Media& x : *media) scale_media_coefficients(x, k);
+      o.interior->media = std::move(media);
+    }
+  }
   if (auto* csg = std::get_if<Csg>(&o.shape))
     for (Object& child : csg->children) scale_interiors(child, k);
 }
@@ -93,6 +110,10 @@ SceneDescription scaled_scene(const SceneDescription& scene, double k) {
   c.direction = c.direction * k;
   c.up = c.up * k;
   c.right = c.right * k;
+  for (Media& a : s.atmosphere) {
+    for (Pigment& d : a.densities) transform_pattern(d, m);
+    scale_media_coefficients(a, k);
+  }
   for (Fog& f : s.fogs) {
     f.distance *= k;
     f.alt *= k;

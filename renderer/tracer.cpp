@@ -51,6 +51,7 @@ Quality Quality::at_level(int level) {
 
 Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
     : scene_(scene), model_(model), quality_(quality), fog_(quality.fog && !scene.fogs.empty()),
+      media_(quality.fog && (scene.atmosphere || scene.any_interior_media)),
       transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL),
       max_level_(scene.settings.max_trace_level), adc_bailout_(scene.settings.adc_bailout) {
   if (scene.radiosity) {
@@ -103,12 +104,16 @@ Radiance Tracer::trace_camera_ray(const Ray& ray, bool pretrace) {
 Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState& state) {
   if (level > max_level_ || weight < adc_bailout_) return {};
   const Hit hit = scene_.accelerator.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
-  const Radiance r =
+  Radiance r =
       hit.found() ? shade_hit(ray, hit.surface, level, weight, state) : background(ray.direction, state);
-  // Fog reaches rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away (hit.t).
-  // Radiosity sample rays see it only with radiosity's `media on`.
-  if (fog_ && state.interiors.all_hollow() && (state.radiosity_depth == 0 || sample_volume_))
-    return with_fog(ray, hit.t, r);
+  // Media and fog reach rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away
+  // (hit.t). Radiosity sample rays see them only with radiosity's `media on`.
+  const bool volume = state.interiors.all_hollow() && (state.radiosity_depth == 0 || sample_volume_);
+  if (media_ && volume) {
+    if (!fog_) return with_media(ray, hit.t, hit.found(), state, r);
+    r = with_media(ray, hit.t, hit.found(), state, r);
+  }
+  if (fog_ && volume) return with_fog(ray, hit.t, r);
   return r;
 }
 
@@ -150,7 +155,9 @@ radiosity::SampleRayResult Tracer::trace_sample(Vec3 origin, Vec3 direction, con
   state.alpha_background = false;
   state.radiosity_depth = p.depth;
   const Radiance r = hit.found() ? shade_hit(ray, hit.surface, p.level, p.weight, state) : background(direction, state);
-  out.colour = (fog_ && sample_volume_) ? with_fog(ray, hit.t, r).colour : r.colour;
+  Radiance seen = r;
+  if (media_ && sample_volume_) seen = with_media(ray, hit.t, hit.found(), state, seen);
+  out.colour = (fog_ && sample_volume_) ? with_fog(ray, hit.t, seen).colour : seen.colour;
   return out;
 }
 
@@ -195,7 +202,8 @@ Radiance Tracer::legacy_background(Vec3 p, const RayState& state) const {
 }
 
 InteriorRef Tracer::interior_of(const SurfaceHit& hit) const {
-  return InteriorRef{hit.leaf->object, &scene_.materials[hit.leaf->material].interior};
+  const Material& m = scene_.materials[hit.leaf->material];
+  return InteriorRef{hit.leaf->object, &m.interior, m.media.get()};
 }
 
 double Tracer::relative_ior(const InteriorRef& self, const RayState& state) const {
@@ -651,7 +659,8 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at)
 // with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE), except for the object in the shadow cache.
 Rgb Tracer::shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance,
                           const RayState& state) {
-  if (scene_.specialisation.no_shadow_rays) return {1, 1, 1};
+  if (scene_.specialisation.no_shadow_rays)
+    return shadow_atmosphere(l, Ray{point, to_light}, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
   ++counts_.shadow;
   return povray_shadow_walk(l, Ray{point, to_light}, distance, state);
 }
@@ -694,7 +703,8 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
     // The walk below starts at the nearest crossing and ends there when it is opaque (ties between primitives go
     // to the lower index in both).
     const Hit first = scene_.accelerator.closest_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow);
-    if (!first.found()) return {1, 1, 1};
+    if (!first.found())
+      return shadow_atmosphere(l, ray, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
     if (opaque_at(first.surface)) {
       cached = first.primitive;
       return {0, 0, 0};
@@ -713,7 +723,8 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
   });
   Rgb f{1, 1, 1};
   InteriorList in;
-  if (scene_.any_shadow_fade) in = state.interiors;
+  const bool track = scene_.any_shadow_fade || scene_.any_interior_media || scene_.atmosphere || fog_;
+  if (track) in = state.interiors;
   double previous = 0;
   for (const Crossing& c : crossings) {
     if (previous > 0 && c.hit.t - previous <= tolerance::shadow) continue;
@@ -721,8 +732,14 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
     }
-    f = mul(f, filter_through(c.hit, ray.origin + ray.direction * c.hit.t));
-    if (scene_.any_shadow_fade) {
+    Rgb through = filter_through(c.hit, ray.origin + ray.direction * c.hit.t);
+    // The media of the interiors crossed since the last surface dim the light the surface lets through (POV-Ray's
+    // ComputeShadowColour), as the atmosphere does for lights with media_attenuation (ComputeShadowMedia).
+    if (media_ && scene_.any_interior_media && in.any_media() && in.all_hollow() && !all_below(through, tolerance::epsilon))
+      through = mul(through, shadow_interior_media(ray, previous, c.hit.t, in));
+    f = mul(f, through);
+    f = shadow_atmosphere(l, ray, previous, c.hit.t, f, in.all_hollow(), true);
+    if (track) {
       const InteriorRef self = interior_of(c.hit);
       if (in.contains(self)) f = mul(f, shadow_fade(*self.interior, c.hit.t - previous));
       if (in.empty() || !in.remove(self)) in.append(self);
@@ -730,6 +747,8 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
     previous = c.hit.t;
     if (all_below(f, tolerance::epsilon)) break;
   }
+  if (distance - previous > tolerance::shadow)
+    f = shadow_atmosphere(l, ray, previous, distance, f, in.all_hollow(), false);
   return f;
 }
 

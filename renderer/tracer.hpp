@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/interior_list.hpp"
+#include "renderer/media/media_integrator.hpp"
 #include "renderer/radiosity/gather.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -59,7 +60,7 @@ struct Quality {
 
 // With radiosity (RenderScene::radiosity), the Tracer is also the SampleTracer its Gatherer shoots sample rays
 // through (renderer/radiosity/gather.hpp).
-class Tracer : private radiosity::SampleTracer {
+class Tracer : private radiosity::SampleTracer, private MediaLighting {
  public:
   Tracer(const RenderScene& scene, ShadingModel model, Quality quality = {});
 
@@ -188,12 +189,28 @@ class Tracer : private radiosity::SampleTracer {
   Radiance background(Vec3 direction, const RayState& state) const;
   // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
   Radiance with_fog(const Ray& ray, double depth, Radiance r) const;
+  // Media over `depth` along the ray (media.cpp): the media of the interiors it is in when it hit something, then
+  // the atmosphere's, as POV-Ray applies them (ComputeTextureColour, then TraceRay).
+  Radiance with_media(const Ray& ray, double depth, bool hit, const RayState& state, Radiance r);
+  MediaEffect media_effect(const MediaList& media, const MediaSegment& segment);
+  // The light a media sample receives (MediaLighting; POV-Ray's TestShadow from the sample point).
+  std::optional<Arrival> arrival(std::size_t index, Vec3 point) override;
+  // What the interiors' media between `from` and `to` along a shadow ray let through (media.cpp).
+  Rgb shadow_interior_media(const Ray& ray, double from, double to, const InteriorList& in);
+  // A shadow ray's stretch from `from` to `to` through the atmosphere's media and fog, for lights with
+  // media_attenuation (POV-Ray's ComputeShadowMedia); `hollow`: the shadow ray is outside non-hollow objects;
+  // `at_surface`: the stretch ends at a surface (POV-Ray applies the media there even inside non-hollow objects).
+  Rgb shadow_atmosphere(const RenderLight& l, const Ray& ray, double from, double to, Rgb f, bool hollow,
+                        bool at_surface);
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
 
   const RenderScene& scene_;
   ShadingModel model_;
   Quality quality_;
   bool fog_;   // the scene has fog and the quality level shows it
+  bool media_;  // the scene has media and the quality level shows them (POV-Ray's Q_VOLUME, +Q9)
+  const RayState* media_state_ = nullptr;   // the ray whose media are being sampled (their shadow rays start in its
+                                            // interiors)
   // A hit's transmitted ray is traced when the layers let through more than this: adc_bailout, or never below +Q6
   // (one comparison either way: the default path pays nothing for the quality level).
   double transmit_bailout_;

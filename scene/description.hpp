@@ -289,6 +289,31 @@ struct Texture {
   bool patterned() const { return pattern != nullptr; }
 };
 
+// media { … } (POV-Ray's Parse_Media, interior/media.cpp): absorption, emission and scattering per unit length,
+// scaled by the product of its densities, integrated along a ray segment by POV-Ray's sampling methods. The
+// defaults are #version 3.5+'s (method 3, 1 interval, 10 samples); older scenes get method 1, 10 intervals and
+// 1 sample, as in POV-Ray. Colours are single precision like POV-Ray's RGBColour.
+struct Media {
+  int method = 3;
+  int intervals = 1;
+  int min_samples = 10, max_samples = 10;
+  double confidence = 0.9;
+  double variance = 1.0 / 128.0;
+  double ratio = 0.9;
+  double jitter = 0.0;
+  double aa_threshold = 0.1;
+  int aa_level = 3;
+  Colour absorption, emission, scattering;   // rgb only
+  int scattering_type = 1;   // 1 isotropic, 2 Mie hazy, 3 Mie murky, 4 Rayleigh, 5 Henyey-Greenstein
+  double eccentricity = 0.0;
+  double extinction = 1.0;   // how much scattering takes out of the ray (POV-Ray's sc_ext)
+  bool collect = true;       // photons: `collect off` ignores them
+  // density { … } blocks in written order; the density at a point is the product of their colours. Each is a
+  // pigment whose maps are density maps (a density_map's entries are densities).
+  std::vector<Pigment> densities;
+  SourceLoc loc;
+};
+
 struct Interior {
   double ior = 1.0;
   double fade_distance = 0.0;
@@ -297,6 +322,9 @@ struct Interior {
   double refraction = 1.0;       // legacy `refraction`: scales the light seen through the object
   bool hollow = false;           // the object's `hollow` flag (POV-Ray keeps it on the interior): fog and media
                                  // reach rays inside hollow objects only
+  // media { } blocks in written order. Shared, so that the interiors CSG children inherit from their parent stay
+  // one interior (same_interior compares the pointer).
+  std::shared_ptr<const std::vector<Media>> media;
   Unsupported unsupported;
 };
 
@@ -510,6 +538,8 @@ struct Light {
   bool jitter = false;
   bool circular = false;
   bool orient = false;
+  bool media_interaction = true;    // the light scatters in media
+  bool media_attenuation = false;   // media (and fog) between it and a point dim it
   // looks_like { object }: an object placed at the light (moved with it), casting no shadow; the parser places it in
   // the scene next to the light. At most one.
   std::vector<Object> looks_like;
@@ -576,6 +606,7 @@ struct SceneDescription {
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
   std::optional<SkySphere> sky_sphere;
   std::vector<Fog> fogs;                 // in POV-Ray's list order: the last one written first
+  std::vector<Media> atmosphere;         // top-level media { } blocks in written order
   std::vector<Light> lights;
   // Every object has a texture after parsing (CSG inheritance and the #default texture resolved as POV-Ray's
   // Post_Process does). A deque, not a vector: a scene of 100,000 objects grows without moving the ones already

@@ -2,8 +2,20 @@
 
 namespace povtrace {
 
-namespace {
 void transform_pattern(Pigment& p, const Matrix& m) { p.world_from_pattern = p.world_from_pattern * m; }
+
+void transform_media(std::shared_ptr<const std::vector<Media>>& media, const Matrix& m) {
+  if (!media) return;
+  bool any_density = false;
+  for (const Media& x : *media) any_density = any_density || !x.densities.empty();
+  if (!any_density) return;   // constant media: nothing moves
+  auto moved = std::make_shared<std::vector<Media>>(*media);
+  for (Media& x : *moved)
+    for (Pigment& d : x.densities) transform_pattern(d, m);
+  media = std::move(moved);
+}
+
+namespace {
 
 // Box::Translate and Box::Scale move a box's corners (re-sorted per axis) while it has no transform of its own.
 void fold_into_corners(Box& box, const Matrix& m) {
@@ -54,6 +66,9 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
   // declared object). The parser keeps those transforms in its notes in case the texture is edited later.
   if (!object.uv_mapping && object.texture && !texture_ignores_transforms(*object.texture))
     transform_texture(object.texture, m);
+  // The interior's media densities move with the object, uv-mapped or not (POV-Ray's Interior::Transform in
+  // Transform_Object and friends).
+  if (object.interior) transform_media(object.interior->media, m);
   for (auto& clip : object.clipped_by) transform_object(clip, m, kind, observer);
   for (auto& bound : object.bounded_by) transform_object(bound, m, kind, observer);
   for (auto& bound : object.removed_bounds) transform_object(bound, m, kind, observer);

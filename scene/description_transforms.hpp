@@ -13,6 +13,11 @@ namespace povtrace {
 std::shared_ptr<const Texture> transformed_texture(const Texture& texture, const Matrix& m);
 void transform_texture(std::shared_ptr<const Texture>& texture, const Matrix& m);
 
+// A pattern's space moves by m (composed after its own transforms and warps).
+void transform_pattern(Pigment& p, const Matrix& m);
+// Media densities move by m (copied, since media lists are shared).
+void transform_media(std::shared_ptr<const std::vector<Media>>& media, const Matrix& m);
+
 // Whether no transform can change how the texture renders: plain layers whose pigments are solid colours (no
 // pattern space is ever read for them) and which have no normal.
 bool texture_ignores_transforms(const Texture& texture);

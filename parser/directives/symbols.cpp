@@ -31,10 +31,12 @@ struct Namer {
   std::string operator()(const std::shared_ptr<const FunctionValue>&) const { return "function"; }
   std::string operator()(const SkySphere&) const { return "sky_sphere"; }
   std::string operator()(const BlendMapValue& m) const {
-    return m.textures ? "texture_map" : m.pigments ? "pigment_map" : "color_map";
+    return m.textures ? "texture_map" : m.pigments ? "pigment_map" : m.densities ? "density_map" : "color_map";
   }
   std::string operator()(const Normal&) const { return "normal"; }
   std::string operator()(const SplineValue&) const { return "spline"; }
+  std::string operator()(const Media&) const { return "media"; }
+  std::string operator()(const DensityValue&) const { return "density"; }
 };
 }  // namespace
 

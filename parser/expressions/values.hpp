@@ -79,10 +79,16 @@ struct OpaqueValue {
   UnsupportedFeature feature;
 };
 
+// A declared density { } (a pigment whose maps are density maps), used as `density { D … }`.
+struct DensityValue {
+  Pigment density;
+};
+
 // A declared color_map, pigment_map or texture_map (`#declare M = color_map { … }`), used as `color_map { M }`.
 struct BlendMapValue {
   bool pigments = false;   // pigment_map
   bool textures = false;   // texture_map: the entries are in `texture_entries`
+  bool densities = false;  // density_map: the entries' pigments are densities
   std::vector<MapEntry> entries;
   std::vector<TextureMapEntry> texture_entries;
 };
@@ -109,7 +115,7 @@ using Value = std::variant<Numeric, std::string, std::shared_ptr<const SceneItem
                            Alias, Boxed<Matrix>, Boxed<OpaqueValue>, Boxed<MaterialValue>,
                            std::shared_ptr<ArrayValue>, std::shared_ptr<UserFile>,
                            std::shared_ptr<const FunctionValue>, Boxed<SkySphere>, BlendMapValue, Boxed<Normal>,
-                           Boxed<SplineValue>>;
+                           Boxed<SplineValue>, Boxed<Media>, Boxed<DensityValue>>;
 
 // array[N][M]… (§3): 1 to 5 dimensions, elements in row-major order. An element is defined once assigned; the
 // first value stored fixes the element type of the whole array. Arrays are values: #declare B = A copies

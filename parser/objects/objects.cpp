@@ -140,8 +140,10 @@ void ObjectParser::parse_material_block(const Token& keyword, Object& object) {
     Matrix m;
     if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("normal") || t.is("finish"))
       try_object_modifier(t, holder);
-    else if (textures_.try_transform(t, m)) transform_texture(holder.texture, m);
-    else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
+    else if (textures_.try_transform(t, m)) {
+      transform_texture(holder.texture, m);
+      if (holder.interior) transform_media(holder.interior->media, m);   // POV-Ray's Interior::Transform
+    } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(holder.unsupported, skip_unsupported(t, "the material item '" + std::string(t.text) + "'"));
     else fail_expected(t, "texture, interior, a transform or '}' in material { }");
     t = next();

@@ -295,8 +295,9 @@ bool CameraLightParser::try_light_modifier(const Token& t, Light& light) {
   else if (k == "circular" || k == "orient") {
     (k == "circular" ? light.circular : light.orient) = true;
     if (!light.area) warn(t.loc, "'" + std::string(k) + "' only affects an area_light");
-  } else if (k == "projected_through" || k == "media_interaction" ||
-             k == "media_attenuation" || k == "photons" || k == "area_illumination")
+  } else if (k == "media_interaction") light.media_interaction = optional_float(1.0) > 0.0;
+  else if (k == "media_attenuation") light.media_attenuation = optional_float(1.0) > 0.0;
+  else if (k == "projected_through" || k == "photons" || k == "area_illumination")
     taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;

@@ -108,7 +108,11 @@ void SceneStatements::parse_statement(const Token& t) {
     scene_.fogs.insert(scene_.fogs.begin(), textures_.parse_fog(t));
     return;
   }
-  static const std::string_view unsupported[] = {"media", "rainbow", "photons"};
+  if (k == "media") {   // atmospheric media: fills the space outside non-hollow objects
+    scene_.atmosphere.push_back(textures_.parse_media_block(t));
+    return;
+  }
+  static const std::string_view unsupported[] = {"rainbow", "photons"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
   if (k == "radiosity")   // POV-Ray reads radiosity only in global_settings (and #default, objects: importance)

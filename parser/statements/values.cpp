@@ -74,6 +74,9 @@ std::optional<Value> ValueReader::try_parse_rvalue(const Token& first) {
   if (k == "color_map" || k == "colour_map" || k == "pigment_map") return Value(textures_.parse_blend_map(first));
   if (k == "texture_map") return Value(textures_.parse_texture_map(first, false));
   if (k == "interior") return Value(textures_.parse_interior_block(first, Interior{}));
+  if (k == "media") return Value(textures_.parse_media_block(first));
+  if (k == "density") return Value(DensityValue{textures_.parse_density_block(first)});
+  if (k == "density_map") return Value(textures_.parse_density_map(first));
   if (k == "camera") return Value(camera_lights_.parse_camera(first));
   if (k == "sky_sphere") return Value(textures_.parse_sky_sphere(first));
   if (k == "transform") return Value(textures_.parse_transform_block(first));

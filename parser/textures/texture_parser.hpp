@@ -5,6 +5,7 @@
 //   pigments.cpp          pigment patterns, maps and pattern modifiers
 //   normals.cpp           normal { } perturbations
 //   image_map.cpp         image_map, bump_map
+//   media.cpp             media and density blocks
 //   texture_patterns.cpp  patterned textures (texture_map, checker/hexagon/brick textures, tiles, uv_mapping)
 // It owns no state: what it reads of the scene so far (the #default texture, the language version, assumed_gamma)
 // comes through ParserPart, as do the token reader, diagnostics and expressions.
@@ -32,6 +33,10 @@ class TextureParser : ParserPart {
   // The normal a `normal { }` block edits: the layer's own, else the #default texture's, else a new one.
   Normal starting_normal(const Normal* current) const;
   Interior parse_interior_block(const Token& keyword, const Interior& start);
+  // media { } and density { } (media.cpp).
+  Media parse_media_block(const Token& keyword);
+  Pigment parse_density_block(const Token& keyword);
+  BlendMapValue parse_density_map(const Token& keyword);
   BlendMapValue parse_blend_map(const Token& keyword, bool weights_optional = false);
   BlendMapValue parse_texture_map(const Token& keyword, bool weights_optional);
   SkySphere parse_sky_sphere(const Token& keyword);
@@ -61,6 +66,12 @@ class TextureParser : ParserPart {
   void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
   void parse_warp(const Token& keyword, Pigment& p);
   RepeatWarp parse_repeat_warp(const Token& keyword);
+
+  // ---- media and density (media.cpp) ----
+  Media starting_media() const;
+  bool parse_media_item(const Token& t, Media& m);
+  void parse_scattering(const Token& keyword, Media& m);
+  Pigment parse_density_contents(const SourceLoc& loc, std::string_view closer);
 
   // ---- normal { } (normals.cpp) ----
   Normal parse_normal_contents(const Token& keyword, const Normal& start, std::string_view closing = "}");

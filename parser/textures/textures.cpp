@@ -354,9 +354,13 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
       parse_float();
       warn(t.loc, "'refraction' is not needed to turn refraction on; to attenuate, use fade_power and "
                   "fade_distance in 'interior { }'");
+    } else if (t.is("media")) {
+      auto media = in.media ? std::make_shared<std::vector<Media>>(*in.media) : std::make_shared<std::vector<Media>>();
+      media->push_back(parse_media_block(t));
+      in.media = std::move(media);
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(in.unsupported, skip_unsupported(t, "the interior item '" + std::string(t.text) + "'"));
-    else fail_expected(t, "ior, fade_distance, fade_power, fade_color or '}' in interior { }");
+    else fail_expected(t, "ior, fade_distance, fade_power, fade_color, media or '}' in interior { }");
     t = next();
   }
   return in;
