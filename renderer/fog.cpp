@@ -51,6 +51,20 @@ double fog_attenuation(const Fog& fog, const Ray& ray, double width, NoiseGenera
 
 }  // namespace
 
+// A shadow ray's fog only dims the light: POV-Ray adds no fog colour to shadow test rays.
+Rgb Tracer::fog_on_shadow(const Ray& ray, double depth) const {
+  Rgb total_attenuation{1, 1, 1};
+  for (const Fog& fog : scene_.fogs) {
+    if (!(std::fabs(fog.distance) > tolerance::epsilon)) continue;
+    const double a = std::max(fog_attenuation(fog, ray, depth, scene_.noise_generator), fog.colour.t);
+    const Rgb c{fog.colour.r, fog.colour.g, fog.colour.b};
+    const Rgb through = Rgb{1 - fog.colour.f, 1 - fog.colour.f, 1 - fog.colour.f} + c * fog.colour.f;
+    total_attenuation = Rgb{total_attenuation.x * a * through.x, total_attenuation.y * a * through.y,
+                            total_attenuation.z * a * through.z};
+  }
+  return total_attenuation;
+}
+
 Radiance Tracer::with_fog(const Ray& ray, double depth, Radiance r) const {
   Rgb total_attenuation{1, 1, 1};
   Rgb total_colour{0, 0, 0};

@@ -82,7 +82,7 @@ Rgb Tracer::shadow_atmosphere(const RenderLight& l, const Ray& ray, double from,
     list.add(*scene_.atmosphere);
     f = mul(f, media_effect(list, MediaSegment{stretch.origin, stretch.direction, to - from, true}).transmittance);
   }
-  if (fog_ && hollow) f = with_fog(stretch, to - from, Radiance{f, 0.0}).colour;
+  if (fog_ && hollow) f = mul(f, fog_on_shadow(stretch, to - from));
   return f;
 }
 

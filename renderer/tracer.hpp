@@ -189,6 +189,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Radiance background(Vec3 direction, const RayState& state) const;
   // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
   Radiance with_fog(const Ray& ray, double depth, Radiance r) const;
+  Rgb fog_on_shadow(const Ray& ray, double depth) const;   // what fog lets through along a shadow ray
   // Media over `depth` along the ray (media.cpp): the media of the interiors it is in when it hit something, then
   // the atmosphere's, as POV-Ray applies them (ComputeTextureColour, then TraceRay).
   Radiance with_media(const Ray& ray, double depth, bool hit, const RayState& state, Radiance r);
