@@ -51,5 +51,10 @@ switches and compare with \`povdiff\` (PSNR ≥ 50 dB, at most 0.1 % of pixels o
 
 \`animation/\` holds POV-Ray's frames of its sample animations for the \`animation_samples\` tests, with their own
 script (\`make_animation_references.sh\`) and README.
+
+\`media_random/\` holds POV-Ray's renders of \`../scenes/media_random/\` (media sampling that is random in POV-Ray with
+more than one thread: a +WT1 reference and three +WT2 renders each), with their own script
+(\`make_media_random_references.sh\`) and README. \`media_scenes.md\` lists the media scenes (\`media_*\`, issue 20): what
+each tests, POV-Ray's render times, determinism, and the Debian sample scenes that use media.
 README
 exit $failed
