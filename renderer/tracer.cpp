@@ -529,8 +529,11 @@ Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb fil
   Radiance behind;
   if (std::fabs(eta - 1.0) < tolerance::epsilon) {
     // An ior-1 surface continues the ray without using up a trace level.
-    // POV-Ray flags it as refracted too (ComputeRefraction sets the flags before this case).
-    behind = trace(Ray{point, ray.direction, ray_kind::after_refraction(ray.kind)}, level, next_weight, next);
+    // POV-Ray flags it as refracted too (ComputeRefraction sets the flags before this case). Its TraceRay tests
+    // the level the continued ray shares with its parent against the maximum before anything else, so at the
+    // deepest level the continued ray sees black (trace() allows an ordinary child one level deeper).
+    if (level < max_level_)
+      behind = trace(Ray{point, ray.direction, ray_kind::after_refraction(ray.kind)}, level, next_weight, next);
   } else {
     double m = dot(ray.direction, normal);
     const Vec3 facing = m <= 0 ? normal : -normal;
