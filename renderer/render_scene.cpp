@@ -212,7 +212,7 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     add_object(scene.objects[i], static_cast<std::uint32_t>(i), materials, context, primitives);
   if (may_rescale) {
     // A scene far from the ordinary scale is rendered as its rescaled twin (scene_scale.hpp).
-    if (const double k = normalizing_scale(object_sizes(primitives)); k != 1.0) {
+    if (const double k = normalizing_scale(object_sizes(primitives, scene.camera.location)); k != 1.0) {
       RenderScene twin = build_scene(scaled_scene(scene, k), options, false);
       twin.scale = k;
       return twin;

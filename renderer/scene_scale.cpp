@@ -72,6 +72,27 @@ SceneDescription with_world_space_spheres(const SceneDescription& scene) {
   return s;
 }
 
+ObjectSizes object_sizes(const std::vector<Primitive>& primitives, Vec3 camera) {
+  ObjectSizes sizes = object_sizes(primitives);
+  sizes.reaches_max_distance = false;
+  for (const Primitive& p : primitives) {
+    const Bounds b = world_bounds(p);
+    if (b.empty()) continue;
+    if (!b.finite()) {
+      sizes.reaches_max_distance = true;
+      break;
+    }
+    const Vec3 far{std::max(std::fabs(b.lo.x - camera.x), std::fabs(b.hi.x - camera.x)),
+                   std::max(std::fabs(b.lo.y - camera.y), std::fabs(b.hi.y - camera.y)),
+                   std::max(std::fabs(b.lo.z - camera.z), std::fabs(b.hi.z - camera.z))};
+    if (length(far) > 0.5 * tolerance::max_distance) {
+      sizes.reaches_max_distance = true;
+      break;
+    }
+  }
+  return sizes;
+}
+
 ObjectSizes object_sizes(const std::vector<Primitive>& primitives) {
   std::vector<double> sizes;
   sizes.reserve(primitives.size());
@@ -84,7 +105,7 @@ ObjectSizes object_sizes(const std::vector<Primitive>& primitives) {
 
 double normalizing_scale(const ObjectSizes& sizes) {
   const bool all_tiny = sizes.largest > 0 && sizes.largest < kSmallest;
-  const bool all_huge = std::isfinite(sizes.smallest) && sizes.smallest > kLargest;
+  const bool all_huge = std::isfinite(sizes.smallest) && sizes.smallest > kLargest && sizes.reaches_max_distance;
   if (!all_tiny && !all_huge) return 1.0;
   return std::exp2(std::round(std::log2(kTarget / sizes.median)));
 }

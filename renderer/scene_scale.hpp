@@ -21,11 +21,18 @@ namespace povtrace::render {
 // there is none.
 struct ObjectSizes {
   double smallest = 0, median = 0, largest = 0;
+  // Some ray may run into POV-Ray's MAX_DISTANCE (1e7): the scene has an unbounded object, or a finite one farther
+  // than half of it from the camera (rays between two objects then cross more than it).
+  bool reaches_max_distance = true;
 };
 ObjectSizes object_sizes(const std::vector<Primitive>& primitives);
+// The same, deciding reaches_max_distance from the camera's location.
+ObjectSizes object_sizes(const std::vector<Primitive>& primitives, Vec3 camera);
 
-// The factor (a power of two) that brings the median object to about 2 units when every object is below 0.05 or
-// every one above 1e4; otherwise 1. A scene mixing scales (a sky sphere of radius 1e5 around ordinary objects, or
+// The factor (a power of two) that brings the median object to about 2 units when every object is below 0.05, or
+// every one above 1e4 and some ray may reach MAX_DISTANCE; otherwise 1. Huge objects alone are no reason: POV-Ray's
+// tolerances are small against them, and shrinking the scene would bring its small gaps (a shell 1 unit above a
+// planet of radius 5e4, advanced/mediasky.pov) down to those tolerances. A scene mixing scales (a sky sphere of radius 1e5 around ordinary objects, or
 // around tiny ones) is left as written, as POV-Ray renders it: no single factor would help all its objects.
 double normalizing_scale(const ObjectSizes& sizes);
 

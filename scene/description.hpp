@@ -322,9 +322,11 @@ struct Interior {
   double refraction = 1.0;       // legacy `refraction`: scales the light seen through the object
   bool hollow = false;           // the object's `hollow` flag (POV-Ray keeps it on the interior): fog and media
                                  // reach rays inside hollow objects only
-  // media { } blocks in written order. Shared, so that the interiors CSG children inherit from their parent stay
-  // one interior (same_interior compares the pointer).
+  // media { } blocks in written order (shared: copies of an interior share them until a transform moves them).
   std::shared_ptr<const std::vector<Media>> media;
+  // Which media list this is, kept by copies and by transformed or rescaled copies: the interiors CSG children
+  // inherit from their parent stay one interior for the renderer (same_interior) however often they moved.
+  std::uint64_t media_id = 0;
   Unsupported unsupported;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <atomic>
+
 #include "parser/interpreter.hpp"
 #include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
@@ -358,6 +360,9 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
       auto media = in.media ? std::make_shared<std::vector<Media>>(*in.media) : std::make_shared<std::vector<Media>>();
       media->push_back(parse_media_block(t));
       in.media = std::move(media);
+      // Identity only, never part of an image: any value unique in the process will do.
+      static std::atomic<std::uint64_t> next_media_id{0};
+      in.media_id = ++next_media_id;
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(in.unsupported, skip_unsupported(t, "the interior item '" + std::string(t.text) + "'"));
     else fail_expected(t, "ior, fade_distance, fade_power, fade_color, media or '}' in interior { }");

@@ -28,6 +28,51 @@ TEST(SceneScale, TinyAndHugeObjectsGetAPowerOfTwoTowardsTwo) {
   }
 }
 
+// Huge objects alone are no reason to shrink a scene: POV-Ray's absolute tolerances are small against them, and
+// shrinking would bring small gaps between them down to those tolerances (advanced/mediasky.pov: sky shells 1 unit
+// apart around a planet of radius 5e4 lost their media). Only when some ray may reach MAX_DISTANCE (an unbounded
+// object, or objects half of it away from the camera) is the scene rescaled.
+TEST(SceneScale, HugeObjectsNearTheCameraAreLeftAsWritten) {
+  SceneDescription s = base_scene();
+  s.objects.push_back(sphere_object({0, -5e4, 0}, 5e4, texture(rgb(1, 1, 1))));
+  s.objects.push_back(sphere_object({0, -5e4, 0}, 5.1e4, texture(rgb(1, 0, 0))));
+  EXPECT_EQ(build_render_scene(s, BuildOptions{}).scale, 1.0);
+  SceneDescription with_plane = s;
+  with_plane.objects.push_back(plane_object({0, 1, 0}, -2e5, texture(rgb(0, 1, 0))));
+  EXPECT_LT(build_render_scene(with_plane, BuildOptions{}).scale, 1.0);
+  SceneDescription far = s;
+  far.objects.push_back(sphere_object({0, 0, 6e6}, 4e4, texture(rgb(0, 1, 0))));
+  EXPECT_LT(build_render_scene(far, BuildOptions{}).scale, 1.0);
+}
+
+// A rescaled scene moves and rescales each object's media on its own copy, but CSG children that inherited one
+// interior must stay one interior (same_interior compares media_id), or rays entering one child and leaving by
+// another lose track of the media they are in.
+TEST(SceneScale, RescalingKeepsInheritedMediaOneInterior) {
+  Interior in;
+  in.hollow = true;
+  Media m;
+  m.absorption = Colour{0.5, 0.5, 0.5, 0, 0};
+  m.densities.push_back(Pigment{});
+  in.media = std::make_shared<const std::vector<Media>>(std::vector<Media>{m});
+  in.media_id = 7;
+  Object shell;
+  Csg csg;
+  csg.kind = CsgKind::difference;
+  csg.children.push_back(sphere_object({0, 0, 0}, 2e5, texture(rgb(1, 1, 1))));
+  csg.children.push_back(sphere_object({0, 0, 0}, 1.9e5, texture(rgb(1, 1, 1))));
+  for (Object& child : csg.children) child.interior = in;
+  shell.shape = csg;
+  shell.interior = in;
+  SceneDescription s = base_scene();
+  s.objects.push_back(shell);
+  const SceneDescription scaled = scaled_scene(s, 0.25);
+  const auto& children = std::get<Csg>(scaled.objects[0].shape).children;
+  EXPECT_EQ(children[0].interior->media_id, children[1].interior->media_id);
+  EXPECT_EQ(children[0].interior->media->front().absorption.r, 2.0);   // per unit length: 4 times as much
+  EXPECT_NE(children[0].interior->media.get(), in.media.get());         // the original is left as it was
+}
+
 // The objects decide, not the scene's extent: a sky sphere of radius 1e5 (textures/finishes/cluster.pov,
 // advanced/quilt1.pov) around ordinary objects leaves the scene as written, as POV-Ray renders it; shrinking it to
 // an ordinary extent would have shrunk the objects to POV-Ray's tolerances and lost their shadows. Tiny objects
