@@ -312,6 +312,7 @@ struct Media {
   // pigment whose maps are density maps (a density_map's entries are densities).
   std::vector<Pigment> densities;
   SourceLoc loc;
+  Unsupported unsupported;   // a density uses something povtrace does not render yet
 };
 
 struct Interior {

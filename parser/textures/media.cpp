@@ -87,6 +87,7 @@ bool TextureParser::parse_media_item(const Token& t, Media& m) {
     m.ratio = parse_float();
   } else if (t.is("density")) {
     m.densities.push_back(parse_density_block(t));
+    taint(m.unsupported, m.densities.back().unsupported);
   } else {
     return false;
   }
