@@ -277,6 +277,8 @@ class Sampler {
     for (const RenderPigment& d : m.densities) {
       const Colour s = evaluate_density(d, p);
       c = mul(c, Rgb{s.r, s.g, s.b});
+      // Nothing multiplies a zero density back: the densities after it need not be evaluated.
+      if (c.x == 0 && c.y == 0 && c.z == 0) break;
     }
     return c;
   }

@@ -51,6 +51,32 @@ constexpr std::array<CubeOffset, 81> make_offsets() {
 }
 constexpr auto kOffsets = make_offsets();
 
+// The 81 cell points around a cube, in kOffsets order. Computing them is most of crackle's cost and neighbouring
+// evaluations (media samples along a ray, adjacent pixels) mostly fall in cubes just seen, so each thread keeps
+// the points of the cubes it used last (as POV-Ray keeps a crackle cache per thread): a direct-mapped table of 256
+// cubes (500 kB per thread), enough for a media sampled across a few crackle cells of two patterns in turn.
+constexpr std::size_t kCubeCacheSize = 256;
+const std::array<Vec3, 81>& cube_points(long long x, long long y, long long z) {
+  struct Entry {
+    long long x = 0, y = 0, z = 0;
+    bool valid = false;
+    std::array<Vec3, 81> points;
+  };
+  thread_local std::vector<Entry> table(kCubeCacheSize);
+  const auto hash = static_cast<std::size_t>((x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL));
+  const std::size_t slot = hash & (kCubeCacheSize - 1);
+  Entry& e = table[slot];
+  if (!e.valid || e.x != x || e.y != y || e.z != z) {
+    for (std::size_t i = 0; i < kOffsets.size(); ++i)
+      e.points[i] = cell_point(x + kOffsets[i].x, y + kOffsets[i].y, z + kOffsets[i].z);
+    e.x = x;
+    e.y = y;
+    e.z = z;
+    e.valid = true;
+  }
+  return e.points;
+}
+
 double metric_sum(Vec3 d, double metric) {
   if (metric == 2) return d.x * d.x + d.y * d.y + d.z * d.z;
   if (metric == 1) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
@@ -63,6 +89,39 @@ double distance_of(double sum, double metric) {
   if (metric == 1) return sum;
   return std::pow(sum, 1.0 / metric);
 }
+// The three smallest metric sums from p to the points, and the nearest point, found in POV-Ray's order: the first
+// three sorted as POV-Ray does (the nearest index follows the first two swaps only), then the others in turn.
+struct Nearest {
+  std::array<double, 3> sums{};
+  Vec3 point;
+};
+template <class Sum>
+Nearest nearest_three(const std::array<Vec3, 81>& points, Vec3 p, Sum sum) {
+  double a = sum(points[0] - p), b = sum(points[1] - p), c = sum(points[2] - p);
+  std::size_t nearest_index = 0;
+  if (b < a) { std::swap(a, b); nearest_index = 1; }
+  if (c < a) { std::swap(a, c); nearest_index = 2; }
+  if (c < b) std::swap(b, c);
+  Vec3 nearest_point = points[nearest_index];
+  for (std::size_t i = 3; i < points.size(); ++i) {
+    const double s = sum(points[i] - p);
+    if (s < c) {   // most points are further than the third: one comparison for them
+      if (s < a) {
+        c = b;
+        b = a;
+        a = s;
+        nearest_point = points[i];
+      } else if (s < b) {
+        c = b;
+        b = s;
+      } else {
+        c = s;
+      }
+    }
+  }
+  return Nearest{{a, b, c}, nearest_point};
+}
+
 }  // namespace
 
 double crackle(Vec3 p, const CrackleParams& c, NoiseGenerator generator) {
@@ -70,30 +129,12 @@ double crackle(Vec3 p, const CrackleParams& c, NoiseGenerator generator) {
   const auto fx = static_cast<long long>(std::floor(p.x - kPovEpsilon));
   const auto fy = static_cast<long long>(std::floor(p.y - kPovEpsilon));
   const auto fz = static_cast<long long>(std::floor(p.z - kPovEpsilon));
-  std::array<double, 3> nearest{};
-  std::array<Vec3, 3> first{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    first[i] = cell_point(fx + kOffsets[i].x, fy + kOffsets[i].y, fz + kOffsets[i].z);
-    nearest[i] = metric_sum(first[i] - p, c.metric);
-  }
-  // The first three sorted as POV-Ray does (the nearest index follows the first two swaps only).
-  std::size_t nearest_index = 0;
-  if (nearest[1] < nearest[0]) { std::swap(nearest[0], nearest[1]); nearest_index = 1; }
-  if (nearest[2] < nearest[0]) { std::swap(nearest[0], nearest[2]); nearest_index = 2; }
-  if (nearest[2] < nearest[1]) std::swap(nearest[1], nearest[2]);
-  Vec3 nearest_point = first[nearest_index];
-  for (std::size_t i = 3; i < kOffsets.size(); ++i) {
-    const Vec3 q = cell_point(fx + kOffsets[i].x, fy + kOffsets[i].y, fz + kOffsets[i].z);
-    const double s = metric_sum(q - p, c.metric);
-    if (s < nearest[0]) {
-      nearest = {s, nearest[0], nearest[1]};
-      nearest_point = q;
-    } else if (s < nearest[1]) {
-      nearest = {nearest[0], s, nearest[1]};
-    } else if (s < nearest[2]) {
-      nearest[2] = s;
-    }
-  }
+  const std::array<Vec3, 81>& points = cube_points(fx, fy, fz);
+  Nearest n;
+  if (c.metric == 2) n = nearest_three(points, p, [](Vec3 d) { return d.x * d.x + d.y * d.y + d.z * d.z; });
+  else n = nearest_three(points, p, [&c](Vec3 d) { return metric_sum(d, c.metric); });
+  std::array<double, 3>& nearest = n.sums;
+  const Vec3 nearest_point = n.point;
   if (c.offset != 0) {
     const double add = c.metric == 2 ? c.offset * c.offset : c.metric == 1 ? c.offset : std::pow(c.offset, c.metric);
     for (double& s : nearest) s += add;
