@@ -36,6 +36,9 @@ class TextureParser : ParserPart {
   // media { } and density { } (media.cpp).
   Media parse_media_block(const Token& keyword);
   Pigment parse_density_block(const Token& keyword);
+  // The first feature povtrace cannot render in a media's densities (parse_media_block keeps them there): the
+  // interior or scene that takes the media must carry it, else the density would silently be left out.
+  static Unsupported first_unsupported(const Media& m);
   BlendMapValue parse_density_map(const Token& keyword);
   BlendMapValue parse_blend_map(const Token& keyword, bool weights_optional = false);
   BlendMapValue parse_texture_map(const Token& keyword, bool weights_optional);
@@ -57,6 +60,7 @@ class TextureParser : ParserPart {
   Pigment uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer);
   bool try_pattern(const Token& t, Pigment& p);
   void set_list_pattern(const Token& t, Pigment& p);   // checker/hexagon/brick without their entries
+  void parse_density_file(Pigment& p);                  // after `density_file`: df3 "NAME", the file read
   bool try_pattern_modifier(const Token& t, Pigment& p);
   bool try_pattern_parameter(const Token& t, Pigment& p);
   bool starts_map_expression(const Token& t) const;
