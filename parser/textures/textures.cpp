@@ -359,6 +359,7 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
     } else if (t.is("media")) {
       auto media = in.media ? std::make_shared<std::vector<Media>>(*in.media) : std::make_shared<std::vector<Media>>();
       media->push_back(parse_media_block(t));
+      taint(in.unsupported, first_unsupported(media->back()));
       in.media = std::move(media);
       // Identity only, never part of an image: any value unique in the process will do.
       static std::atomic<std::uint64_t> next_media_id{0};
@@ -369,6 +370,12 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
     t = next();
   }
   return in;
+}
+
+Unsupported TextureParser::first_unsupported(const Media& m) {
+  for (const Pigment& d : m.densities)
+    if (d.unsupported) return d.unsupported;
+  return std::nullopt;
 }
 
 // texture { … } (POV-Ray's Parse_Texture).
