@@ -82,6 +82,18 @@ struct ImageMap {
   bool has_filter = false;   // a filter or transmit item was written (POV-Ray's HAS_FILTER: not opaque)
 };
 
+// ---- Density files (density_file df3) -----------------------------------------------------------------
+// A DF3 voxel grid as POV-Ray 3.7's Read_Density_File keeps it (source/backend/pattern/pattern.cpp): the parser
+// reads the file where the pattern is written (runtime/density_file.hpp), the renderer looks voxels up. The voxels
+// are kept as the file stores them (big-endian, `bytes_per_voxel` each, x fastest, then y, then z), so that a
+// file of 8-bit voxels takes no more memory than on disk.
+struct DensityGrid {
+  std::size_t size_x = 0, size_y = 0, size_z = 0;
+  int bytes_per_voxel = 1;            // 1, 2 or 4: decided by the file's length
+  std::vector<std::uint8_t> voxels;   // size_x · size_y · size_z · bytes_per_voxel bytes
+  std::string file;                   // the path it was read from
+};
+
 // ---- Textures -------------------------------------------------------------------------------------------
 // Pigment patterns povtrace renders (povray-sdl-and-geometry.md §11). Any other pattern is refused by name.
 namespace sdl {
@@ -100,6 +112,7 @@ enum class PatternKind {
   function,                                                         // a user function of x, y, z (Pigment::function)
   spiral1, spiral2,                                                 // spirals around z with Pigment::arms arms
   quilted,                                                          // rounded cells (Pigment::control0/1)
+  density_file,                                                     // a DF3 voxel grid (Pigment::density_file)
   uv_mapping                                                        // its one entry at the hit's <u, v, 0>
 };
 
@@ -174,6 +187,10 @@ struct Pigment {
   std::vector<PatternWarp> warps;         // in written order
   Matrix world_from_pattern;     // every transform applied to the pigment since it was created (after its warps)
   std::shared_ptr<const ImageMap> image;   // image_map
+  // density_file: the grid on the unit cube and `interpolate N` as POV-Ray stores it (an int; N % 10 picks 0
+  // nearest voxel, 1 trilinear, anything else tricubic). Both are reset when density_file is written again.
+  std::shared_ptr<const DensityGrid> density_file;
+  int density_interpolation = 0;
   // quick_color: what the pigment shows instead in draft renders (+Q0…+Q5). POV-Ray uses it only when none of its
   // red, green, blue is -1 (its mark for "not given"), so such a colour is not kept.
   std::optional<Colour> quick_colour;

@@ -110,7 +110,7 @@ void SceneStatements::parse_statement(const Token& t) {
   }
   if (k == "media") {   // atmospheric media: fills the space outside non-hollow objects
     scene_.atmosphere.push_back(textures_.parse_media_block(t));
-    unsupported_.refuse_if_unsupported(scene_.atmosphere.back().unsupported, t.loc, "media");
+    unsupported_.refuse_if_unsupported(scene_.atmosphere.back().unsupported, t.loc, "atmospheric media");
     return;
   }
   static const std::string_view unsupported[] = {"rainbow", "photons"};

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/density_file.hpp"
 #include "runtime/function_value.hpp"
 #include "parser/interpreter.hpp"
+#include "parser/textures/image_location.hpp"
 #include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
 
@@ -69,7 +71,38 @@ Turbulence& classic_turbulence(Pigment& p) {
 }
 
 int clamped_octaves(double v) { return std::clamp(static_cast<int>(v), 1, 10); }
+
+// POV-Ray stores `interpolate N` as (int)N: truncated towards zero. C++ leaves the conversion of a float outside
+// int's range undefined, so such values are clamped first (any of them picks tricubic, as N % 10 ∉ {0, 1}).
+int truncated_int(double v) {
+  if (std::isnan(v)) return 0;
+  return static_cast<int>(std::clamp(std::trunc(v), -2147483648.0, 2147483647.0));
+}
 }  // namespace
+
+// `density_file df3 "NAME"` (Parse_Pattern): the file is looked for as POV-Ray's Locate_File looks for a DF3 file
+// (the name, with .df3 or .DF3 appended, in the working directory and the library paths) and read here, so that a
+// missing or malformed file is an error where it is named (POV-Ray: "Cannot read media density file.", "Error
+// reading density_file", "Invalid density file size"). A new density_file starts with interpolate 0 again
+// (Create_Density_File).
+void TextureParser::parse_density_file(Pigment& p) {
+  const Token type = next();
+  if (!type.is("df3")) fail_expected(type, "'df3' after 'density_file' (the only density file type)");
+  const Token name_token = peek();
+  const std::string name = parse_string();
+  static constexpr std::string_view kExtensions[] = {".df3", ".DF3"};
+  const auto path = locate_typed_file(name, kExtensions, library_paths());
+  if (!path)
+    fail_at(name_token, "cannot find the density file '" + name + "' (looked for it, and for it with .df3 or .DF3 "
+                        "appended, in the working directory and the library paths)");
+  try {
+    p.density_file = std::make_shared<const DensityGrid>(df3::read_density_file(*path));
+  } catch (const df3::DensityFileError& e) {
+    fail_at(name_token, e.what());
+  }
+  p.pattern = PatternKind::density_file;
+  p.density_interpolation = 0;
+}
 
 bool TextureParser::starts_map_expression(const Token& t) const {
   return starts_colour(t) || t.kind == TokenKind::number || t.is("<") || t.is("(") || t.is("-") || t.is("+");
@@ -121,6 +154,10 @@ void TextureParser::set_list_pattern(const Token& t, Pigment& p) {
 bool TextureParser::try_pattern(const Token& t, Pigment& p) {
   if (t.is("image_map")) {
     parse_image_map(t, p);
+    return true;
+  }
+  if (t.is("density_file")) {
+    parse_density_file(p);
     return true;
   }
   for (const auto& s : kSimplePatterns)
@@ -388,6 +425,11 @@ bool TextureParser::try_pattern_parameter(const Token& t, Pigment& p) {
   if (t.is("mortar")) {
     require(PatternKind::brick, "brick");
     p.mortar = single(parse_float() - 2 * kPovEpsilon);
+    return true;
+  }
+  if (t.is("interpolate")) {
+    require(PatternKind::density_file, "density_file");
+    p.density_interpolation = truncated_int(parse_float());
     return true;
   }
   return false;

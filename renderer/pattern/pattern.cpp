@@ -115,6 +115,8 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::quilted: return quilted(p, params.control0, params.control1);
     case PatternKind::spiral1: return patterns::spiral1(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::spiral2: return patterns::spiral2(p, params.arms, params.turbulence, params.noise_generator);
+    case PatternKind::density_file:
+      return patterns::density_file(*params.density_file, params.density_interpolation, p);
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:

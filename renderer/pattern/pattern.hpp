@@ -26,6 +26,8 @@ struct PatternParams {
   // The scene's noise generator as the function pattern's function reads it (f_noise3d): set with noise_generator
   // (set_generator), but the scene's own where a pigment's patterns use another (sky_sphere, height fields).
   int function_noise_generator = 2;
+  std::shared_ptr<const DensityGrid> density_file;   // density_file: the voxel grid
+  int density_interpolation = 0;                     // and `interpolate N` as written
 };
 
 // The frequency/phase/wave step every pattern value goes through.

@@ -1,6 +1,6 @@
 // The pattern functions behind pattern_value(), grouped by file: tilings.cpp (checker, hexagon, brick) and
 // noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate, spiral1, spiral2, dents, wrinkles, ripples, waves),
-// cell_patterns.cpp (crackle, cells). Internal to renderer/pattern.
+// cell_patterns.cpp (crackle, cells), density_file.cpp (density_file). Internal to renderer/pattern.
 #pragma once
 
 #include "renderer/pattern/pattern.hpp"
@@ -28,5 +28,8 @@ double waves(Vec3 p, double frequency, double phase);
 
 double crackle(Vec3 p, const CrackleParams& params, NoiseGenerator generator);
 double cells(Vec3 p);
+
+// density_file (density_file.cpp): the grid's value at p, 0 outside the unit cube; `interpolation` as written.
+double density_file(const DensityGrid& grid, int interpolation, Vec3 p);
 
 }  // namespace povtrace::render::patterns

@@ -81,7 +81,8 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
   r.params = PatternParams{p.pattern,    p.gradient, p.brick_size, p.mortar,
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected,
                            p.frequency,  p.phase,    p.function,   p.arms,
-                           p.control0,   p.control1, 2};   // both generators set for the scene (set_generator)
+                           p.control0,   p.control1, 2,   // both generators set for the scene (set_generator)
+                           p.density_file, p.density_interpolation};
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
