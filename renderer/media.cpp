@@ -13,13 +13,6 @@
 
 namespace povtrace::render {
 
-namespace {
-Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-bool below_epsilon(Rgb c) {
-  return c.x < tolerance::epsilon && c.y < tolerance::epsilon && c.z < tolerance::epsilon;
-}
-}  // namespace
-
 MediaEffect Tracer::media_effect(const MediaList& media, const MediaSegment& segment) {
   MediaRandom random(media_seed(segment.origin, segment.direction, segment.depth));
   return integrate_media(media, segment, scene_.lights, *this, random);
@@ -57,9 +50,7 @@ std::optional<MediaLighting::Arrival> Tracer::arrival(std::size_t index, Vec3 po
   const std::optional<LightRay> lr = light_at(l, point);
   if (!lr) return std::nullopt;
   const Rgb colour = shadowed_light(l, point, lr->to_light, lr->distance, lr->colour, *media_state_);
-  if (std::fabs(colour.x) < tolerance::epsilon && std::fabs(colour.y) < tolerance::epsilon &&
-      std::fabs(colour.z) < tolerance::epsilon)
-    return std::nullopt;
+  if (near_zero(colour)) return std::nullopt;
   return Arrival{colour, lr->to_light};
 }
 
@@ -73,16 +64,15 @@ Rgb Tracer::shadow_interior_media(const Ray& ray, double from, double to, const 
 
 Rgb Tracer::shadow_atmosphere(const RenderLight& l, const Ray& ray, double from, double to, Rgb f, bool hollow,
                               bool at_surface) {
-  if (!(l.light.media_interaction && l.light.media_attenuation) || !quality_.fog) return f;
-  if (!scene_.atmosphere && !fog_) return f;
-  if (below_epsilon(f)) return f;
+  if (!shadow_atmosphere_ || !(l.light.media_interaction && l.light.media_attenuation)) return f;
+  if (all_below(f, tolerance::epsilon)) return f;
   const Ray stretch{ray.origin + ray.direction * from, ray.direction};
   if (scene_.atmosphere && (hollow || at_surface)) {
     MediaList list;
     list.add(*scene_.atmosphere);
-    f = mul(f, media_effect(list, MediaSegment{stretch.origin, stretch.direction, to - from, true}).transmittance);
+    f = f * media_effect(list, MediaSegment{stretch.origin, stretch.direction, to - from, true}).transmittance;
   }
-  if (fog_ && hollow) f = mul(f, fog_on_shadow(stretch, to - from));
+  if (fog_ && hollow) f = f * fog_on_shadow(stretch, to - from);
   return f;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +26,12 @@ using Rgb = Vec3;
 inline Rgb rgb_of(const Colour& c) { return {c.r, c.g, c.b}; }
 // POV-Ray's intensity weights (pipeline notation grey()).
 inline double grey(const Rgb& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+inline bool all_below(Rgb c, double e) { return c.x < e && c.y < e && c.z < e; }
+// A light colour POV-Ray treats as no light: every channel within EPSILON of 0. By magnitude, so that a negative
+// light (color -0.9, which takes light away) still counts, as in POV-Ray's ComputeOneDiffuseLight.
+inline bool near_zero(Rgb c) {
+  return std::fabs(c.x) < tolerance::epsilon && std::fabs(c.y) < tolerance::epsilon && std::fabs(c.z) < tolerance::epsilon;
+}
 
 // Where a texture is evaluated: the point (the world point, or the hit's <u, v, 0> on a uv-mapped object, or the
 // point a patterned texture passes down to its textures) and the hit's uv coordinates, which `uv_mapping`

@@ -16,12 +16,6 @@ namespace povtrace::render {
 namespace {
 Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 double max_channel(Rgb c) { return std::max({c.x, c.y, c.z}); }
-bool all_below(Rgb c, double e) { return c.x < e && c.y < e && c.z < e; }
-// A light colour POV-Ray treats as no light: every channel within EPSILON of 0. By magnitude, so that a negative
-// light (color -0.9, which takes light away) still counts, as in POV-Ray's ComputeOneDiffuseLight.
-bool near_zero(Rgb c) {
-  return std::fabs(c.x) < tolerance::epsilon && std::fabs(c.y) < tolerance::epsilon && std::fabs(c.z) < tolerance::epsilon;
-}
 
 // Smooth step used by spotlights' falloff zone (§3): 0 below a, 1 at or above b, 3s²−2s³ between.
 double smoothstep(double a, double b, double x) {
@@ -54,6 +48,9 @@ Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
       media_(quality.fog && (scene.atmosphere || scene.any_interior_media)),
       transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL),
       max_level_(scene.settings.max_trace_level), adc_bailout_(scene.settings.adc_bailout) {
+  if (quality.fog && (scene.atmosphere || !scene.fogs.empty()))
+    for (const RenderLight& l : scene.lights)
+      shadow_atmosphere_ = shadow_atmosphere_ || (l.light.media_interaction && l.light.media_attenuation);
   if (scene.radiosity) {
     gatherer_ = std::make_unique<radiosity::Gatherer>(*scene.radiosity, scene.camera.location);
     sample_volume_ = scene.radiosity->settings.media;
@@ -726,7 +723,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
   });
   Rgb f{1, 1, 1};
   InteriorList in;
-  const bool track = scene_.any_shadow_fade || scene_.any_interior_media || scene_.atmosphere || fog_;
+  const bool track = scene_.any_shadow_fade || scene_.any_interior_media || shadow_atmosphere_;
   if (track) in = state.interiors;
   double previous = 0;
   for (const Crossing& c : crossings) {

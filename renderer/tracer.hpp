@@ -210,6 +210,9 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Quality quality_;
   bool fog_;   // the scene has fog and the quality level shows it
   bool media_;  // the scene has media and the quality level shows them (POV-Ray's Q_VOLUME, +Q9)
+  // Some light's shadow rays pass through the atmosphere's media or fog (media_interaction and media_attenuation):
+  // shadow rays must know whether they are outside non-hollow objects.
+  bool shadow_atmosphere_ = false;
   const RayState* media_state_ = nullptr;   // the ray whose media are being sampled (their shadow rays start in its
                                             // interiors)
   // A hit's transmitted ray is traced when the layers let through more than this: adc_bailout, or never below +Q6

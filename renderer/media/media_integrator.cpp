@@ -13,7 +13,6 @@ constexpr double kSmallTolerance = 1e-3;   // POV-Ray's SMALL_TOLERANCE: beams e
 constexpr double kMaxDistance = 1e7;       // POV-Ray's MAX_DISTANCE: where open beams end
 constexpr double kEpsilon = 1e-10;
 
-Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 Rgb exp_neg(Rgb a) { return {std::exp(-a.x), std::exp(-a.y), std::exp(-a.z)}; }
 double colour_distance(Rgb a, Rgb b) {   // POV-Ray's colourDistance: the sum of the channel differences
   return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z);
@@ -197,9 +196,8 @@ double phase_sum_term(const RenderMedia& m, double alpha) {
 
 class Sampler {
  public:
-  Sampler(const MediaList& media, const MediaSegment& seg, const std::vector<RenderLight>& lights,
-          MediaLighting& lighting, MediaRandom& random)
-      : media_(media), seg_(seg), lights_(lights), lighting_(lighting), random_(random) {}
+  Sampler(const MediaList& media, const MediaSegment& seg, MediaLighting& lighting, MediaRandom& random)
+      : media_(media), seg_(seg), lighting_(lighting), random_(random) {}
 
   std::vector<LightSpan> spans;
   bool use_scattering = false;
@@ -214,10 +212,10 @@ class Sampler {
     for (int i = 0; i < media_.count; ++i) {
       const RenderMedia& m = *media_.items[i];
       const Rgb density = density_at(m, p);
-      extinction += mul(density, m.extinction);
+      extinction += density * m.extinction;
       if (!seg_.shadow_ray) {
-        emission += mul(density, m.emission);
-        scattering += mul(density, m.scattering);
+        emission += density * m.emission;
+        scattering += density * m.scattering;
       }
     }
     optical_depth = extinction * iv.ds;
@@ -229,11 +227,11 @@ class Sampler {
       }
     }
     if (method == 3) emission *= iv.ds;
-    else emission = mul(emission, exp_neg(extinction * d0)) * iv.ds;
+    else emission = emission * exp_neg(extinction * d0) * iv.ds;
     colour = emission;
     if (method != 3) {
       iv.te += emission;
-      iv.te2 += mul(emission, emission);
+      iv.te2 += emission * emission;
     }
     ++iv.samples;
   }
@@ -276,7 +274,7 @@ class Sampler {
     Rgb c{1, 1, 1};
     for (const RenderPigment& d : m.densities) {
       const Colour s = evaluate_density(d, p);
-      c = mul(c, Rgb{s.r, s.g, s.b});
+      c = c * Rgb{s.r, s.g, s.b};
       // Nothing multiplies a zero density back: the densities after it need not be evaluated.
       if (c.x == 0 && c.y == 0 && c.z == 0) break;
     }
@@ -291,12 +289,11 @@ class Sampler {
     double k = 0.0;
     for (int i = 0; i < media_.count; ++i) k += phase_sum_term(*media_.items[i], alpha);
     k /= media_.count;
-    return mul(scattering, a.colour) * k;
+    return scattering * a.colour * k;
   }
 
   const MediaList& media_;
   const MediaSegment& seg_;
-  const std::vector<RenderLight>& lights_;
   MediaLighting& lighting_;
   MediaRandom& random_;
 };
@@ -321,7 +318,7 @@ void regular_sampling(Sampler& s, std::vector<SampleInterval>& intervals, const 
   const auto variance_high = [&](const SampleInterval& iv) {
     const double n = 1.0 / iv.samples;
     const Rgb mean = iv.te * n;
-    const Rgb va = (iv.te2 * n - mul(mean, mean)) * n;
+    const Rgb va = (iv.te2 * n - mean * mean) * n;
     const double limit = im.sample_threshold[static_cast<std::size_t>(iv.samples - 1)];
     return va.x >= limit || va.y >= limit || va.z >= limit;
   };
@@ -351,7 +348,7 @@ void adaptive_sampling(Sampler& s, std::vector<SampleInterval>& intervals, const
     for (int j = 1; j <= count; ++j, d0 += dd) {
       s.sample(iv, d0 + dd * im.jitter * (s.random() - 0.5), 3, c1, od1);
       s.refine(iv, d0 - dd, d0, result, c0, c1, od_result, od0, od1, im.aa_level - 1, im.jitter, threshold);
-      iv.te += mul(result, exp_neg(iv.od * n));
+      iv.te += result * exp_neg(iv.od * n);
       c0 = c1;
       iv.od += od_result;
       od0 = od1;
@@ -405,7 +402,7 @@ MediaEffect integrate_media(const MediaList& media, const MediaSegment& seg, con
   }
   if (seg.shadow_ray && !use_extinction) return effect;
 
-  Sampler sampler(media, seg, lights, lighting, random);
+  Sampler sampler(media, seg, lighting, random);
   sampler.use_scattering = use_scattering;
   std::vector<LitInterval> lit;
   if (!seg.shadow_ray) {
@@ -434,7 +431,7 @@ MediaEffect integrate_media(const MediaList& media, const MediaSegment& seg, con
   Rgb od{0, 0, 0}, te{0, 0, 0};
   for (const SampleInterval& iv : intervals) {
     const double n = 1.0 / iv.samples;
-    te += mul(iv.te * n, exp_neg(od));
+    te += iv.te * n * exp_neg(od);
     od += iv.od * n;
   }
   effect.transmittance = exp_neg(od);
