@@ -30,7 +30,8 @@ inline bool same_interior(const InteriorRef& a, const InteriorRef& b) {
   const Interior& x = *a.interior;
   const Interior& y = *b.interior;
   return x.ior == y.ior && x.fade_distance == y.fade_distance && x.fade_power == y.fade_power &&
-         x.fade_colour == y.fade_colour && x.refraction == y.refraction && x.hollow == y.hollow && x.media_id == y.media_id;
+         x.fade_colour == y.fade_colour && x.refraction == y.refraction && x.hollow == y.hollow && x.media_id == y.media_id &&
+         x.caustics == y.caustics;
 }
 
 class InteriorList {

@@ -611,7 +611,7 @@ std::optional<Tracer::LightRay> Tracer::cylinder_light_at(const RenderLight& l, 
 // A transparent object filters at every surface crossing, through all its layers (§3); a texture_list triangle by the
 // weighted sum of its textures' filters (an opaque texture among them passes nothing); a patterned texture by the
 // filters of the textures its pattern picks, blended as their colours would be.
-Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at) {
+Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction) {
   const MaterialBlend blend = materials_at(hit);
   if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) return {0, 0, 0};
   bool uv = false;
@@ -621,38 +621,71 @@ Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at) {
   for (int k = 0; k < blend.count; ++k) {
     const Material& m = scene_.materials[blend.material[k]];
     if (m.opaque) continue;
+    if (m.interior.caustics != 0.0) {
+      const Vec3 geometric = surface_normal(hit, at);
+      std::vector<const RenderTexture*> path;
+      const CausticsAt c{dot(geometric, direction) > 0 ? -geometric : geometric, direction, m.interior.caustics, &path};
+      through += texture_filter(m.texture, material_point(m, point), &c) * blend.weight[k];
+      continue;
+    }
     through += texture_filter(m.texture, material_point(m, point)) * blend.weight[k];
   }
   return through;
 }
 
-Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at) const {
+Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at, const CausticsAt* caustics) const {
   if (!texture.patterned()) {
     Rgb layers{1, 1, 1};
     for (const RenderLayer& layer : texture.layers) {
       const PigmentSample s = sample_pigment(layer.pigment, at);
       if (s.found) layers = mul(layers, pass_through(s.colour));
+      if (caustics) layers *= caustics_factor(layer, *caustics, at);
     }
     return layers;
   }
+  struct PathScope {   // the patterned textures passed on the way down, for the caustics' layer normals
+    const CausticsAt* c;
+    explicit PathScope(const CausticsAt* c_, const RenderTexture* t) : c(c_) {
+      if (c) c->path->push_back(t);
+    }
+    ~PathScope() {
+      if (c) c->path->pop_back();
+    }
+  } scope(caustics, &texture);
   const RenderPigment& pattern = texture.pattern;
   if (pattern.pattern == PatternKind::uv_mapping)
-    return texture_filter(texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v));
+    return texture_filter(texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v), caustics);
   const TexturePoint p(to_pattern_space(pattern, at.point), at.u, at.v);
   if (pattern.pattern == PatternKind::average) {
     Rgb sum{0, 0, 0};
     double total = 0;
     for (const RenderTexture& c : texture.children) {
-      sum += texture_filter(c, p) * c.value;
+      sum += texture_filter(c, p, caustics) * c.value;
       total += c.value;
     }
     return sum / total;
   }
   const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
   const MapChoice m = choose_entries(texture.children, value);
-  const Rgb cur = texture_filter(texture.children[m.cur], p);
+  const Rgb cur = texture_filter(texture.children[m.cur], p, caustics);
   if (m.prev == m.cur) return cur;
-  return cur * m.fraction + texture_filter(texture.children[m.prev], p) * (1.0 - m.fraction);
+  return cur * m.fraction + texture_filter(texture.children[m.prev], p, caustics) * (1.0 - m.fraction);
+}
+
+// POV-Ray's fake caustics (ComputeShadowTexture): each layer's light through the surface is scaled by
+// 1 + |N·L|^caustics, N the layer's normal as shading perturbs it (taken through the patterned textures' warps), L
+// the shadow ray's direction.
+double Tracer::caustics_factor(const RenderLayer& layer, const CausticsAt& c, const TexturePoint& at) const {
+  Vec3 n = c.raw_normal;
+  if (layer.normal && quality_.normals) {
+    const auto& path = *c.path;
+    for (const RenderTexture* t : path)
+      if (t->warps_normals) n = normalize(t->world_from_pattern.normal_from_inverse(normalize(n)));
+    n = perturb_normal(*layer.normal, n, at, scene_.wave_sources);
+    for (auto t = path.rbegin(); t != path.rend(); ++t)
+      if ((*t)->warps_normals) n = normalize((*t)->pattern_from_world.normal_from_inverse(normalize(n)));
+  }
+  return 1.0 + std::pow(std::fabs(dot(n, c.direction)), c.exponent);
 }
 
 // Shadow rays as POV-Ray traces them (trace.cpp TracePointLightShadowRay), see povray_shadow_walk. Hits count only
@@ -732,7 +765,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
     }
-    Rgb through = filter_through(c.hit, ray.origin + ray.direction * c.hit.t);
+    Rgb through = filter_through(c.hit, ray.origin + ray.direction * c.hit.t, ray.direction);
     // The media of the interiors crossed since the last surface dim the light the surface lets through (POV-Ray's
     // ComputeShadowColour), as the atmosphere does for lights with media_attenuation (ComputeShadowMedia).
     if (media_ && scene_.any_interior_media && in.any_media() && in.all_hollow() && !all_below(through, tolerance::epsilon))

@@ -120,10 +120,19 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   // +Q0/+Q1: the pigment colour alone (POV-Ray's Q_FULL_AMBIENT).
   Radiance unlit_layers(const RenderTexture& texture, const TexturePoint& at) const;
   Vec3 layer_normal(const RenderNormal& normal, const ShadingPoint& sp, const TexturePoint& at) const;
-  Rgb texture_filter(const RenderTexture& texture, const TexturePoint& at) const;
+  // Fake caustics of the surface a shadow ray crosses (interior `caustics`, POV-Ray's ComputeShadowTexture).
+  struct CausticsAt {
+    Vec3 raw_normal;    // the surface normal, facing against the shadow ray
+    Vec3 direction;     // the shadow ray's
+    double exponent;    // the interior's caustics (45 × the written value)
+    std::vector<const RenderTexture*>* path;   // patterned textures passed on the way down (their normal warps)
+  };
+  Rgb texture_filter(const RenderTexture& texture, const TexturePoint& at, const CausticsAt* caustics = nullptr) const;
+  // 1 + |N·L|^caustics for one layer, N its normal (perturbed as when it is shaded).
+  double caustics_factor(const RenderLayer& layer, const CausticsAt& c, const TexturePoint& at) const;
   // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
   // (S·f + t), or for a texture_list triangle the weighted sum over its textures; black when it stops it.
-  Rgb filter_through(const SurfaceHit& hit, Vec3 at);
+  Rgb filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction);
   // A hit being shaded and the ray that found it: where its transmitted and reflected rays start.
   struct HitContext {
     const Ray& ray;

@@ -226,6 +226,7 @@ struct Finish {
   // Pre-3.1 finish items that POV-Ray moves into the object's interior when the object is placed (Post_Process):
   // `ior` (when given) and `refraction` (always, default 1: it scales what is seen through the object).
   std::optional<double> legacy_ior;
+  std::optional<double> legacy_caustics;   // pre-3.1 `caustics` in finish: moved to the interior as written
   double legacy_refraction = 1.0;
   SourceLoc loc;
   Unsupported unsupported;
@@ -338,6 +339,9 @@ struct Interior {
   double fade_power = 0.0;
   Colour fade_colour{};          // single precision, filter/transmit unused
   double refraction = 1.0;       // legacy `refraction`: scales the light seen through the object
+  // Fake caustics (POV-Ray's Caustics: `caustics C` stores 45·C): light crossing the surface toward a light is
+  // brightened by 1 + |N·L|^caustics, N the layer's normal.
+  double caustics = 0.0;
   bool hollow = false;           // the object's `hollow` flag (POV-Ray keeps it on the interior): fog and media
                                  // reach rays inside hollow objects only
   // media { } blocks in written order (shared: copies of an interior share them until a transform moves them).

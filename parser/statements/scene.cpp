@@ -294,12 +294,13 @@ void SceneStatements::placed(Object& object) {
 // current #default texture.
 void SceneStatements::post_process(Object& object) {
   // Legacy finish items move into the interior (POV-Ray's Post_Process, before the children inherit it): the top
-  // layer's `ior` when given, and its `refraction` always.
+  // layer's `ior` and `caustics` (if not negative) when given, and its `refraction` always.
   if (object.texture && !object.texture->layers.empty()) {
     const Finish& top = object.texture->layers.back().finish;
-    if (top.legacy_ior || top.legacy_refraction != 1.0 || object.interior) {
+    if (top.legacy_ior || top.legacy_caustics || top.legacy_refraction != 1.0 || object.interior) {
       Interior in = object.interior.value_or(Interior{});
       if (top.legacy_ior) in.ior = *top.legacy_ior;
+      if (top.legacy_caustics && *top.legacy_caustics >= 0.0) in.caustics = *top.legacy_caustics;
       in.refraction = top.legacy_refraction;
       object.interior = in;
     }

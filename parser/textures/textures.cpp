@@ -172,6 +172,10 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
       f.legacy_refraction = parse_float();
       warn(t.loc, "'refraction' is not needed to turn refraction on; to attenuate, use fade_power and "
                   "fade_distance in 'interior { }'");
+    } else if (k == "caustics") {
+      // Pre-3.1 syntax: POV-Ray warns and moves the value, unscaled, into the object's interior when it is placed.
+      f.legacy_caustics = parse_float();
+      warn(t.loc, "the caustics value should be given in 'interior { caustics … }'");
     } else if (k == "crand") {
       f.crand = parse_float();
     } else if (!k.empty() && is_reserved_word(k)) {
@@ -356,6 +360,8 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
       parse_float();
       warn(t.loc, "'refraction' is not needed to turn refraction on; to attenuate, use fade_power and "
                   "fade_distance in 'interior { }'");
+    } else if (t.is("caustics")) {
+      in.caustics = parse_float() * 45.0;   // POV-Ray's Parse_Interior scales it so
     } else if (t.is("media")) {
       auto media = in.media ? std::make_shared<std::vector<Media>>(*in.media) : std::make_shared<std::vector<Media>>();
       media->push_back(parse_media_block(t));
@@ -366,7 +372,7 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
       in.media_id = ++next_media_id;
     } else if (t.kind == TokenKind::identifier && is_reserved_word(t.text))
       taint(in.unsupported, skip_unsupported(t, "the interior item '" + std::string(t.text) + "'"));
-    else fail_expected(t, "ior, fade_distance, fade_power, fade_color, media or '}' in interior { }");
+    else fail_expected(t, "ior, fade_distance, fade_power, fade_color, caustics, media or '}' in interior { }");
     t = next();
   }
   return in;

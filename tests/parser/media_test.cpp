@@ -108,6 +108,18 @@ TEST(MediaParse, UnrenderedDensityItemsAreNamed) {
   EXPECT_NE(atmosphere.bare_message().find("the density item 'facets'"), std::string::npos) << atmosphere.what();
 }
 
+// Fake caustics: interior { caustics C } stores 45·C (Parse_Interior); the pre-3.1 finish item moves into the
+// interior unscaled when the object is placed (Post_Process), with a warning.
+TEST(InteriorParse, CausticsScaledInTheInteriorAndUnscaledFromTheFinish) {
+  const SceneDescription s = parse("#version 3.7;\nsphere { 0, 1 interior { caustics 2 } }\n");
+  EXPECT_DOUBLE_EQ(s.objects.at(0).interior->caustics, 90.0);
+  Messages messages;
+  const SceneDescription legacy =
+      parse("#version 3.7;\nsphere { 0, 1 pigment { rgbf 1 } finish { caustics 20 } }\n", &messages);
+  EXPECT_DOUBLE_EQ(legacy.objects.at(0).interior->caustics, 20.0);
+  EXPECT_NE(messages.joined().find("interior { caustics"), std::string::npos) << messages.joined();
+}
+
 struct MediaError {
   std::string name, text, fragment;
 };
