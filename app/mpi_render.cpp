@@ -160,7 +160,7 @@ int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& 
     times[0] = std::chrono::duration<double>(parsed - start).count();
     scene.emplace(render::build_render_scene(description,
                                              {options.output_alpha, options.povray_tolerances, options.specialise,
-                                              render::Quality::quick_colours_at(options.quality), options.quality}));
+                                              render::Quality::quick_colours_at(options.quality), options.quality, options.threads}));
     times[1] = std::chrono::duration<double>(Clock::now() - parsed).count();
     for (const auto& w : scene->warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
   } catch (const std::exception& e) {

@@ -1,4 +1,5 @@
 #include "app/render_job.hpp"
+#include "renderer/photons/photon_map.hpp"
 
 #include <unistd.h>
 
@@ -287,7 +288,7 @@ JobResult render_one_frame(const RenderOptions& options, const FramePlan& plan, 
   const auto build_start = Clock::now();
   const render::RenderScene scene = render::build_render_scene(
       description, {options.output_alpha, options.povray_tolerances, options.specialise,
-                    render::Quality::quick_colours_at(options.quality), options.quality});
+                    render::Quality::quick_colours_at(options.quality), options.quality, options.threads});
   r.times.build_s = seconds_since(build_start);
   if (scene.scale != 1.0 && options.verbose) {
     std::ostringstream note;
@@ -296,6 +297,12 @@ JobResult render_one_frame(const RenderOptions& options, const FramePlan& plan, 
     messages.write(Stream::render, note.str());
   }
   for (const auto& w : scene.warnings) messages.write(Stream::warning, "povtrace: warning: " + w);
+  if (scene.photons) {   // as POV-Ray's "Surface photons stored" statistic
+    std::ostringstream stats;
+    stats << "povtrace: photons: " << scene.photons->size() << " stored, gather radius " << scene.photons->gather_radius()
+          << "\n";
+    messages.write(Stream::statistics, stats.str());
+  }
 
   if (state) {
     state->writer = std::make_unique<StateWriter>(

@@ -6,14 +6,18 @@
 # thread timing), their render times (times.csv) and README.md with the spread.
 # Usage: reference/make_media_random_references.sh [NAME...]   (no names = every scene of scenes/media_random/)
 #        reference/make_media_random_references.sh --no-render (only README.md, from the stored renders)
+#        KIND=photons_random reference/make_media_random_references.sh [...]: the same for scenes/photons_random/
+#        (photon maps shot by several threads, reference/photons_random/).
 # Each scene is rendered from its own folder, scenes/media_random/ (its includes are relative to it), with exactly:
 #   nice povray -D -A +W320 +H240 +FE +WTn [switches] +O../../reference/media_random/NAME.exr (or NAME.wt2_K.exr) NAME.pov
 # where [switches] are those of a "// switches: …" line in the scene, if any. Renders run one after the other.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/.." && pwd)
-scenes=$repo/scenes/media_random
-out=$here/media_random
+kind=${KIND:-media_random}
+case "$kind" in media_random|photons_random) ;; *) echo "KIND must be media_random or photons_random"; exit 2 ;; esac
+scenes=$repo/scenes/$kind
+out=$here/$kind
 runs_wt2=${RUNS_WT2:-3}
 povdiff=${POVDIFF:-$repo/build/povdiff}
 log_dir=$(mktemp -d)
@@ -96,24 +100,38 @@ else
 fi
 
 version=$(povray --version 2>&1 | grep -m1 '^POV-Ray')
-cat > "$out/README.md" <<README
-# Media reference renders that are random in POV-Ray (issue 20)
-
-For each scene \`../../scenes/media_random/NAME.pov\`, made by \`../make_media_random_references.sh\` (run it again
-after changing a scene; \`make_media_random_references.sh NAME...\` redoes only those):
-
-- \`NAME.exr\`: POV-Ray's render with one thread (\`+WT1\`). This is **the reference**. These scenes use media
+if [ "$kind" = photons_random ]; then
+  title="Photon reference renders that are random in POV-Ray (issue 20)"
+  why="These scenes shoot photons from more than one light or at more than one target. POV-Ray
+  hands the light × target units to its shooting threads in turn, each thread jittering its photons from its own run
+  through a fixed table of random numbers: one thread gives the same map every time, two threads another one (which
+  units a thread gets depends on timing). povtrace shoots POV-Ray's one-thread map with any number of threads."
+  folder=photons_random
+  includes=""
+else
+  title="Media reference renders that are random in POV-Ray (issue 20)"
+  why="These scenes use media
   sampling that draws random numbers (method 1; jitter > 0 with method 2 or 3; samples MIN,MAX with MAX > MIN, whose
   extra samples go at random places with method 1 and 2 alike: media.cpp ComputeMediaRegularSampling). POV-Ray takes
   them from a fixed sequence per render thread, so one thread gives the same image every time (checked: two +WT1
   renders are identical), but with two threads which pixels a thread renders, and so which numbers a pixel gets,
-  depends on thread timing.
+  depends on thread timing."
+  folder=media_random
+  includes=" (the scenes include \\\`../media_sampling.inc\\\`)"
+fi
+cat > "$out/README.md" <<README
+# $title
+
+For each scene \`../../scenes/$folder/NAME.pov\`, made by \`KIND=$folder ../make_media_random_references.sh\` (run it
+again after changing a scene; with NAME... it redoes only those):
+
+- \`NAME.exr\`: POV-Ray's render with one thread (\`+WT1\`). This is **the reference**. $why
 - \`NAME.wt2_1.exr\` … \`NAME.wt2_$runs_wt2.exr\`: $runs_wt2 renders with two threads (\`+WT2\`), POV-Ray's own spread.
 - \`times.csv\`: wall-clock seconds of each POV-Ray run (start to exit), POV-Ray's "Trace Time" and the 1-minute load
   average just before the run (the machine is shared: the times are indicative).
 
 - POV-Ray version (first line of \`povray --version\`): \`$version\` (Debian's povray package)
-- Command, run in \`scenes/media_random/\` (the scenes include \`../media_sampling.inc\`), for each scene:
+- Command, run in \`scenes/$folder/\`$includes, for each scene:
   \`nice povray -D -A +W320 +H240 +FE +WT1 [switches] +O…/NAME.exr NAME.pov\`, then $runs_wt2 times the same with
   \`+WT2\` and \`NAME.wt2_K.exr\`; [switches] are those of a \`// switches: …\` line in the scene, if any. No
   anti-aliasing, 320×240, OpenEXR (half float, RGB, zip, linear, unclipped). Debian's /etc/povray/3.7/povray.ini is

@@ -56,5 +56,9 @@ script (\`make_animation_references.sh\`) and README.
 more than one thread: a +WT1 reference and three +WT2 renders each), with their own script
 (\`make_media_random_references.sh\`) and README. \`media_scenes.md\` lists the media scenes (\`media_*\`, issue 20): what
 each tests, POV-Ray's render times, determinism, and the Debian sample scenes that use media.
+
+\`photons_random/\` holds POV-Ray's renders of \`../scenes/photons_random/\` (photon maps shot from several lights or
+targets, which POV-Ray shoots differently with more than one thread: a +WT1 reference and three +WT2 renders each),
+made by \`KIND=photons_random make_media_random_references.sh\`, with its own README.
 README
 exit $failed

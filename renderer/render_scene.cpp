@@ -15,6 +15,7 @@
 
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/media/render_media.hpp"
+#include "renderer/photons/photon_shoot.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/pattern/render_texture.hpp"
 
@@ -56,25 +57,40 @@ RenderLight make_light(const Light& l) {
 // Objects sharing one texture (and no interior of their own) share one material.
 class MaterialTable {
  public:
-  MaterialTable(std::vector<Material>& materials, ImageCache& images, bool quick_colours)
-      : materials_(materials), images_(images), quick_colours_(quick_colours) {}
+  MaterialTable(std::vector<Material>& materials, ImageCache& images, bool quick_colours,
+                const photons::PhotonGroups* photon_groups)
+      : materials_(materials), images_(images), quick_colours_(quick_colours), photon_groups_(photon_groups) {}
   std::uint32_t material_for(const Object& o) {
     const Key key{o.texture.get(), o.uv_mapping};
-    auto found = o.interior ? shared_.end() : shared_.find(key);
+    // An object with an interior or photon flags of its own gets a material of its own.
+    const std::uint32_t target = photon_target_of(o);
+    const bool shareable = !o.interior && o.photons == ObjectPhotons{} && target == kNoPhotonTarget;
+    auto found = shareable ? shared_.find(key) : shared_.end();
     if (found != shared_.end()) return found->second;
     materials_.push_back(make_material(*o.texture, o.interior, o.uv_mapping, images_, quick_colours_));
+    materials_.back().photons = o.photons;
+    materials_.back().photon_target = target;
     const auto index = static_cast<std::uint32_t>(materials_.size() - 1);
-    if (!o.interior) shared_.emplace(key, index);
+    if (shareable) shared_.emplace(key, index);
     return index;
   }
   // A mesh placement's own textures, as consecutive materials (the index of the first is returned).
   std::uint32_t append(const std::vector<std::shared_ptr<const Texture>>& textures, const Object& o) {
     const auto first = static_cast<std::uint32_t>(materials_.size());
-    for (const auto& t : textures) materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_, quick_colours_));
+    for (const auto& t : textures) {
+      materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_, quick_colours_));
+      materials_.back().photons = o.photons;
+      materials_.back().photon_target = photon_target_of(o);
+    }
     return first;
   }
 
  private:
+  std::uint32_t photon_target_of(const Object& o) const {
+    if (!photon_groups_) return kNoPhotonTarget;
+    const auto it = photon_groups_->group_of.find(&o);
+    return it == photon_groups_->group_of.end() ? kNoPhotonTarget : it->second;
+  }
   // A texture placed with and without uv_mapping makes two materials.
   using Key = std::pair<const Texture*, bool>;
   struct KeyHash {
@@ -83,6 +99,7 @@ class MaterialTable {
   std::vector<Material>& materials_;
   ImageCache& images_;
   bool quick_colours_;
+  const photons::PhotonGroups* photon_groups_;
   std::unordered_map<Key, std::uint32_t, KeyHash> shared_;
 };
 
@@ -202,7 +219,10 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   std::vector<Primitive> primitives;
   primitives.reserve(scene.objects.size());
   ImageCache images;
-  MaterialTable materials(r.materials, images, options.quick_colours);
+  // Photon targets and the objects in their trees, whose materials name their target.
+  const bool shoot_photons = scene.photons && options.quality >= 9;
+  const photons::PhotonGroups photon_groups = shoot_photons ? photons::find_photon_groups(scene) : photons::PhotonGroups{};
+  MaterialTable materials(r.materials, images, options.quick_colours, shoot_photons ? &photon_groups : nullptr);
   // The scene's noise generator as it stands when the scene ends (POV-Ray: 1 before #version 3.5, 2 from then on).
   const int generator = scene.settings.noise_generator.value_or(scene.language_version < 350 ? 1 : 2);
   SharedMeshes meshes;              // one BVH per declared mesh, however often it is placed
@@ -271,6 +291,13 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     r.assumed_gamma = 1.0;
   } else {
     r.gamma_mode = GammaMode::legacy_srgb;
+  }
+  // Photons last: the photon pass traces the finished scene. POV-Ray shoots them only at +Q9 (Q_ADVANCED_LIGHT,
+  // as radiosity); below it the scene renders as without its photons block.
+  if (shoot_photons) {
+    r.photon_settings = scene.photons;
+    r.photon_targets = photons::bound_photon_targets(photon_groups, r.accelerator, context);
+    r.photons = photons::shoot_photons(r, options.quality, options.threads, r.warnings);
   }
   return r;
 }

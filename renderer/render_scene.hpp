@@ -151,7 +151,11 @@ struct Material {
   bool opaque = true;                // blocks shadow rays outright (pipeline §3 "opaque" flag)
   bool uv_mapping = false;           // the object's uv_mapping: textures at the hit's <u, v, 0>
   bool needs_uv = false;             // uv coordinates are read somewhere (uv_mapping of any kind)
+  ObjectPhotons photons;             // the object's photons { } flags (a CSG child's as its parent left them)
+  // The photon target (index into RenderScene::photon_targets) whose tree the object is in; none: kNoPhotonTarget.
+  std::uint32_t photon_target = ~0u;
 };
+inline constexpr std::uint32_t kNoPhotonTarget = ~0u;
 
 struct RenderLight {
   Light light;                       // as described (location, colour, kind, spot and fade parameters)
@@ -199,6 +203,18 @@ struct SpecialisationChoice {
   static std::string names();   // the names, comma-separated, for the usage text and errors
 };
 
+namespace photons { class PhotonMap; }   // renderer/photons/photon_map.hpp
+
+// A photon target (POV-Ray shoots each light's photons at every target's bounding sphere; docs/issue20-photons.md
+// §2): the first object with `target` on each path down the scene's object trees, its bounding sphere (POV-Ray's
+// from its bounding box) and its flags.
+struct PhotonTarget {
+  Vec3 centre;
+  double radius = 0;
+  bool bounded = false;   // false: no finite box (nothing is shot at it)
+  ObjectPhotons flags;
+};
+
 struct RenderScene {
   double scale = 1.0;
   Specialisation specialisation;   // the factor the scene was rescaled by for scale invariance (scene_scale.hpp), 1 if not
@@ -235,6 +251,11 @@ struct RenderScene {
   std::vector<InteriorRef> containing_interiors(Vec3 point) const;
   std::vector<std::string> warnings; // approximations the build had to make, for the user to see
   std::vector<WaveSource> wave_sources;   // for ripples and waves normals
+  // Photons (global_settings { photons { } }): the settings with the scene's limits filled in, the targets, and
+  // the map shot when the scene was built (null when no photon was stored).
+  std::optional<PhotonSettings> photon_settings;
+  std::vector<PhotonTarget> photon_targets;
+  std::shared_ptr<const photons::PhotonMap> photons;
 };
 
 struct BuildOptions {
@@ -253,6 +274,8 @@ struct BuildOptions {
   // The quality level (+Q): POV-Ray computes radiosity only at +Q9 and renders a radiosity scene as if it had no
   // radiosity block below that (study §7, checked with povray 3.7.0.10: +Q8 images are identical).
   int quality = 9;
+  // Threads for the photon pass (0: every hardware thread). The map is the same for any count.
+  int threads = 0;
 };
 
 RenderScene build_render_scene(const SceneDescription& scene, const BuildOptions& options);

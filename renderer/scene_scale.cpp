@@ -135,6 +135,11 @@ SceneDescription scaled_scene(const SceneDescription& scene, double k) {
     for (Pigment& d : a.densities) transform_pattern(d, m);
     scale_media_coefficients(a, k);
   }
+  if (s.photons) {   // photon spacing and gather radii are world distances
+    s.photons->spacing *= k;
+    if (s.photons->radius > 0) s.photons->radius *= k;
+    if (s.photons->media_radius > 0) s.photons->media_radius *= k;
+  }
   for (Fog& f : s.fogs) {
     f.distance *= k;
     f.alt *= k;

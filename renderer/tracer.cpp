@@ -2,6 +2,7 @@
 // that document whose behaviour each step reproduces.
 #include "renderer/tracer.hpp"
 #include "renderer/render.hpp"
+#include "renderer/shading_helpers.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -15,7 +16,6 @@ namespace povtrace::render {
 
 namespace {
 Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-double max_channel(Rgb c) { return std::max({c.x, c.y, c.z}); }
 
 // Smooth step used by spotlights' falloff zone (§3): 0 below a, 1 at or above b, 3s²−2s³ between.
 double smoothstep(double a, double b, double x) {
@@ -25,8 +25,6 @@ double smoothstep(double a, double b, double x) {
   return s * s * (3.0 - 2.0 * s);
 }
 
-// Light arriving through a pigment: filter tints by the colour, transmit does not (§3, §4).
-Rgb pass_through(const Colour& s) { return Rgb{s.r, s.g, s.b} * s.f + Rgb{s.t, s.t, s.t}; }
 
 constexpr double kPhongCutoff = 0.0008;       // phong highlights with size ≥ 60 vanish below this (§2)
 constexpr double kPhongCutoffSize = 60.0;
@@ -51,6 +49,11 @@ Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
   if (quality.fog && (scene.atmosphere || !scene.fogs.empty()))
     for (const RenderLight& l : scene.lights)
       shadow_atmosphere_ = shadow_atmosphere_ || (l.light.media_interaction && l.light.media_attenuation);
+  if (scene.photon_settings) {
+    photon_map_ = scene.photons.get();
+    photon_max_level_ = scene.photon_settings->max_trace_level.value_or(scene.settings.max_trace_level);
+    photon_adc_ = scene.photon_settings->adc_bailout.value_or(scene.settings.adc_bailout);
+  }
   if (scene.radiosity) {
     gatherer_ = std::make_unique<radiosity::Gatherer>(*scene.radiosity, scene.camera.location);
     sample_volume_ = scene.radiosity->settings.media;
@@ -213,51 +216,8 @@ double Tracer::relative_ior(const InteriorRef& self, const RayState& state) cons
 }
 
 namespace {
-// A layer's reflection colour and the weight of the ray it reflects.
-struct Reflectivity {
-  Rgb amount;
-  double weight;
-};
-
-// POV-Ray's reflectivity of one layer (§4 "Reflection amount"): c = cosine of incidence; `weight`, the weight the
-// layer is seen with, is scaled to the reflected ray's weight.
-Reflectivity reflectivity(const Finish& f, double c, double ior, double weight) {
-  const Rgb lo = rgb_of(f.reflection_min), hi = rgb_of(f.reflection_max);
-  if (!f.reflection_fresnel) {
-    weight *= std::max(max_channel(hi), max_channel(lo));
-    const double k = std::fabs(f.reflection_falloff - 1.0) > tolerance::epsilon
-                         ? std::pow(1.0 - c, f.reflection_falloff)
-                         : 1.0 - c;
-    if (std::fabs(k) < tolerance::epsilon) return {lo, weight};
-    if (std::fabs(k - 1.0) < tolerance::epsilon) return {hi, weight};
-    return {hi * k + lo * (1.0 - k), weight};
-  }
-  Rgb r = hi;
-  const double g2 = ior * ior + c * c - 1.0;
-  if (g2 > 0) {
-    const double g = std::sqrt(g2);
-    const double a = (g - c) / (g + c);
-    const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
-    const double fr = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
-    r = hi * fr + lo * (1.0 - fr);
-  }
-  weight *= max_channel(r);
-  return {r, weight};
-}
-
 bool is_zero(Rgb c) { return c.x == 0 && c.y == 0 && c.z == 0; }
 
-// A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).
-double speckle_random(Vec3 p, std::size_t light) {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull * (light + 1);
-  for (const double v : {p.x, p.y, p.z}) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 27; h *= 0x94D049BB133111EBull; h ^= h >> 31;
-  }
-  return static_cast<double>(h >> 11) * (1.0 / 9007199254740991.0);
-}
 }  // namespace
 
 namespace {
@@ -265,17 +225,6 @@ Radiance mix(const Radiance& a, double wa, const Radiance& b, double wb) {
   return {a.colour * wa + b.colour * wb, a.transmit * wa + b.transmit * wb};
 }
 
-// The texture point with the hit's uv coordinates when the material reads them.
-TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv, double scene_scale) {
-  if (!uv) return TexturePoint(point);
-  const auto [u, v] = uv_coordinates(hit, point, scene_scale);
-  return TexturePoint(point, u, v);
-}
-
-// Where a material's textures are evaluated: the hit's <u, v, 0> on a uv-mapped object (POV-Ray's UV_FLAG).
-TexturePoint material_point(const Material& m, const TexturePoint& at) {
-  return m.uv_mapping ? TexturePoint({at.u, at.v, 0.0}, at.u, at.v) : at;
-}
 }  // namespace
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
@@ -387,6 +336,17 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
   [[maybe_unused]] const bool radiosity =
       Radiosity && state.radiosity_depth < static_cast<int>(scene_.radiosity->depths.size());
   Vec3 top_normal = raw_normal;   // the top layer's normal: refraction and TIR use it (§4)
+  // Photons: gathered once for the hit, added to each layer's light unless the object ignores them (collect off),
+  // which also keeps photon targets from darkening its shadows.
+  PhotonGather photon_gather;
+  const bool ignores_photons = !scene_.materials[hit.leaf->material].photons.collect;
+  struct IgnoreScope {
+    bool& current;
+    bool outer;
+    ~IgnoreScope() { current = outer; }
+  } ignore_scope{lit_ignores_photons_, lit_ignores_photons_};
+  lit_ignores_photons_ = ignores_photons;
+  const bool gather_photons = photon_map_ && !ignores_photons && !state.pretrace && model_ == ShadingModel::povray;
   for (const RenderLayer& layer : texture.layers) {
     if (trans <= adc_bailout_) break;
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
@@ -409,6 +369,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
                   : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
     if constexpr (Radiosity)
       if (radiosity) lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
+    if (gather_photons) [[unlikely]] lit += photon_light(layer, s, sp, normal, ray.direction, state, photon_gather);
     out.colour += mul(lit, filter);
     if (found) {
       filter = mul(filter, pass_through(s));
@@ -421,6 +382,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
     trans = std::min(1.0, std::fabs(grey(filter)));
   }
 
+  if (photon_gather.done) --photon_gather_depth_;
   const HitContext here{ray, sp, level, weight, state};
   bool total_internal_reflection = false;
   if (trans > transmit_bailout_) {
@@ -765,6 +727,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
     }
+    if (photon_map_ && photons_replace_shadow(l, c.hit)) return {0, 0, 0};
     Rgb through = filter_through(c.hit, ray.origin + ray.direction * c.hit.t, ray.direction);
     // The media of the interiors crossed since the last surface dim the light the surface lets through (POV-Ray's
     // ComputeShadowColour), as the atmosphere does for lights with media_attenuation (ComputeShadowMedia).
@@ -791,6 +754,40 @@ Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, doub
   // Radiosity sample rays treat area lights as point lights (POV-Ray clears Q_AREA_LIGHT for them, study §1.1).
   if (l.light.area && quality_.area_lights && state.radiosity_depth == 0) return area_light_shadow(l, point, to_light, colour, state);
   return mul(colour, shadow_filter(l, point, to_light, distance, state));
+}
+
+// What one light of colour `lc` from direction `to_light` (c = N·L) adds to a layer (POV-Ray's ComputeDiffuseColour,
+// ComputePhongColour and ComputeSpecularColour): diffuse with brilliance, or diffuse_back from behind; highlights
+// tinted by metallic. The lights' loop and the photons' gather (photons/photon_gather.cpp) both use it.
+Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 normal, Vec3 view, Rgb lc, Vec3 to_light,
+                      double c, double speckle, bool highlights) const {
+  const Finish& fin = layer.finish;
+  if (c < tolerance::epsilon) {   // behind the surface: only diffuse_back
+    if (fin.diffuse_back > 0)
+      return mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle);
+    return {};
+  }
+  Rgb out;
+  if (fin.diffuse > 0)
+    out += mul(pigment, lc) * (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
+  if (!highlights) return out;
+  Rgb highlight = lc;
+  if (fin.metallic != 0) {
+    const double fade = metallic_fade(std::acos(std::clamp(c, -1.0, 1.0)) / (M_PI / 2));
+    highlight = mul(lc, Rgb{1, 1, 1} + (pigment - Rgb{1, 1, 1}) * (fin.metallic * (1.0 - fade)));
+  }
+  if (fin.phong != 0) {
+    const Vec3 mirrored = view - normal * (2.0 * dot(view, normal));
+    const double p = dot(mirrored, to_light);
+    if (p > 0 && !(fin.phong_size >= kPhongCutoffSize && p <= kPhongCutoff))
+      out += highlight * (fin.phong * std::pow(p, fin.phong_size));
+  }
+  if (fin.specular != 0) {
+    const Vec3 half = (to_light - view) * 0.5;
+    const double h = dot(normal, half) / length(half);
+    if (h > 0) out += highlight * (fin.specular * std::pow(h, layer.specular_exponent));
+  }
+  return out;
 }
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
@@ -829,32 +826,8 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) continue;
     }
-    if (behind) {
-      if (fin.diffuse_back > 0)
-        out += mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle);
-      continue;
-    }
-    if (fin.diffuse > 0)
-      out += mul(pigment, lc) *
-             (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
-    if (l.light.shadowless || !highlights) continue;   // fill lights give no highlights
-
-    Rgb highlight = lc;
-    if (fin.metallic != 0) {
-      const double fade = metallic_fade(std::acos(std::clamp(c, -1.0, 1.0)) / (M_PI / 2));
-      highlight = mul(lc, Rgb{1, 1, 1} + (pigment - Rgb{1, 1, 1}) * (fin.metallic * (1.0 - fade)));
-    }
-    if (fin.phong != 0) {
-      const Vec3 mirrored = view - normal * (2.0 * dot(view, normal));
-      const double p = dot(mirrored, to_light);
-      if (p > 0 && !(fin.phong_size >= kPhongCutoffSize && p <= kPhongCutoff))
-        out += highlight * (fin.phong * std::pow(p, fin.phong_size));
-    }
-    if (fin.specular != 0) {
-      const Vec3 half = (to_light - view) * 0.5;
-      const double h = dot(normal, half) / length(half);
-      if (h > 0) out += highlight * (fin.specular * std::pow(h, layer.specular_exponent));
-    }
+    out += one_light(layer, pigment, att, normal, view, lc, to_light, c, speckle,
+                     highlights && !l.light.shadowless);   // fill lights give no highlights
   }
   return out;
 }

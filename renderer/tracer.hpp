@@ -11,6 +11,7 @@
 
 #include "renderer/interior_list.hpp"
 #include "renderer/media/media_integrator.hpp"
+#include "renderer/photons/photon_map.hpp"
 #include "renderer/radiosity/gather.hpp"
 #include "renderer/render_scene.hpp"
 
@@ -43,8 +44,8 @@ struct Radiance {
 //   5–   area lights sampled over their area (below: shadows from their centre as from a point light)
 //   6–   transmitted (refracted) rays
 //   8–   reflected rays and normal perturbation
-//   9    fog (POV-Ray's Q_VOLUME: also media and rainbows, and Q_ADVANCED_LIGHT/Q_SUBSURFACE for radiosity,
-//        photons and subsurface scattering, none of which povtrace renders)
+//   9    fog (POV-Ray's Q_VOLUME: also media and rainbows), and Q_ADVANCED_LIGHT: radiosity and photons (applied
+//        when the scene is built: BuildOptions::quality); Q_SUBSURFACE (subsurface scattering) is not rendered
 // 10 and 11 are 9 (the option parser clips them, as povray does).
 struct Quality {
   bool full_ambient = false;
@@ -78,6 +79,21 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   void begin_block(int tile, int pass = radiosity::final_pass_id);
   // The radiosity evaluator of this tracer (null without radiosity): its block samples, its global level.
   radiosity::Gatherer* gatherer() { return gatherer_.get(); }
+
+  // The photon pass (photons/photon_trace.cpp, POV-Ray's PhotonTrace): one photon from a light toward a target,
+  // followed through the reflections and refractions the objects' and the light's photon flags allow; photons are
+  // left on the surfaces it reaches after its first bounce. What POV-Ray keeps per thread for the photon in flight
+  // is kept here.
+  struct PhotonShot {
+    const RenderLight* light = nullptr;
+    std::uint32_t target = 0;          // the target shot at (index into RenderScene::photon_targets)
+    double spread = 0;                 // the angular (parallel lights: spatial) spacing of the photons
+    bool hit_target = false;           // the target was reached first (the autostop test reads it)
+    double depth = 0;                  // distance travelled from the light
+    bool pass_prev = true, pass_this = false;   // POV-Ray's passThruPrev / passThruThis
+    std::vector<photons::Photon>* out = nullptr;
+  };
+  void shoot_photon(const Ray& ray, Rgb colour, const std::vector<InteriorRef>& interiors, PhotonShot& shot);
 
  private:
   // What a ray carries besides its geometry: the interiors it is in, and whether a miss may show the background's
@@ -213,6 +229,38 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Rgb shadow_atmosphere(const RenderLight& l, const Ray& ray, double from, double to, Rgb f, bool hollow,
                         bool at_surface);
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
+  // What one light of colour `lc` from `to_light` (c = N·L) adds to a layer (diffuse, diffuse_back, highlights).
+  Rgb one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 normal, Vec3 view, Rgb lc, Vec3 to_light,
+                double c, double speckle, bool highlights) const;
+
+  // ---- photon pass (photons/photon_trace.cpp) ----
+  struct PhotonHit {
+    const Ray& ray;
+    const ShadingPoint& sp;
+    int level;          // POV-Ray's trace level of this hit (1 for the light's ray)
+    double weight;
+    const RayState& state;
+    PhotonShot& shot;
+  };
+  void photon_trace(const Ray& ray, Rgb colour, int level, double weight, const RayState& state, PhotonShot& shot);
+  void photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, int level, double weight,
+                      const RayState& state, PhotonShot& shot);
+  void photon_texture(const PhotonHit& at, const RenderTexture& texture, const TexturePoint& tp, Rgb colour);
+  void photon_layers(const PhotonHit& at, const RenderTexture& texture, const TexturePoint& tp, Rgb colour);
+  bool photon_refract(const PhotonHit& at, Vec3 normal, Rgb filter, Rgb colour, double weight);
+  void photon_reflect(const PhotonHit& at, Vec3 normal, Rgb colour, double weight);
+  void deposit_photon(const PhotonHit& at, Rgb colour);
+  // ---- photon gather (photons/photon_gather.cpp, POV-Ray's ComputePhotonDiffuseLight) ----
+  // The photons around a shaded point, gathered once per textured hit by the first layer that asks.
+  struct PhotonGather {
+    bool done = false;
+    std::size_t slot = 0;   // in photon_gathers_
+  };
+  Rgb photon_light(const RenderLayer& layer, const Colour& pigment, const ShadingPoint& sp, Vec3 normal, Vec3 view,
+                   const RayState& state, PhotonGather& g);
+  // A photon target the light's photons were shot at stops its shadow ray outright (the light reaches the surface
+  // through the photons instead), unless the lit surface ignores photons (POV-Ray's ComputeShadowColour).
+  bool photons_replace_shadow(const RenderLight& l, const SurfaceHit& crossing) const;
 
   const RenderScene& scene_;
   ShadingModel model_;
@@ -244,6 +292,15 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   // MIN_ISECT_DEPTH as near limit instead of SHADOW_TOLERANCE, which is what shadows tiny scenes more.
   std::vector<std::uint32_t> shadow_cache_;
   int shading_level_ = 1;   // the trace level of the hit being shaded (which cache slot its shadow rays use)
+  // Photons: the map (null without), the photon pass's limits, the lit object's `collect off` as its shadow rays
+  // need it, and the gathered photons of the textured hits being shaded (a stack: radiosity nests shading).
+  const photons::PhotonMap* photon_map_ = nullptr;
+  int photon_max_level_ = 5;
+  double photon_adc_ = 1.0 / 255.0;
+  bool lit_ignores_photons_ = false;
+  std::vector<photons::Gathered> photon_gathers_;
+  std::size_t photon_gather_depth_ = 0;
+  std::vector<double> photon_scratch_;
 };
 
 // A pigment's colour at a point, and POV-Ray's Compute_Pigment result: not found where only image maps used

@@ -473,6 +473,19 @@ struct PlacedBox {
   std::optional<ExtentBox> moved;
 };
 
+// photons { … } on an object (POV-Ray's PH_* object flags, parse.cpp; issue20-photons.md): a photon target is shot
+// at by every light whose flags and the object's allow refraction or reflection; `collect off` keeps photons off
+// its surface; a pass_through object lets photons on their way to a target cross it unchanged. A CSG parent's
+// flags reach its children (POV-Ray's Post_Process).
+struct ObjectPhotons {
+  double target = 0;                   // > 0: a target, its spacing multiplier (`target [F]`, 1 by default)
+  std::optional<bool> refraction;      // `refraction on|off`: unset is neither (the light's setting decides)
+  std::optional<bool> reflection;
+  bool collect = true;
+  bool pass_through = false;
+  bool operator==(const ObjectPhotons&) const = default;
+};
+
 struct Object {
   Shape shape;
   Matrix world_from_object;                 // composed object transforms in written order
@@ -500,6 +513,7 @@ struct Object {
   // object no longer move them (POV-Ray's UV_FLAG). CSG children that inherit the texture inherit the flag.
   bool uv_mapping = false;
   std::optional<bool> hollow;               // unset: inherited from a CSG parent, else false
+  ObjectPhotons photons;
   SourceLoc loc;
   Unsupported unsupported;
   std::vector<Object> clipped_by;           // the surface and inside are limited to inside all of these
@@ -564,6 +578,10 @@ struct Light {
   bool orient = false;
   bool media_interaction = true;    // the light scatters in media
   bool media_attenuation = false;   // media (and fog) between it and a point dim it
+  // photons { refraction on|off reflection on|off area_light }: whether it shoots photons at targets (with the
+  // target's flags: either one `on` and neither `off`), and from every cell of its area light.
+  std::optional<bool> photon_refraction, photon_reflection;
+  bool photon_area_light = false;
   // looks_like { object }: an object placed at the light (moved with it), casting no shadow; the parser places it in
   // the scene next to the light. At most one.
   std::vector<Object> looks_like;
@@ -605,6 +623,29 @@ struct GlobalSettings {
   int number_of_waves = 10;              // the wave sources ripples and waves normals sum over
 };
 
+// global_settings { photons { … } } (POV-Ray's ScenePhotonSettings, parse.cpp; issue20-photons.md): the photon map's
+// spacing (or a count it is derived from), how photons are gathered, and the tracing limits of the photon pass.
+struct PhotonSettings {
+  double spacing = 1.0;              // world distance between photons at a target (times its multiplier)
+  int count = 0;                     // > 0: spacing is derived from an estimate of the photons it gives
+  int gather_min = 20, gather_max = 100;
+  double expand_tolerance = 0.2;     // expand_thresholds: how much the density may change when the radius grows
+  int expand_min = 35;               // … and below how many photons it grows anyway
+  double jitter = 0.4;
+  double autostop = 0.5;             // fraction of a target's angular radius after which a missed ring stops
+  std::optional<int> max_trace_level;     // unset: the scene's
+  std::optional<double> adc_bailout;      // unset: the scene's
+  double radius = -1, radius_multiplier = 1;   // gather radius (≤ 0: estimated from the map) and its factor
+  double media_radius = -1, media_radius_multiplier = 1;
+  int media_steps = 0;               // always 0: `media N` (media photons) is refused by name
+  double media_spacing_factor = 1.0;
+  // load_file "F" (the map is read from F instead of shot) or save_file "F" (written to F once shot), in POV-Ray's
+  // file layout; at most one of them (the last written wins, as in POV-Ray).
+  std::string load_file, save_file;
+  SourceLoc file_loc;                // where that file was named
+  SourceLoc loc;                     // the photons keyword
+};
+
 struct SceneDescription {
   // The file names the locations of everything in the description point to (source_location.hpp).
   std::shared_ptr<const FileNames> file_names;
@@ -626,6 +667,8 @@ struct SceneDescription {
   // #default { radiosity { importance F } } as it stands at the end of the parse: the importance of every object
   // whose radiosity_importance is unset (POV-Ray's defaultImportance, read when rendering). 1.0 unless written.
   double radiosity_default_importance = 1.0;
+  // global_settings { photons { … } } with a positive gather maximum (POV-Ray's photonsEnabled); absent otherwise.
+  std::optional<PhotonSettings> photons;
   Camera camera;
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
   std::optional<SkySphere> sky_sphere;

@@ -124,6 +124,7 @@ class ObjectParser : ParserPart {
   // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
   static void invert_object(Object& object);                  // De Morgan for CSG (§10)
   void parse_clip_or_bound(const Token& keyword, Object& object);
+  void parse_object_photons(const Token& keyword, Object& object);   // object_photons.cpp
   std::vector<Object> parse_bound_clip_objects(const Token& keyword);
   bool all_children_finite(const Csg& csg) const;
 

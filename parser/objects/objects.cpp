@@ -107,12 +107,13 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
     return true;
   }
   if (k == "sturm" && try_sturm_modifier(t, object)) return true;
+  if (k == "photons") { parse_object_photons(t, object); return true; }
   if (k == "open")   // POV-Ray reads `open` only right after the parameters of a cylinder, cone, prism or sor
     fail_at(t, "'open' must directly follow the parameters of a cylinder, cone, prism or sor; it is no object "
                "modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "double_illuminate", "sturm", "interior_texture", "photons", "split_union", "cutaway_textures",
+      "double_illuminate", "sturm", "interior_texture", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {

@@ -26,6 +26,7 @@ class CameraLightParser : ParserPart {
   Camera parse_camera_transforms(Camera camera, Token t);
   std::optional<Projection> try_camera_type(const Token& t);
   void parse_area_light(const Token& keyword, Light& light);
+  void parse_light_photons(const Token& keyword, Light& light);
   void parse_looks_like(const Token& keyword, Light& light);
   using ParserPart::apply_transform;   // an object's (looks_like), next to the light's below
   void apply_transform(Light& light, const Matrix& m);

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "scene/description_transforms.hpp"
+#include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/statements/camera_light_parser.hpp"
 #include "parser/objects/object_transform.hpp"
@@ -297,7 +298,8 @@ bool CameraLightParser::try_light_modifier(const Token& t, Light& light) {
     if (!light.area) warn(t.loc, "'" + std::string(k) + "' only affects an area_light");
   } else if (k == "media_interaction") light.media_interaction = optional_float(1.0) > 0.0;
   else if (k == "media_attenuation") light.media_attenuation = optional_float(1.0) > 0.0;
-  else if (k == "projected_through" || k == "photons" || k == "area_illumination")
+  else if (k == "photons") parse_light_photons(t, light);
+  else if (k == "projected_through" || k == "area_illumination")
     taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;
@@ -322,6 +324,21 @@ void CameraLightParser::parse_looks_like(const Token& keyword, Light& light) {
 
 // area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's
 // Parse_Light_Source); a negative size is refused here too, as it would give no samples at all.
+// photons { refraction B reflection B area_light } (POV-Ray's Parse_Light_Source; refraction and reflection read a
+// float and truncate it).
+void CameraLightParser::parse_light_photons(const Token& keyword, Light& light) {
+  (void)keyword;
+  expect("{", " after 'photons'");
+  while (true) {
+    const Token t = next();
+    if (t.is("}")) return;
+    if (t.is("refraction")) light.photon_refraction = saturating_cast<int>(parse_float()) != 0;
+    else if (t.is("reflection")) light.photon_reflection = saturating_cast<int>(parse_float()) != 0;
+    else if (t.is("area_light")) light.photon_area_light = true;
+    else fail_expected(t, "refraction, reflection, area_light or '}' in the light's photons { }");
+  }
+}
+
 void CameraLightParser::parse_area_light(const Token& keyword, Light& light) {
   (void)keyword;
   light.area = true;

@@ -8,6 +8,7 @@
 #include "parser/lexing/reserved_words.hpp"
 #include "parser/statements/scene_statements.hpp"
 #include "parser/objects/object_transform.hpp"
+#include "parser/objects/object_photons.hpp"
 
 namespace povtrace::sdl {
 
@@ -164,6 +165,8 @@ void SceneStatements::parse_global_settings(const Token& keyword) {
       if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
     } else if (k == "radiosity") {
       radiosity_.parse_settings(t, scene_.radiosity);
+    } else if (k == "photons") {
+      parse_photon_settings(t);
     } else if (k == "hf_gray_16") {
       // POV-Ray 3.7 reads an optional float and ignores the setting with this warning (grey output is a command-line
       // option there).
@@ -319,6 +322,7 @@ void SceneStatements::post_process(Object& object) {
       if (object.no_image) child.no_image = true;
       if (object.no_reflection) child.no_reflection = true;
       if (object.no_radiosity) child.no_radiosity = true;
+      inherit_photon_flags(object.photons, child.photons, [&](const std::string& m) { warn(child.loc, m); });
       // A child without a radiosity importance takes its parent's, or the #default in force now: POV-Ray fixes it
       // when the top-level object is placed, while a top-level object without one reads the #default in force at
       // the end of the parse (SceneDescription::radiosity_default_importance).

@@ -72,6 +72,7 @@ class SceneStatements : ParserPart {
  private:
   void parse_statement(const Token& t);
   void parse_global_settings(const Token& keyword);
+  void parse_photon_settings(const Token& keyword);   // photon_settings.cpp
   void parse_background(const Token& keyword);
   void add_light(Light light, std::optional<double> importance);   // importance: the CSG parent's, if any
   void post_process(Object& object);

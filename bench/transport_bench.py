@@ -1,21 +1,26 @@
 #!/usr/bin/env python3
-"""Media: povtrace against POV-Ray 3.7 on the scenes that use participating media, side by side in the same run.
+"""Media and photons (issue 20): povtrace against POV-Ray 3.7 on the scenes that use them, side by side in the same run.
 
-    python3 bench/media_bench.py                       # every case, 320x240, 3 repetitions, 2 threads
-    python3 bench/media_bench.py --only micro mediasky --reps 1
-    python3 bench/media_bench.py --list
+    python3 bench/transport_bench.py                   # the media set: every case, 320x240, 3 repetitions, 2 threads
+    python3 bench/transport_bench.py --set photons     # the photon set
+    python3 bench/transport_bench.py --only micro mediasky --reps 1
+    python3 bench/transport_bench.py --set photons --list
 
-Cases: POV-Ray's own sample scenes that use media and that povtrace renders (Debian's povray-examples, from
---scene-root: interior/media/*, advanced/mediasky), and the media scenes of scenes/ whose POV-Ray render is
-deterministic and slowest. A sample scene is copied into a temporary folder with its folder's files (the installed
-files are never written) and rendered from there.
+Cases: POV-Ray's own sample scenes that use media (or photons) and that povtrace renders (Debian's povray-examples,
+from --scene-root: interior/media/*, advanced/mediasky; lights/phot_met_glass, lights/glassthing,
+advanced/grenadine), and scenes of scenes/ (media ones whose POV-Ray render is deterministic and slowest; photon
+ones of one light and one target, whose photon map POV-Ray shoots the same with any thread count). A sample scene
+is copied into a temporary folder with its folder's files (the installed files are never written) and rendered
+from there.
 
 Both renderers run alternately with -D -A +W<w> +H<h> +FE +WT<threads> under `nice`, `--reps` times; the table
 gives the fastest wall time of each (the whole process: parse, build and render), their ratio (POV-Ray time /
 povtrace time: above 1, povtrace is faster) and the PSNR of povtrace's image against POV-Ray's, as povdiff computes
 it. These media sample without randomness in POV-Ray (method 3 or 2 without jitter), and povtrace takes the same
-samples, so equal images mean equal error: the ratio is the speed at equal error. Results go to
-bench/results/media.{md,csv}.
+samples, so equal images mean equal error: the ratio is the speed at equal error. povtrace shoots POV-Ray's photons
+(its one-thread map): for sample scenes with several light × target units POV-Ray's +WT2 map is another draw, and
+the PSNR is then as far as POV-Ray's own +WT2 render is from its +WT1 one (reference/photons_random/). Results go to
+bench/results/media.{md,csv} or bench/results/photons.{md,csv}.
 """
 import argparse
 import csv
@@ -29,21 +34,26 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_tools import (REPO, cpu_name, load_average, now_text, povray_version, repo_commit,  # noqa: E402
                          run_measured, tail)
 
+SETS = {}
 SAMPLES = [
     "interior/media/media1", "interior/media/media2", "interior/media/media3", "interior/media/media4",
     "interior/media/media5", "interior/media/hollow1", "interior/media/hollow2", "interior/media/hollow3",
     "interior/media/micro", "interior/media/galaxy", "advanced/mediasky",
 ]
 OWN = ["media_intervals10", "media_ratio", "media_atmosphere_spotlight", "media_light_area", "media_density_turbulence"]
+SETS["media"] = (SAMPLES, OWN, "Media")
+SETS["photons"] = (["lights/phot_met_glass", "lights/glassthing", "advanced/grenadine/grenadine"],
+                   ["photons_refraction", "photons_reflection", "photons_area_light", "photons_count",
+                    "photons_pass_through"], "Photons")
 
 
-def cases(scene_root):
+def cases(scene_root, samples, own):
     out = []
-    for rel in SAMPLES:
+    for rel in samples:
         path = os.path.join(scene_root, rel + ".pov")
         if os.path.exists(path):
             out.append((os.path.basename(rel), path, True))
-    for name in OWN:
+    for name in own:
         out.append((name, os.path.join(REPO, "scenes", name + ".pov"), False))
     return out
 
@@ -60,6 +70,7 @@ def psnr(povdiff, a, b):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--set", choices=sorted(SETS), default="media")
     ap.add_argument("--povtrace", default=os.path.join(REPO, "build", "povtrace"))
     ap.add_argument("--povdiff", default=None)
     ap.add_argument("--povray", default="povray")
@@ -74,14 +85,15 @@ def main():
     ap.add_argument("--results", default=os.path.join(REPO, "bench", "results"))
     args = ap.parse_args()
     povdiff = args.povdiff or os.path.join(os.path.dirname(os.path.abspath(args.povtrace)), "povdiff")
-    all_cases = cases(args.scene_root)
+    samples, own, title = SETS[args.set]
+    all_cases = cases(args.scene_root, samples, own)
     if args.list:
         print("\n".join(name for name, _, _ in all_cases))
         return 0
     chosen = [c for c in all_cases if not args.only or c[0] in args.only]
     common = ["-D", "-A", f"+W{args.width}", f"+H{args.height}", "+FE", f"+WT{args.threads}"]
     rows = []
-    with tempfile.TemporaryDirectory(prefix="media_bench_") as tmp:
+    with tempfile.TemporaryDirectory(prefix=f"{args.set}_bench_") as tmp:
         for name, path, sample in chosen:
             work = os.path.join(tmp, name)
             if sample:   # a copy of the scene's folder: renders write nothing next to the installed files
@@ -116,12 +128,12 @@ def main():
             print(f"{name:28s} povtrace {best['povtrace']:7.3f} s  povray {best['povray']:7.3f} s  "
                   f"ratio {ratio:5.2f}  PSNR {p} dB", flush=True)
     os.makedirs(args.results, exist_ok=True)
-    with open(os.path.join(args.results, "media.csv"), "w", newline="") as f:
+    with open(os.path.join(args.results, f"{args.set}.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=["case", "povtrace_s", "povray_s", "ratio", "psnr_db", "note"])
         w.writeheader()
         w.writerows(rows)
-    with open(os.path.join(args.results, "media.md"), "w") as f:
-        f.write("# Media: povtrace vs POV-Ray 3.7\n\n")
+    with open(os.path.join(args.results, f"{args.set}.md"), "w") as f:
+        f.write(f"# {title}: povtrace vs POV-Ray 3.7\n\n")
         f.write(f"{now_text()}, commit {repo_commit()}, {cpu_name()}, load average before {load_average()}; "
                 f"{povray_version(args.povray)}.\n\n")
         f.write(f"{args.width}x{args.height}, -A, +WT{args.threads}, fastest of {args.reps} alternating runs, whole "
@@ -131,7 +143,7 @@ def main():
         for r in rows:
             f.write(f"| {r['case']} | {r['povtrace_s']} | {r['povray_s']} | {r['ratio']} | {r['psnr_db']} | "
                     f"{r['note']} |\n")
-    print(f"wrote {os.path.join(args.results, 'media.md')}")
+    print(f"wrote {os.path.join(args.results, args.set + '.md')}")
     return 0
 
 

@@ -1,0 +1,85 @@
+// Small shading steps the tracer's passes share: the camera and light pass (tracer.cpp) and the photon pass
+// (photons/photon_trace.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "renderer/render_scene.hpp"
+
+namespace povtrace::render {
+
+inline double max_channel(Rgb c) { return std::max({c.x, c.y, c.z}); }
+
+// Light arriving through a pigment: filter tints by the colour, transmit does not (§3, §4).
+inline Rgb pass_through(const Colour& s) { return Rgb{s.r, s.g, s.b} * s.f + Rgb{s.t, s.t, s.t}; }
+
+// A layer's reflection colour and the weight of the ray it reflects.
+struct Reflectivity {
+  Rgb amount;
+  double weight;
+};
+
+// POV-Ray's reflectivity of one layer (§4 "Reflection amount"): c = cosine of incidence; `weight`, the weight the
+// layer is seen with, is scaled to the reflected ray's weight.
+// `single`: the amount rounded as POV-Ray's single-precision colours round it, k·max and (1−k)·min each to float and
+// their sum in float (the photon pass needs it: its weights are compared with adc_bailout as floats).
+inline Rgb blend_reflection(Rgb hi, Rgb lo, double k, bool single) {
+  if (!single) return hi * k + lo * (1.0 - k);
+  const auto one = [&](double h, double l) {
+    return static_cast<double>(static_cast<float>(static_cast<float>(h * k) + static_cast<float>(l * (1.0 - k))));
+  };
+  return {one(hi.x, lo.x), one(hi.y, lo.y), one(hi.z, lo.z)};
+}
+
+inline Reflectivity reflectivity(const Finish& f, double c, double ior, double weight, bool single = false) {
+  const Rgb lo = rgb_of(f.reflection_min), hi = rgb_of(f.reflection_max);
+  if (!f.reflection_fresnel) {
+    weight *= std::max(max_channel(hi), max_channel(lo));
+    const double k = std::fabs(f.reflection_falloff - 1.0) > tolerance::epsilon
+                         ? std::pow(1.0 - c, f.reflection_falloff)
+                         : 1.0 - c;
+    if (std::fabs(k) < tolerance::epsilon) return {lo, weight};
+    if (std::fabs(k - 1.0) < tolerance::epsilon) return {hi, weight};
+    return {blend_reflection(hi, lo, k, single), weight};
+  }
+  Rgb r = hi;
+  const double g2 = ior * ior + c * c - 1.0;
+  if (g2 > 0) {
+    const double g = std::sqrt(g2);
+    const double a = (g - c) / (g + c);
+    const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    const double fr = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+    r = blend_reflection(hi, lo, fr, single);
+  }
+  weight *= max_channel(r);
+  return {r, weight};
+}
+
+
+// The texture point with the hit's uv coordinates when the material reads them.
+inline TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv, double scene_scale) {
+  if (!uv) return TexturePoint(point);
+  const auto [u, v] = uv_coordinates(hit, point, scene_scale);
+  return TexturePoint(point, u, v);
+}
+
+// Where a material's textures are evaluated: the hit's <u, v, 0> on a uv-mapped object (POV-Ray's UV_FLAG).
+inline TexturePoint material_point(const Material& m, const TexturePoint& at) {
+  return m.uv_mapping ? TexturePoint({at.u, at.v, 0.0}, at.u, at.v) : at;
+}
+
+// A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).
+inline double speckle_random(Vec3 p, std::size_t light) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull * (light + 1);
+  for (const double v : {p.x, p.y, p.z}) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 27; h *= 0x94D049BB133111EBull; h ^= h >> 31;
+  }
+  return static_cast<double>(h >> 11) * (1.0 / 9007199254740991.0);
+}
+}  // namespace povtrace::render
