@@ -48,16 +48,36 @@ Photon make_photon(Vec3 position, Vec3 colour, Vec3 to_origin) {
   return p;
 }
 
+namespace {
+// Decoding tables, computed once (every gathered photon is decoded): the scale of each exponent byte, and the sine
+// and cosine of each angle byte.
+struct DecodeTables {
+  float scale[256];
+  double sine[256], cosine[256];
+  DecodeTables() {
+    scale[0] = 0;
+    for (int e = 1; e < 256; ++e) scale[e] = static_cast<float>(std::ldexp(1.0, e - (kExponentBias + 8)));
+    for (int b = -128; b < 128; ++b) {
+      sine[b + 128] = std::sin(byte_angle(static_cast<std::int8_t>(b)));
+      cosine[b + 128] = std::cos(byte_angle(static_cast<std::int8_t>(b)));
+    }
+  }
+};
+const DecodeTables& tables() {
+  static const DecodeTables t;
+  return t;
+}
+}  // namespace
+
 Vec3 photon_colour(const Photon& p) {
-  if (p.rgbe[3] == 0) return {0, 0, 0};
-  const float f = static_cast<float>(std::ldexp(1.0, static_cast<int>(p.rgbe[3]) - (kExponentBias + 8)));
+  const float f = tables().scale[p.rgbe[3]];
   return {p.rgbe[0] * f, p.rgbe[1] * f, p.rgbe[2] * f};
 }
 
 Vec3 photon_direction(const Photon& p) {
-  const double theta = byte_angle(p.theta), phi = byte_angle(p.phi);
-  const double c = std::cos(theta);
-  return {c * std::cos(phi), std::sin(theta), c * std::sin(phi)};
+  const DecodeTables& t = tables();
+  const double c = t.cosine[p.theta + 128];
+  return {c * t.cosine[p.phi + 128], t.sine[p.theta + 128], c * t.sine[p.phi + 128]};
 }
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, const PhotonSettings& settings, bool tree_built)
