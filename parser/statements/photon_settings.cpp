@@ -1,5 +1,6 @@
 // global_settings { photons { … } } as POV-Ray 3.7's Parse_Global_Settings reads it (docs/issue20-photons.md §1):
 // every photons block starts again from the defaults, and the map is enabled when the gather maximum is positive.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -52,7 +53,8 @@ void SceneStatements::parse_photon_settings(const Token& keyword) {
     } else if (k == "adc_bailout") {
       s.adc_bailout = parse_float();
     } else if (k == "max_trace_level") {
-      s.max_trace_level = saturating_cast<int>(parse_float());
+      // Clamped as the scene's max_trace_level is (1…256): a deeper photon path would only exhaust the stack.
+      s.max_trace_level = std::clamp(saturating_cast<int>(parse_float()), 1, 256);
     } else if (k == "radius") {
       // radius [gather], [multiplier], [media gather], [media multiplier]: each may be left out.
       s.radius = optional_float(-1.0);

@@ -61,6 +61,11 @@ TEST(PhotonSettingsParse, ALaterBlockStartsFromTheDefaults) {
   EXPECT_EQ(s.photons->count, 9);
 }
 
+TEST(PhotonSettingsParse, MaxTraceLevelClampedAsTheScenes) {
+  EXPECT_EQ(parse("global_settings { photons { max_trace_level 100000 } }").photons->max_trace_level, 256);
+  EXPECT_EQ(parse("global_settings { photons { max_trace_level -3 } }").photons->max_trace_level, 1);
+}
+
 TEST(PhotonSettingsParse, GatherMaximumZeroLeavesPhotonsOff) {
   Messages m;
   const SceneDescription s = parse("#version 3.7;\nglobal_settings { photons { gather 0, 0 } }\n", &m);

@@ -226,3 +226,19 @@ TEST(PhotonPass, EnergyAddsUpToTheLitArea) {
 }
 
 }  // namespace
+
+namespace {
+// A spacing far too fine for its target is refused at the photons block before anything is shot (it would run for
+// days and fill the memory), not attempted.
+TEST(PhotonPass, RefusesASpacingThatWouldNeverEnd) {
+  SceneDescription s = caustic_scene();
+  s.photons->spacing = 1e-7;
+  s.photons->loc = SourceLoc{};
+  try {
+    (void)build_render_scene(s, BuildOptions{});
+    FAIL() << "a spacing of 1e-7 was shot";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("would shoot up to"), std::string::npos) << e.what();
+  }
+}
+}  // namespace
