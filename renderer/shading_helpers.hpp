@@ -7,6 +7,9 @@
 #include <cstdint>
 #include <cstring>
 
+#include <optional>
+
+#include "renderer/interior_list.hpp"
 #include "renderer/render_scene.hpp"
 
 namespace povtrace::render {
@@ -15,6 +18,64 @@ inline double max_channel(Rgb c) { return std::max({c.x, c.y, c.z}); }
 
 // Light arriving through a pigment: filter tints by the colour, transmit does not (§3, §4).
 inline Rgb pass_through(const Colour& s) { return Rgb{s.r, s.g, s.b} * s.f + Rgb{s.t, s.t, s.t}; }
+
+// Smooth step used by spotlights' falloff zone (§3): 0 below a, 1 at or above b, 3s²−2s³ between.
+inline double smoothstep(double a, double b, double x) {
+  if (x >= b) return 1.0;
+  if (x <= a) return 0.0;
+  const double s = (x - a) / (b - a);
+  return s * s * (3.0 - 2.0 * s);
+}
+
+// Fade of light that crossed `depth` inside an interior on the shadow path (§3) and on a photon's path (POV-Ray's
+// PhotonTrace): unlike on the transmitted path, only when fade_power > 0.
+inline Rgb shadow_fade(const Interior& in, double depth) {
+  if (!(in.fade_power > 0) || !(std::fabs(in.fade_distance) > tolerance::epsilon)) return {1, 1, 1};
+  const Rgb fc = rgb_of(in.fade_colour);
+  const double d = depth / in.fade_distance;
+  if (in.fade_power >= 1000) return {std::exp(-(1 - fc.x) * d), std::exp(-(1 - fc.y) * d), std::exp(-(1 - fc.z) * d)};
+  return fc + (Rgb{1, 1, 1} - fc) / (1.0 + std::pow(d, in.fade_power));
+}
+
+// A ray crossing the surface of `self` (POV-Ray's ComputeRefraction): the interiors it is in afterwards (`in`,
+// updated) and the ratio n_from / n_to it bends by (§4 "Transmission/refraction").
+inline double cross_interior(InteriorList& in, const InteriorRef& self) {
+  const double ior = self.interior->ior;
+  if (in.empty()) {
+    in.append(self);
+    return 1.0 / ior;
+  }
+  if (same_interior(in.back(), self)) {
+    in.remove(self);
+    return in.empty() ? ior : ior / in.back().interior->ior;
+  }
+  if (in.remove(self)) return 1.0;   // leaving the overlap of two objects: POV-Ray does not bend the ray
+  const double eta = in.back().interior->ior / ior;
+  in.append(self);
+  return eta;
+}
+
+// The refracted direction (unit) of `d` through a surface of normal `normal` with ratio `eta` (Heckbert's method,
+// as POV-Ray); none on total internal reflection.
+inline std::optional<Vec3> refracted_direction(Vec3 d, Vec3 normal, double eta) {
+  double m = dot(d, normal);
+  const Vec3 facing = m <= 0 ? normal : -normal;
+  m = std::fabs(m);
+  const double k = 1.0 + eta * eta * (m * m - 1.0);
+  if (k < 0) return std::nullopt;
+  return normalize(d * eta + facing * (eta * m - std::sqrt(k)));
+}
+
+// The mirror direction (unit) of `d` about `normal`, corrected when it would go into the geometric surface (a
+// perturbed normal can do that; POV-Ray's ComputeReflection).
+inline Vec3 mirror_direction(Vec3 d, Vec3 normal, Vec3 raw_normal) {
+  Vec3 r = d - normal * (2.0 * dot(d, normal));
+  if (const double n = dot(r, raw_normal); n < 0) {
+    if (dot(r, normal) < 0) r = d - raw_normal * (2.0 * dot(d, raw_normal));
+    else r = r - raw_normal * (2.0 * n);
+  }
+  return normalize(r);
+}
 
 // A layer's reflection colour and the weight of the ray it reflects.
 struct Reflectivity {

@@ -17,14 +17,6 @@ namespace povtrace::render {
 namespace {
 Rgb mul(Rgb a, Rgb b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
-// Smooth step used by spotlights' falloff zone (§3): 0 below a, 1 at or above b, 3s²−2s³ between.
-double smoothstep(double a, double b, double x) {
-  if (x >= b) return 1.0;
-  if (x <= a) return 0.0;
-  const double s = (x - a) / (b - a);
-  return s * s * (3.0 - 2.0 * s);
-}
-
 
 constexpr double kPhongCutoff = 0.0008;       // phong highlights with size ≥ 60 vanish below this (§2)
 constexpr double kPhongCutoffSize = 60.0;
@@ -430,17 +422,12 @@ Radiance Tracer::unlit_layers(const RenderTexture& texture, const TexturePoint& 
 // normal can do that), traced one level deeper without background transparency (§4, §5).
 Radiance Tracer::trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight) {
   const Ray& ray = at.ray;
-  const Vec3 raw_normal = at.sp.raw_normal;
-  Vec3 r = ray.direction - normal * (2.0 * dot(ray.direction, normal));
-  if (const double n = dot(r, raw_normal); n < 0) {
-    if (dot(r, normal) < 0) r = ray.direction - raw_normal * (2.0 * dot(ray.direction, raw_normal));
-    else r = r - raw_normal * (2.0 * n);
-  }
   ++counts_.secondary;
   RayState reflected = at.state;
   reflected.alpha_background = false;
-  return trace(Ray{at.sp.point, normalize(r), ray_kind::after_reflection(ray.kind)}, at.level + 1, reflected_weight,
-               reflected);
+  return trace(Ray{at.sp.point, mirror_direction(ray.direction, normal, at.sp.raw_normal),
+                   ray_kind::after_reflection(ray.kind)},
+               at.level + 1, reflected_weight, reflected);
 }
 
 // Transmission (§4 "Transmission/refraction"): the relative ior comes from the interiors the ray is in.
@@ -455,20 +442,7 @@ Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb fil
   const double next_weight =
       at.weight * max_channel(Rgb{std::fabs(filter.x), std::fabs(filter.y), std::fabs(filter.z)});
   RayState next = state;
-  double eta;   // n_from / n_to
-  InteriorList& in = next.interiors;
-  if (in.empty()) {
-    in.append(self);
-    eta = 1.0 / interior.ior;
-  } else if (same_interior(in.back(), self)) {
-    in.remove(self);
-    eta = in.empty() ? interior.ior : interior.ior / in.back().interior->ior;
-  } else if (in.remove(self)) {
-    eta = 1.0;   // leaving the overlap of two objects: POV-Ray does not bend the ray
-  } else {
-    eta = in.back().interior->ior / interior.ior;
-    in.append(self);
-  }
+  const double eta = cross_interior(next.interiors, self);   // n_from / n_to
 
   // Fade of the light that travelled inside this interior, from the ray's origin to here (§4 "interior fade").
   Rgb attenuation{interior.refraction, interior.refraction, interior.refraction};
@@ -494,18 +468,13 @@ Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb fil
     if (level < max_level_)
       behind = trace(Ray{point, ray.direction, ray_kind::after_refraction(ray.kind)}, level, next_weight, next);
   } else {
-    double m = dot(ray.direction, normal);
-    const Vec3 facing = m <= 0 ? normal : -normal;
-    m = std::fabs(m);
-    const double k = 1.0 + eta * eta * (m * m - 1.0);
-    if (k < 0) {
+    const std::optional<Vec3> refracted = refracted_direction(ray.direction, normal, eta);
+    if (!refracted) {
       // Total internal reflection: the mirror ray (top layer's normal), not filtered by the layers (§4 TIR).
       const Radiance reflected = trace_reflection(at, normal, next_weight);
       return {mul(attenuation, reflected.colour), 0.0, true};
     }
-    const Vec3 refracted = ray.direction * eta + facing * (eta * m - std::sqrt(k));
-    behind = trace(Ray{point, normalize(refracted), ray_kind::after_refraction(ray.kind)}, level + 1, next_weight,
-                   next);
+    behind = trace(Ray{point, *refracted, ray_kind::after_refraction(ray.kind)}, level + 1, next_weight, next);
   }
   return {mul(mul(attenuation, filter), behind.colour), grey(attenuation) * behind.transmit * trans, false};
 }
@@ -536,18 +505,6 @@ std::optional<Tracer::LightRay> Tracer::light_at(const RenderLight& l, Vec3 poin
   if (near_zero(colour)) return std::nullopt;
   return LightRay{colour, to_light, distance};
 }
-
-namespace {
-// Fade of light that crossed `depth` inside an interior, on the shadow path (§3): unlike on the transmitted
-// path, only when fade_power > 0.
-Rgb shadow_fade(const Interior& in, double depth) {
-  if (!(in.fade_power > 0) || !(std::fabs(in.fade_distance) > tolerance::epsilon)) return {1, 1, 1};
-  const Rgb fc = rgb_of(in.fade_colour);
-  const double d = depth / in.fade_distance;
-  if (in.fade_power >= 1000) return {std::exp(-(1 - fc.x) * d), std::exp(-(1 - fc.y) * d), std::exp(-(1 - fc.z) * d)};
-  return fc + (Rgb{1, 1, 1} - fc) / (1.0 + std::pow(d, in.fade_power));
-}
-}  // namespace
 
 // A cylindrical light (POV-Ray's Attenuate_Light and ComputeOneWhiteLightRay): parallel beams along point_at →
 // location, full inside `radius` of the axis, fading to 0 at `falloff` by the smooth step of 1 − d/falloff, raised

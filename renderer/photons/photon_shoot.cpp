@@ -12,6 +12,7 @@
 #include "renderer/csg_build.hpp"
 #include "renderer/located_error.hpp"
 #include "renderer/photons/photon_file.hpp"
+#include "renderer/shading_helpers.hpp"
 #include "renderer/shapes/shape_registry.hpp"
 #include "renderer/tracer.hpp"
 
@@ -121,24 +122,18 @@ double estimated_photons(const RenderScene& scene, double spacing) {
 // `off_axis`: a cylinder light's distance of the photon's start from its axis.
 double attenuation(const RenderLight& l, Vec3 direction, double off_axis) {
   const Light& light = l.light;
-  const auto smooth = [](double a, double b, double x) {
-    if (x >= b) return 1.0;
-    if (x <= a) return 0.0;
-    const double s = (x - a) / (b - a);
-    return s * s * (3.0 - 2.0 * s);
-  };
   if (light.cylinder) {
     if (!(dot(direction, l.spot_axis) > 0) || !(off_axis < light.falloff)) return 0.0;
     const double d = 1.0 - off_axis / light.falloff;
     double a = std::pow(d, light.tightness);
-    if (light.radius > 0 && off_axis > light.radius) a *= smooth(0.0, 1.0 - light.radius / light.falloff, d);
+    if (light.radius > 0 && off_axis > light.radius) a *= smoothstep(0.0, 1.0 - light.radius / light.falloff, d);
     return a;
   }
   if (light.spotlight) {
     const double c = dot(direction, l.spot_axis);
     if (!(c > 0)) return 0.0;
     double a = std::pow(c, light.tightness);
-    if (l.cos_radius > 0) a *= smooth(l.cos_falloff, l.cos_radius, c);
+    if (l.cos_radius > 0) a *= smoothstep(l.cos_falloff, l.cos_radius, c);
     return a;
   }
   return 1.0;

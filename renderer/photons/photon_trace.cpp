@@ -130,17 +130,10 @@ void Tracer::photon_layers(const PhotonHit& at, const RenderTexture& texture, co
     colour = media_effect(list, MediaSegment{ray.origin, ray.direction, hit.t, false}).apply(colour);
     media_state_ = outer;
   }
-  // The interior's fade over the distance travelled inside it, and the legacy `refraction` factor.
+  // The interior's fade over the distance travelled inside it (only with fade_power > 0, as on shadow rays), and the
+  // legacy `refraction` factor.
   Rgb attenuation{interior.refraction, interior.refraction, interior.refraction};
-  if (at.state.interiors.contains(self) && interior.fade_power > 0 &&
-      std::fabs(interior.fade_distance) > tolerance::epsilon) {
-    const Rgb fc = rgb_of(interior.fade_colour);
-    const double d = hit.t / interior.fade_distance;
-    if (interior.fade_power >= 1000)
-      attenuation = attenuation * Rgb{std::exp(-(1 - fc.x) * d), std::exp(-(1 - fc.y) * d), std::exp(-(1 - fc.z) * d)};
-    else
-      attenuation = attenuation * (fc + (Rgb{1, 1, 1} - fc) / (1.0 + std::pow(d, interior.fade_power)));
-  }
+  if (at.state.interiors.contains(self)) attenuation = attenuation * shadow_fade(interior, hit.t);
   colour = colour * attenuation;
   shot.depth += hit.t;
 
@@ -225,49 +218,25 @@ void Tracer::photon_layers(const PhotonHit& at, const RenderTexture& texture, co
 bool Tracer::photon_refract(const PhotonHit& at, Vec3 normal, Rgb filter, Rgb colour, double weight) {
   const Ray& ray = at.ray;
   const InteriorRef self = interior_of(at.sp.hit);
-  const Interior& interior = *self.interior;
   RayState next = at.state;
-  InteriorList& in = next.interiors;
-  double eta;
-  if (in.empty()) {
-    in.append(self);
-    eta = 1.0 / interior.ior;
-  } else if (same_interior(in.back(), self)) {
-    in.remove(self);
-    eta = in.empty() ? interior.ior : interior.ior / in.back().interior->ior;
-  } else if (in.remove(self)) {
-    eta = 1.0;
-  } else {
-    eta = in.back().interior->ior / interior.ior;
-    in.append(self);
-  }
+  const double eta = cross_interior(next.interiors, self);
   if (std::fabs(eta - 1.0) < tolerance::epsilon) {
     photon_trace(Ray{at.sp.point, ray.direction}, colour * filter, at.level, weight, next, at.shot);
     return false;
   }
-  double m = dot(ray.direction, normal);
-  const Vec3 facing = m <= 0 ? normal : -normal;
-  m = std::fabs(m);
-  const double k = 1.0 + eta * eta * (m * m - 1.0);
-  if (k < 0) {
+  const std::optional<Vec3> refracted = refracted_direction(ray.direction, normal, eta);
+  if (!refracted) {
     photon_reflect(at, normal, colour, weight);
     return true;
   }
-  const Vec3 refracted = ray.direction * eta + facing * (eta * m - std::sqrt(k));
-  photon_trace(Ray{at.sp.point, normalize(refracted)}, colour * filter, at.level, weight, next, at.shot);
+  photon_trace(Ray{at.sp.point, *refracted}, colour * filter, at.level, weight, next, at.shot);
   return false;
 }
 
 // The mirrored photon, corrected as reflected rays are when a bent normal would send it into the surface.
 void Tracer::photon_reflect(const PhotonHit& at, Vec3 normal, Rgb colour, double weight) {
-  const Ray& ray = at.ray;
-  const Vec3 raw_normal = at.sp.raw_normal;
-  Vec3 r = ray.direction - normal * (2.0 * dot(ray.direction, normal));
-  if (const double n = dot(r, raw_normal); n < 0) {
-    if (dot(r, normal) < 0) r = ray.direction - raw_normal * (2.0 * dot(ray.direction, raw_normal));
-    else r = r - raw_normal * (2.0 * n);
-  }
-  photon_trace(Ray{at.sp.point, normalize(r)}, colour, at.level, weight, at.state, at.shot);
+  photon_trace(Ray{at.sp.point, mirror_direction(at.ray.direction, normal, at.sp.raw_normal)}, colour, at.level, weight,
+               at.state, at.shot);
 }
 
 // POV-Ray's addSurfacePhoton: the photon's energy is its light's colour over the solid angle (parallel lights: the
