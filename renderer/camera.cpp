@@ -34,7 +34,7 @@ double polar_angle(double x, double y, double radius) {
 std::optional<Ray> along(Vec3 origin, Vec3 direction) {
   const double l = length(direction);
   if (!(l > 0.0) || !std::isfinite(l)) return std::nullopt;
-  return Ray{origin, direction / l};
+  return Ray{origin, direction * (1.0 / l)};   // POV-Ray's VNormalize: times the reciprocal of the length
 }
 
 // POV-Ray's Vector3d::normalize, which SetupCamera applies: a zero vector stays zero (a fisheye camera with
