@@ -292,7 +292,9 @@ TEST(Interrupt, ContinueAnInterruptedAnimation) {
   const ScratchFolder folder;
   const fs::path scene = folder.path() / "slow.pov";
   write_file(scene, std::string(kSlowScene) + "sphere { <clock * 4 - 2, 1.5, 0>, 0.3 pigment { rgb 1 } }\n");
-  const std::vector<std::string> args = {"--no-povray-ini", "-D", "+W240", "+H180", "+A0.0", "+R3", "+FE",
+  // Frames must take over a second, so that frame 2 prints a progress line before it is interrupted (0.8 s each at
+  // 240x180 on an idle machine of this project's kind: too short).
+  const std::vector<std::string> args = {"--no-povray-ini", "-D", "+W400", "+H300", "+A0.0", "+R3", "+FE",
                                          "+KFI1", "+KFF3", scene.string()};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> all = args;
