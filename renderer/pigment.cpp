@@ -80,15 +80,15 @@ PigmentSample sample_pigment(const RenderPigment& pigment, const TexturePoint& a
   // uv_mapping: the one pigment at the hit's <u, v, 0>, unwarped (Compute_Pigment UV_MAP_PATTERN).
   // It always counts as found, even over an image map used once.
   if (pigment.pattern == PatternKind::uv_mapping)
-    return {evaluate_pigment(pigment.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v)), true};
-  const TexturePoint p(to_pattern_space(pigment, at.point), at.u, at.v);
+    return {evaluate_pigment(pigment.children.front(), at.at_uv()), true};
+  const TexturePoint p = at.moved(to_pattern_space(pigment, at.point));
   if (pigment.pattern == PatternKind::image_map) {
     const std::optional<Colour> c = image_map_colour(*pigment.image->image, pigment.image->mapping, p.point);
     if (!c) return {kOffImageColour, false};
     return {*c, true};
   }
   if (pigment.pattern == PatternKind::average) return {average(pigment, p), true};
-  const double value = apply_wave(pattern_value(pigment.params, p.point), pigment.wave);
+  const double value = apply_wave(pattern_value(pigment.params, p.point, p.surface), pigment.wave);
   return blend(pigment, value, p);
 }
 

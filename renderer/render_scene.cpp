@@ -33,6 +33,7 @@ Material make_material(const Texture& texture, const std::optional<Interior>& in
   if (quick_colours) m.texture = build_render_texture(texture, images, true);
   m.uv_mapping = uv_mapping;
   m.needs_uv = uv_mapping || texture_reads_uv(m.texture);
+  m.needs_surface = texture_reads_surface(m.texture);
   return m;
 }
 

@@ -15,6 +15,7 @@
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/interior_list.hpp"
+#include "renderer/pattern/pattern.hpp"
 #include "renderer/pattern/image_map.hpp"
 #include "renderer/pattern/pattern.hpp"
 #include "renderer/radiosity/render_settings.hpp"
@@ -41,6 +42,15 @@ struct TexturePoint {
   explicit TexturePoint(Vec3 p, double u_ = 0, double v_ = 0) : point(p), u(u_), v(v_) {}
   Vec3 point;
   double u = 0, v = 0;
+  // The surface being shaded, for slope and aoi; null away from a surface (they are then 0, as in POV-Ray).
+  const ShadingSurface* surface = nullptr;
+  // The same surface and uv at another point (a pattern's space), or at <u, v, 0> (uv_mapping).
+  TexturePoint moved(Vec3 p) const {
+    TexturePoint r = *this;
+    r.point = p;
+    return r;
+  }
+  TexturePoint at_uv() const { return moved({u, v, 0.0}); }
 };
 
 // One step from the pigment's outer space toward pattern space: an inverse transform, then (if any) a turbulence
@@ -151,6 +161,7 @@ struct Material {
   bool opaque = true;                // blocks shadow rays outright (pipeline §3 "opaque" flag)
   bool uv_mapping = false;           // the object's uv_mapping: textures at the hit's <u, v, 0>
   bool needs_uv = false;             // uv coordinates are read somewhere (uv_mapping of any kind)
+  bool needs_surface = false;        // a slope or aoi pattern reads the surface's normal (TexturePoint::surface)
   ObjectPhotons photons;             // the object's photons { } flags (a CSG child's as its parent left them)
   // The photon target (index into RenderScene::photon_targets) whose tree the object is in; none: kNoPhotonTarget.
   std::uint32_t photon_target = ~0u;

@@ -129,7 +129,7 @@ inline TexturePoint texture_point(const SurfaceHit& hit, Vec3 point, bool uv, do
 
 // Where a material's textures are evaluated: the hit's <u, v, 0> on a uv-mapped object (POV-Ray's UV_FLAG).
 inline TexturePoint material_point(const Material& m, const TexturePoint& at) {
-  return m.uv_mapping ? TexturePoint({at.u, at.v, 0.0}, at.u, at.v) : at;
+  return m.uv_mapping ? at.at_uv() : at;
 }
 
 // A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).

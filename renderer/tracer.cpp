@@ -252,7 +252,13 @@ Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Mat
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
   const ShadingPoint sp{hit, point, raw_normal, warps_.size()};
-  return shade_texture(ray, sp, material.texture, material_point(material, at), level, weight, state);
+  if (!material.needs_surface) [[likely]]
+    return shade_texture(ray, sp, material.texture, material_point(material, at), level, weight, state);
+  // slope and aoi read POV-Ray's PNormal: the normal facing the ray, at the scene's own scale.
+  const ShadingSurface surface{point / scene_.scale, raw_normal, ray.direction};
+  TexturePoint on_surface = material_point(material, at);
+  on_surface.surface = &surface;
+  return shade_texture(ray, sp, material.texture, on_surface, level, weight, state);
 }
 
 // A patterned texture shades the texture(s) its pattern picks at the pattern-space point, every one of them whole,
@@ -265,10 +271,10 @@ Radiance Tracer::shade_texture(const Ray& ray, const ShadingPoint& sp, const Ren
   Radiance out;
   const RenderPigment& pattern = texture.pattern;
   if (pattern.pattern == PatternKind::uv_mapping) {
-    out = shade_texture(ray, sp, texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v), level,
+    out = shade_texture(ray, sp, texture.children.front(), at.at_uv(), level,
                         weight, state);
   } else {
-    const TexturePoint p(to_pattern_space(pattern, at.point), at.u, at.v);
+    const TexturePoint p = at.moved(to_pattern_space(pattern, at.point));
     if (pattern.pattern == PatternKind::average) {
       double total = 0;
       for (const RenderTexture& c : texture.children) {
@@ -277,7 +283,7 @@ Radiance Tracer::shade_texture(const Ray& ray, const ShadingPoint& sp, const Ren
       }
       out = mix(out, 1.0 / total, Radiance{}, 0.0);
     } else {
-      const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
+      const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
       const MapChoice m = choose_entries(texture.children, value);
       out = shade_texture(ray, sp, texture.children[m.cur], p, level, weight, state);
       if (m.prev != m.cur)
@@ -339,13 +345,23 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
   } ignore_scope{lit_ignores_photons_, lit_ignores_photons_};
   lit_ignores_photons_ = ignores_photons;
   const bool gather_photons = photon_map_ && !ignores_photons && !state.pretrace && model_ == ShadingModel::povray;
+  // What slope and aoi see as the normal (POV-Ray's PNormal): the raw one until a layer bends it, then that layer's
+  // normal, for this layer and the ones below it.
+  ShadingSurface surface;
+  TexturePoint layer_at = at;
+  if (at.surface) [[unlikely]] {
+    surface = *at.surface;
+    layer_at.surface = &surface;
+  }
   for (const RenderLayer& layer : texture.layers) {
     if (trans <= adc_bailout_) break;
     // Each layer bends the raw normal (facing the ray) on its own (§2, POV-Ray's Perturb_Normal per layer).
-    const Vec3 normal = layer.normal && quality_.normals ? layer_normal(*layer.normal, sp, at) : raw_normal;
+    const bool bent = layer.normal && quality_.normals;
+    const Vec3 normal = bent ? layer_normal(*layer.normal, sp, layer_at) : raw_normal;
+    if (bent) surface.normal = normal;
     if (&layer == &texture.layers.front()) top_normal = normal;
     // Not found only off an image map used once: the layer then filters nothing.
-    const auto [s, found] = sample_pigment(layer.pigment, at);
+    const auto [s, found] = sample_pigment(layer.pigment, layer_at);
     if (layer.reflects) {
       const double c = -dot(ray.direction, normal);
       const double ior = layer.finish.reflection_fresnel ? relative_ior(self, state) : 1.0;
@@ -535,11 +551,17 @@ Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction) {
   if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) return {0, 0, 0};
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
-  const TexturePoint point = texture_point(hit, at, uv, scene_.scale);
+  TexturePoint point = texture_point(hit, at, uv, scene_.scale);
+  ShadingSurface surface;
   Rgb through{0, 0, 0};
   for (int k = 0; k < blend.count; ++k) {
     const Material& m = scene_.materials[blend.material[k]];
     if (m.opaque) continue;
+    if (m.needs_surface && !point.surface) {   // slope, aoi: the normal facing the shadow ray (trace.cpp)
+      const Vec3 geometric = surface_normal(hit, at);
+      surface = {at / scene_.scale, dot(geometric, direction) > 0 ? -geometric : geometric, direction};
+      point.surface = &surface;
+    }
     if (m.interior.caustics != 0.0) {
       const Vec3 geometric = surface_normal(hit, at);
       std::vector<const RenderTexture*> path;
@@ -573,8 +595,8 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at,
   } scope(caustics, &texture);
   const RenderPigment& pattern = texture.pattern;
   if (pattern.pattern == PatternKind::uv_mapping)
-    return texture_filter(texture.children.front(), TexturePoint({at.u, at.v, 0.0}, at.u, at.v), caustics);
-  const TexturePoint p(to_pattern_space(pattern, at.point), at.u, at.v);
+    return texture_filter(texture.children.front(), at.at_uv(), caustics);
+  const TexturePoint p = at.moved(to_pattern_space(pattern, at.point));
   if (pattern.pattern == PatternKind::average) {
     Rgb sum{0, 0, 0};
     double total = 0;
@@ -584,7 +606,7 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at,
     }
     return sum / total;
   }
-  const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
+  const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
   const MapChoice m = choose_entries(texture.children, value);
   const Rgb cur = texture_filter(texture.children[m.cur], p, caustics);
   if (m.prev == m.cur) return cur;

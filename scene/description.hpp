@@ -113,7 +113,9 @@ enum class PatternKind {
   spiral1, spiral2,                                                 // spirals around z with Pigment::arms arms
   quilted,                                                          // rounded cells (Pigment::control0/1)
   density_file,                                                     // a DF3 voxel grid (Pigment::density_file)
-  uv_mapping                                                        // its one entry at the hit's <u, v, 0>
+  uv_mapping,                                                       // its one entry at the hit's <u, v, 0>
+  mandel, julia, magnet,                                            // escape-time fractals (Pigment::fractal)
+  slope, aoi                                                        // of the hit's normal (Pigment::slope) or the ray
 };
 
 // The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).
@@ -154,6 +156,33 @@ struct CrackleParams {
   friend bool operator==(const CrackleParams&, const CrackleParams&) = default;
 };
 
+// mandel, julia and magnet (POV-Ray's fractal patterns, Parse_Pattern's defaults): z iterated in the complex plane
+// of the pattern's x, y; the value is the exterior colour of the iteration that escaped, or the interior colour.
+struct FractalParams {
+  int magnet = 0;                  // 0: mandel or julia; 1 or 2: `magnet 1` or `magnet 2`
+  bool julia = false;              // julia form: z starts at the point and c is `coord`; mandel form: c is the point
+  double coord_u = 0, coord_v = 0; // julia's c
+  int iterations = 0;              // (int) of the float as written
+  int exponent = 2;                // mandel and julia: 2…33
+  int exterior_type = 1, interior_type = 0;
+  double exterior_factor = 1, interior_factor = 1;
+  friend bool operator==(const FractalParams&, const FractalParams&) = default;
+};
+
+// slope (Parse_Pattern's SLOPE_TOKEN): the angle between the hit's normal and `direction` (or, with point_at, the
+// direction from the hit to the point), optionally mixed with the altitude of the point along `altitude`. Lengths
+// are normalised as POV-Ray does: slope_weight + altitude_weight = 1.
+struct SlopeParams {
+  Vec3 direction{0, 1, 0};
+  bool point_at = false;
+  double slope_low = 0, slope_range = 0;         // `low, high` as low and high − low; range 0: not given
+  Vec3 altitude{0, 0, 0};
+  double altitude_low = 0, altitude_range = 0;
+  double slope_weight = 1, altitude_weight = 0;
+  int slope_axis = 0, altitude_axis = 0;         // ±(1 + axis) when the vector is exactly ± a unit axis, else 0
+  friend bool operator==(const SlopeParams&, const SlopeParams&) = default;
+};
+
 struct Pigment;
 
 // One entry of a colour map, pigment map or list pattern (checker, hexagon, brick). `value` is stored in single
@@ -191,6 +220,10 @@ struct Pigment {
   // nearest voxel, 1 trilinear, anything else tricubic). Both are reset when density_file is written again.
   std::shared_ptr<const DensityGrid> density_file;
   int density_interpolation = 0;
+  FractalParams fractal;         // mandel, julia, magnet
+  SlopeParams slope;             // slope
+  // `noise_generator N` of this pattern (1…3); 0: the scene's (POV-Ray's GetNoiseGen).
+  int noise_generator = 0;
   // quick_color: what the pigment shows instead in draft renders (+Q0…+Q5). POV-Ray uses it only when none of its
   // red, green, blue is -1 (its mark for "not given"), so such a colour is not kept.
   std::optional<Colour> quick_colour;

@@ -71,14 +71,15 @@ Turbulence& classic_turbulence(Pigment& p) {
 }
 
 int clamped_octaves(double v) { return std::clamp(static_cast<int>(v), 1, 10); }
+}  // namespace
 
-// POV-Ray stores `interpolate N` as (int)N: truncated towards zero. C++ leaves the conversion of a float outside
-// int's range undefined, so such values are clamped first (any of them picks tricubic, as N % 10 ∉ {0, 1}).
+// POV-Ray stores integer parameters (`interpolate N`, fractal iterations) as (int)N: truncated towards zero. C++
+// leaves the conversion of a float outside int's range undefined, so such values are clamped first (any of them
+// picks tricubic for interpolate, as N % 10 ∉ {0, 1}).
 int truncated_int(double v) {
   if (std::isnan(v)) return 0;
   return static_cast<int>(std::clamp(std::trunc(v), -2147483648.0, 2147483647.0));
 }
-}  // namespace
 
 // `density_file df3 "NAME"` (Parse_Pattern): the file is looked for as POV-Ray's Locate_File looks for a DF3 file
 // (the name, with .df3 or .DF3 appended, in the working directory and the library paths) and read here, so that a
@@ -206,6 +207,18 @@ bool TextureParser::try_pattern(const Token& t, Pigment& p) {
   if (t.is("crackle")) {   // every crackle keyword resets its parameters (Parse_Pattern)
     p.pattern = PatternKind::crackle;
     p.crackle = CrackleParams{};
+    return true;
+  }
+  if (t.is("mandel") || t.is("julia") || t.is("magnet")) {
+    parse_fractal_pattern(t, p);
+    return true;
+  }
+  if (t.is("slope")) {
+    parse_slope_pattern(t, p);
+    return true;
+  }
+  if (t.is("aoi")) {
+    p.pattern = PatternKind::aoi;
     return true;
   }
   if (t.is("agate")) {
@@ -376,7 +389,15 @@ bool TextureParser::try_pattern_modifier(const Token& t, Pigment& p) {
   if (t.is("omega")) { classic_turbulence(p).omega = static_cast<float>(parse_float()); return true; }
   if (t.is("lambda")) { classic_turbulence(p).lambda = static_cast<float>(parse_float()); return true; }
   if (t.is("warp")) { parse_warp(t, p); return true; }
-  return try_pattern_parameter(t, p);
+  if (t.is("noise_generator")) {   // this pattern's own generator (POV-Ray's NOISE_FLAGS); 0: the scene's
+    const double g = parse_float();
+    const int n = static_cast<int>(g);
+    if (!(g > -1.0 && g < 4.0)) fail_at(t, "Value for noise_generator must be 0, 1, 2, or 3.");
+    // POV-Ray ORs the value into the pattern's flags, so a second noise_generator combines with the first.
+    p.noise_generator |= n;
+    return true;
+  }
+  return try_pattern_parameter(t, p) || try_fractal_parameter(t, p);
 }
 
 // Parameters that belong to one pattern; POV-Ray refuses them with any other (Not_With).

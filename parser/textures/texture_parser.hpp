@@ -20,6 +20,9 @@
 
 namespace povtrace::sdl {
 
+// (int)v as POV-Ray converts a parsed float to an integer parameter, with out-of-range values clamped (pigments.cpp).
+int truncated_int(double v);
+
 class TextureParser : ParserPart {
  public:
   explicit TextureParser(Interpreter& in) : ParserPart(in) {}
@@ -67,6 +70,11 @@ class TextureParser : ParserPart {
   void refuse_map_for_pattern(const Token& t, const Pigment& p, bool pigment_map);
   void parse_warp(const Token& keyword, Pigment& p);
   RepeatWarp parse_repeat_warp(const Token& keyword);
+
+  // ---- fractal and surface patterns (surface_fractal_patterns.cpp) ----
+  void parse_fractal_pattern(const Token& keyword, Pigment& p);   // mandel, julia, magnet and their numbers
+  void parse_slope_pattern(const Token& keyword, Pigment& p);     // slope V or slope { … }
+  bool try_fractal_parameter(const Token& t, Pigment& p);         // exterior, interior, exponent
 
   // ---- media and density (media.cpp) ----
   Media starting_media() const;

@@ -1,6 +1,6 @@
 // Built-in colour maps. POV-Ray stores map values and colours in single precision, hence single() on every
 // value that is not exactly representable. Most patterns go from black at 0 to white at 1; bozo, wood, agate,
-// radial, marble, brick, hexagon and checker have their own maps.
+// radial, marble, brick, hexagon, checker and mandel have their own maps.
 #include "renderer/pattern/default_maps.hpp"
 
 namespace povtrace::render {
@@ -34,14 +34,22 @@ std::vector<MapEntry> brick_map() { return {entry(0.0, 0.5, 0.5, 0.5), entry(1.0
 // hexagon: blue, green, red; checker uses the first two of them (blue, green).
 std::vector<MapEntry> hexagon_map() { return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0), entry(2.0, 1, 0, 0)}; }
 std::vector<MapEntry> checker_map() { return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0)}; }
+// mandel: black inside and just outside, then cyan, yellow, magenta and cyan again within the first tenth (the
+// exterior value is the escape iteration's share of the limit).
+std::vector<MapEntry> mandel_map() {
+  return {entry(0.001, 0, 0, 0), entry(0.001, 0, 1, 1), entry(0.012, 1, 1, 0), entry(0.015, 1, 0, 1),
+          entry(0.1, 0, 1, 1)};
+}
 std::vector<MapEntry> grey_map() { return {entry(0.0, 0, 0, 0), entry(1.0, 1, 1, 1)}; }
 }  // namespace
 
-const std::vector<MapEntry>& default_colour_map(PatternKind kind) {
+const std::vector<MapEntry>& default_colour_map(const Pigment& pigment) {
   static const std::vector<MapEntry> bozo = bozo_map(), wood = wood_map(), agate = agate_map(),
                                      radial = radial_map(), marble = marble_map(), brick = brick_map(),
-                                     hexagon = hexagon_map(), checker = checker_map(), grey = grey_map();
-  switch (kind) {
+                                     hexagon = hexagon_map(), checker = checker_map(), grey = grey_map(),
+                                     mandel = mandel_map();
+  switch (pigment.pattern) {
+    case PatternKind::mandel: return pigment.fractal.exponent == 2 ? mandel : grey;
     case PatternKind::bozo: return bozo;
     case PatternKind::wood: return wood;
     case PatternKind::agate: return agate;

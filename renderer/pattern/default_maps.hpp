@@ -7,6 +7,8 @@
 
 namespace povtrace::render {
 
-const std::vector<MapEntry>& default_colour_map(PatternKind kind);
+// The built-in map of a pigment's pattern. Only the exponent-2 mandel has a map of its own (an exponent changes
+// POV-Ray's pattern type, and the others fall back to grey).
+const std::vector<MapEntry>& default_colour_map(const Pigment& pigment);
 
 }  // namespace povtrace::render

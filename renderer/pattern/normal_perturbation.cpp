@@ -23,10 +23,10 @@ constexpr std::array<Vec3, 4> kPyramid = {{{0.942809041, -0.333333333, 0.0},
 constexpr double kSlopeFudge = -5.0;
 constexpr double kDefaultAccuracy = 0.02;
 
-Vec3 pattern_slope(const RenderNormal& n, Vec3 p) {
+Vec3 pattern_slope(const RenderNormal& n, Vec3 p, const ShadingSurface* surface) {
   const double amount = n.amount * kSlopeFudge * (kDefaultAccuracy / n.accuracy);
   Vec3 sum{0, 0, 0};
-  for (const Vec3& v : kPyramid) sum += v * (slope_value(n, p + v * n.accuracy) * amount);
+  for (const Vec3& v : kPyramid) sum += v * (slope_value(n, p + v * n.accuracy, surface) * amount);
   return sum;
 }
 
@@ -58,9 +58,10 @@ Vec3 wrinkles(Vec3 p) {
   return sum;
 }
 
-Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& waves) {
+Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& waves,
+                  const ShadingSurface* surface) {
   switch (n.kind) {
-    case NormalKind::pattern: return pattern_slope(n, p);
+    case NormalKind::pattern: return pattern_slope(n, p, surface);
     case NormalKind::bumps: return vector_noise(p) * n.amount;
     case NormalKind::dents: {
       const double v = noise(p, n.pattern.params.noise_generator);
@@ -99,8 +100,8 @@ double slope_map(const std::vector<SlopeEntry>& map, double value) {
 Vec3 normalized_unless(bool keep, Vec3 v) { return keep ? v : normalize(v); }
 }  // namespace
 
-double slope_value(const RenderNormal& n, Vec3 p) {
-  return slope_map(n.slope_map, apply_wave(pattern_value(n.pattern.params, p), n.pattern.wave));
+double slope_value(const RenderNormal& n, Vec3 p, const ShadingSurface* surface) {
+  return slope_map(n.slope_map, apply_wave(pattern_value(n.pattern.params, p, surface), n.pattern.wave));
 }
 
 RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
@@ -176,9 +177,9 @@ Vec3 entry_perturbed(const RenderNormal::MapEntry& e, Vec3 v, const TexturePoint
 // back and normalised (Perturb_Normal's blend map branch).
 Vec3 mapped(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
   const Vec3 p = to_pattern_space(n.pattern, at.point);
-  const MapChoice c = choose_entries(n.map, apply_wave(pattern_value(n.pattern.params, p), n.pattern.wave));
+  const MapChoice c = choose_entries(n.map, apply_wave(pattern_value(n.pattern.params, p, at.surface), n.pattern.wave));
   const Vec3 v = warp_normal(n, normal);
-  const TexturePoint inner(p, at.u, at.v);
+  const TexturePoint inner = at.moved(p);
   Vec3 result = entry_perturbed(n.map[c.cur], v, inner, waves);
   if (c.prev != c.cur) result = entry_perturbed(n.map[c.prev], v, inner, waves) * (1.0 - c.fraction) + result * c.fraction;
   return normalize(unwarp_normal(n, result));
@@ -188,7 +189,7 @@ Vec3 mapped(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const st
 // values and divided by the weights' sum (in single precision, as Do_Average_Normals sums them).
 Vec3 averaged(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
   const Vec3 v = warp_normal(n, normal);
-  const TexturePoint inner(to_pattern_space(n.pattern, at.point), at.u, at.v);
+  const TexturePoint inner = at.moved(to_pattern_space(n.pattern, at.point));
   Vec3 sum{0, 0, 0};
   float total = 0;
   for (const RenderNormal::MapEntry& e : n.map) {
@@ -203,13 +204,13 @@ Vec3 averaged(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const 
 // back, so scaling a normal scales its bumps with it. A uv-mapped normal is its own normal at the hit's <u, v, 0>.
 Vec3 perturbed(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const std::vector<WaveSource>& waves) {
   if (n.uv_normal)
-    return normalize(perturbed(*n.uv_normal, normal, TexturePoint({at.u, at.v, 0.0}, at.u, at.v), waves));
+    return normalize(perturbed(*n.uv_normal, normal, at.at_uv(), waves));
   if (n.kind == NormalKind::average) return averaged(n, normal, at, waves);
   if (!n.map.empty()) return mapped(n, normal, at, waves);
   Vec3 v = warp_normal(n, normal);
   const Vec3 p = to_pattern_space(n.pattern, at.point);
   if (n.bump) v = bump_map_normal(*n.bump, n.use_index, n.amount, p, v);
-  else v += displacement(n, p, waves);
+  else v += displacement(n, p, waves, at.surface);
   return unwarp_normal(n, v);
 }
 }  // namespace

@@ -31,6 +31,6 @@ inline Vec3 perturb_normal(const RenderNormal& n, Vec3 normal, Vec3 world_point,
 Vec3 bump_map_normal(const RenderImageMap& map, bool use_index, double amount, Vec3 pattern_point, Vec3 normal);
 
 // The value of a pattern normal's pattern after its wave step and slope_map (what Perturb_Normal samples).
-double slope_value(const RenderNormal& n, Vec3 pattern_point);
+double slope_value(const RenderNormal& n, Vec3 pattern_point, const ShadingSurface* surface = nullptr);
 
 }  // namespace povtrace::render

@@ -83,7 +83,7 @@ double function_pattern(const sdl::FunctionValue& f, int noise_generator, Vec3 p
 }
 }  // namespace
 
-double pattern_value(const PatternParams& params, Vec3 p) {
+double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* hit) {
   switch (params.kind) {
     case PatternKind::checker: return patterns::checker(p);
     case PatternKind::hexagon: return patterns::hexagon(p);
@@ -115,6 +115,11 @@ double pattern_value(const PatternParams& params, Vec3 p) {
     case PatternKind::quilted: return quilted(p, params.control0, params.control1);
     case PatternKind::spiral1: return patterns::spiral1(p, params.arms, params.turbulence, params.noise_generator);
     case PatternKind::spiral2: return patterns::spiral2(p, params.arms, params.turbulence, params.noise_generator);
+    case PatternKind::mandel:
+    case PatternKind::julia:
+    case PatternKind::magnet: return patterns::fractal(params.fractal, p);
+    case PatternKind::slope: return patterns::slope(params.slope, p, hit);
+    case PatternKind::aoi: return patterns::aoi(hit);
     case PatternKind::density_file:
       return patterns::density_file(*params.density_file, params.density_interpolation, p);
     case PatternKind::solid:

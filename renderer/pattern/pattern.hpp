@@ -28,6 +28,19 @@ struct PatternParams {
   int function_noise_generator = 2;
   std::shared_ptr<const DensityGrid> density_file;   // density_file: the voxel grid
   int density_interpolation = 0;                     // and `interpolate N` as written
+  FractalParams fractal;                             // mandel, julia, magnet
+  SlopeParams slope;                                 // slope
+  // The pattern's own `noise_generator` (1…3), 0 for the scene's: set_generator keeps it (POV-Ray's GetNoiseGen).
+  int own_noise_generator = 0;
+};
+
+// What slope and aoi read of the surface being shaded, in world space: the hit point, the normal as POV-Ray's
+// PNormal (facing the ray, perturbed by the layers' normals so far) and the ray's direction. Patterns evaluated
+// away from a surface (media densities, functions) have none and give 0, as in POV-Ray.
+struct ShadingSurface {
+  Vec3 point;
+  Vec3 normal;
+  Vec3 ray_direction;
 };
 
 // The frequency/phase/wave step every pattern value goes through.
@@ -40,7 +53,7 @@ struct WaveParams {
 
 // The raw value of the pattern at a pattern-space point: 0..1 for most, 0/1 for checker and brick, 0/1/2 for
 // hexagon, any value for marble and wood (their wave folds it).
-double pattern_value(const PatternParams& params, Vec3 p);
+double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* hit = nullptr);
 
 // Frequency, phase and the wave shape (Evaluate_TPat after the pattern switch).
 double apply_wave(double value, const WaveParams& wave);

@@ -1,6 +1,7 @@
 // The pattern functions behind pattern_value(), grouped by file: tilings.cpp (checker, hexagon, brick) and
 // noise_patterns.cpp (bozo, spotted, granite, marble, wood, agate, spiral1, spiral2, dents, wrinkles, ripples, waves),
-// cell_patterns.cpp (crackle, cells), density_file.cpp (density_file). Internal to renderer/pattern.
+// cell_patterns.cpp (crackle, cells), fractal_patterns.cpp (mandel, julia, magnet), surface_patterns.cpp (slope,
+// aoi), density_file.cpp (density_file). Internal to renderer/pattern.
 #pragma once
 
 #include "renderer/pattern/pattern.hpp"
@@ -28,6 +29,13 @@ double waves(Vec3 p, double frequency, double phase);
 
 double crackle(Vec3 p, const CrackleParams& params, NoiseGenerator generator);
 double cells(Vec3 p);
+
+// mandel, julia, magnet (fractal_patterns.cpp): the exterior or interior value at the point's x + iy.
+double fractal(const FractalParams& f, Vec3 p);
+
+// slope and aoi (surface_patterns.cpp): 0 without a surface.
+double slope(const SlopeParams& s, Vec3 p, const ShadingSurface* hit);
+double aoi(const ShadingSurface* hit);
 
 // density_file (density_file.cpp): the grid's value at p, 0 outside the unit cube; `interpolation` as written.
 double density_file(const DensityGrid& grid, int interpolation, Vec3 p);

@@ -55,7 +55,8 @@ std::shared_ptr<const RenderImageMap> build_render_image(const ImageMap& map, Im
 }
 
 void set_generator(RenderPigment& r, NoiseGenerator generator) {
-  r.params.noise_generator = generator;
+  const int own = r.params.own_noise_generator;
+  r.params.noise_generator = own != 0 ? static_cast<NoiseGenerator>(own) : generator;
   r.params.function_noise_generator = static_cast<int>(generator);
   for (auto& c : r.children) set_generator(c, generator);
 }
@@ -82,14 +83,14 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected,
                            p.frequency,  p.phase,    p.function,   p.arms,
                            p.control0,   p.control1, 2,   // both generators set for the scene (set_generator)
-                           p.density_file, p.density_interpolation};
+                           p.density_file, p.density_interpolation, p.fractal, p.slope, p.noise_generator};
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
   r.classic_turbulence_warps =
       p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
   if (p.pattern == PatternKind::image_map) r.image = build_render_image(*p.image, images);
-  else add_map(r, p.entries.empty() ? default_colour_map(p.pattern) : p.entries, images, quick_colours);
+  else add_map(r, p.entries.empty() ? default_colour_map(p) : p.entries, images, quick_colours);
   return r;
 }
 

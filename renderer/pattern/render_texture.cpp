@@ -27,7 +27,33 @@ bool pigment_reads_uv(const RenderPigment& p) {
 }
 
 bool normal_reads_uv(const RenderNormal& n) { return n.uv_normal != nullptr; }
+
+bool is_surface_pattern(PatternKind k) { return k == PatternKind::slope || k == PatternKind::aoi; }
+
+bool pigment_reads_surface(const RenderPigment& p) {
+  if (is_surface_pattern(p.pattern)) return true;
+  for (const auto& c : p.children)
+    if (pigment_reads_surface(c)) return true;
+  return false;
+}
+
+bool normal_reads_surface(const RenderNormal& n) {
+  if (pigment_reads_surface(n.pattern)) return true;
+  if (n.uv_normal && normal_reads_surface(*n.uv_normal)) return true;
+  for (const auto& e : n.map)
+    if (e.normal && normal_reads_surface(*e.normal)) return true;
+  return false;
+}
 }  // namespace
+
+bool texture_reads_surface(const RenderTexture& texture) {
+  if (texture.patterned() && pigment_reads_surface(texture.pattern)) return true;
+  for (const RenderLayer& l : texture.layers)
+    if (pigment_reads_surface(l.pigment) || (l.normal && normal_reads_surface(*l.normal))) return true;
+  for (const RenderTexture& c : texture.children)
+    if (texture_reads_surface(c)) return true;
+  return false;
+}
 
 RenderTexture build_render_texture(const Texture& texture, ImageCache& images, bool quick_colours) {
   RenderTexture r;

@@ -16,6 +16,8 @@ bool texture_is_opaque(const RenderTexture& texture);
 
 // Whether shading the texture reads the hit's uv coordinates (a uv_mapping pigment, normal or texture in it).
 bool texture_reads_uv(const RenderTexture& texture);
+// Whether any pattern in it is slope or aoi, which read the surface's normal (TexturePoint::surface).
+bool texture_reads_surface(const RenderTexture& texture);
 
 // The scene's noise generator for every pigment and normal pattern of the texture.
 void set_texture_generator(RenderTexture& texture, NoiseGenerator generator);

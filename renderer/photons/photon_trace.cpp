@@ -72,9 +72,11 @@ void Tracer::photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, i
   const Vec3 point = ray.origin + ray.direction * hit.t;
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
-  const TexturePoint at = texture_point(hit, point, uv, scene_.scale);
+  TexturePoint at = texture_point(hit, point, uv, scene_.scale);
   const Vec3 geometric = surface_normal(hit, point);
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
+  const ShadingSurface surface{point / scene_.scale, raw_normal, ray.direction};   // slope, aoi
+  at.surface = &surface;
   const ShadingPoint sp{hit, point, raw_normal, warps_.size()};
   const PhotonHit here{ray, sp, level, weight, state, shot};
   for (int k = 0; k < blend.count; ++k) {
@@ -91,15 +93,15 @@ void Tracer::photon_texture(const PhotonHit& at, const RenderTexture& texture, c
   warps_.push_back(&texture);
   const RenderPigment& pattern = texture.pattern;
   if (pattern.pattern == PatternKind::uv_mapping) {
-    photon_texture(at, texture.children.front(), TexturePoint({tp.u, tp.v, 0.0}, tp.u, tp.v), colour);
+    photon_texture(at, texture.children.front(), tp.at_uv(), colour);
   } else {
-    const TexturePoint p(to_pattern_space(pattern, tp.point), tp.u, tp.v);
+    const TexturePoint p = tp.moved(to_pattern_space(pattern, tp.point));
     if (pattern.pattern == PatternKind::average) {
       double total = 0;
       for (const RenderTexture& c : texture.children) total += c.value;
       for (const RenderTexture& c : texture.children) photon_texture(at, c, p, colour * (c.value / total));
     } else {
-      const double value = apply_wave(pattern_value(pattern.params, p.point), pattern.wave);
+      const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
       const MapChoice m = choose_entries(texture.children, value);
       if (m.prev == m.cur) {
         photon_texture(at, texture.children[m.cur], p, colour);

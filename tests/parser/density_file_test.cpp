@@ -232,13 +232,13 @@ TEST(DensityFileParse, ItIsAPatternEverywhere) {
 }
 
 // A density povtrace cannot render must not be left out of the media silently: the object, or the scene's
-// atmospheric media, is refused (mandel stands for any pattern povtrace does not render yet).
+// atmospheric media, is refused (pavement stands for any pattern povtrace does not render yet).
 TEST(MediaDensityParse, AnUnsupportedDensityRefusesTheObjectOrTheAtmosphere) {
   ParseError e = parse_error(
-      "#version 3.7;\nbox { 0, 1 hollow interior { media { emission 1 density { mandel 10 } } } }\n");
-  EXPECT_NE(e.bare_message().find("unsupported: the density item 'mandel'"), std::string::npos) << e.what();
-  e = parse_error("#version 3.7;\nmedia { emission 1 density { mandel 10 } }\n");
-  EXPECT_NE(e.bare_message().find("unsupported: the density item 'mandel'"), std::string::npos) << e.what();
+      "#version 3.7;\nbox { 0, 1 hollow interior { media { emission 1 density { pavement } } } }\n");
+  EXPECT_NE(e.bare_message().find("unsupported: the density item 'pavement'"), std::string::npos) << e.what();
+  e = parse_error("#version 3.7;\nmedia { emission 1 density { pavement } }\n");
+  EXPECT_NE(e.bare_message().find("unsupported: the density item 'pavement'"), std::string::npos) << e.what();
   EXPECT_NE(e.bare_message().find("atmospheric media"), std::string::npos) << e.what();
 }
 

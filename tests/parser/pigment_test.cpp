@@ -95,8 +95,8 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("pigment_map"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n")
                 .bare_message().find("unsupported: the warp 'black_hole'"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 slope y] [1 rgb 1] } } }\n")
-                .bare_message().find("unsupported: the pigment item 'slope'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 pavement] [1 rgb 1] } } }\n")
+                .bare_message().find("unsupported: the pigment item 'pavement'"), std::string::npos);
 }
 
 // function { EXPRESSION } as a pattern (POV-Ray's Parse_Function): a float function of x, y, z.

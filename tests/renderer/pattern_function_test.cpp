@@ -84,10 +84,10 @@ TEST(PatternFunction, UsesTheSceneNoiseGeneratorWhenItRuns) {
 
 TEST(PatternFunction, WhatTheRendererCannotEvaluateIsRefusedByName) {
   Messages m;
-  const ParseError e = parse_error("#declare F = function { pattern { bozo noise_generator 1 } }\n#declare V = F(1, 2, 3);\n",
+  const ParseError e = parse_error("#declare F = function { pattern { pavement } }\n#declare V = F(1, 2, 3);\n",
                                    with_patterns(m));
   EXPECT_EQ(e.location().line, 2);
-  EXPECT_NE(e.bare_message().find("unsupported: the pigment item 'noise_generator' (at test.pov:1:40) in the pattern "
+  EXPECT_NE(e.bare_message().find("unsupported: the pigment item 'pavement' (at test.pov:1:35) in the pattern "
                                   "function (written at test.pov:1:14)"),
             std::string::npos)
       << e.bare_message();
