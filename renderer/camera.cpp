@@ -10,12 +10,15 @@
 #include <cmath>
 
 #include "renderer/render.hpp"
+#include "renderer/pattern/normal_perturbation.hpp"
+#include "renderer/mesh_camera.hpp"
 
 namespace povtrace::render {
 
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
+constexpr double kPiOver360 = 0.00872664625997164788;   // POV-Ray's M_PI_360 as its source spells it
 
 // v rotated by `angle` radians about the unit axis a (right-hand rule; POV-Ray's axis rotation).
 Vec3 rotated_about(Vec3 v, Vec3 a, double angle) {
@@ -44,20 +47,21 @@ Vec3 normalize_or_zero(Vec3 v) {
   return l != 0.0 ? v / l : v;
 }
 
-std::optional<Ray> fisheye(const RenderCamera& c, double x0, double y0) {
+// x0, y0 end as POV-Ray leaves them (the polar angle and the angle off the axis), which a camera normal reads.
+std::optional<Ray> fisheye(const RenderCamera& c, double& x0, double& y0) {
   x0 *= c.right_length;
   y0 *= c.up_length;
   const double rad = std::sqrt(x0 * x0 + y0 * y0);
   if (rad > 1.0) return std::nullopt;
-  const double phi = polar_angle(x0, y0, rad);
-  const double theta = rad * c.angle * M_PI / 360.0;
-  return along(c.location, c.right * (std::cos(phi) * std::sin(theta)) + c.up * (std::sin(phi) * std::sin(theta)) +
-                               c.direction * std::cos(theta));
+  x0 = polar_angle(x0, y0, rad);
+  y0 = rad * c.angle * kPiOver360;
+  return along(c.location, c.right * (std::cos(x0) * std::sin(y0)) + c.up * (std::sin(x0) * std::sin(y0)) +
+                               c.direction * std::cos(y0));
 }
 
 // Omnimax: the 1.283458 aspect of the dome format, a polynomial radius-to-angle map, nothing below 45° under the
 // projection axis.
-std::optional<Ray> omnimax(const RenderCamera& c, double x0, double y0) {
+std::optional<Ray> omnimax(const RenderCamera& c, double& x0, double& y0) {
   const double aspect = c.aspect;
   if (aspect > 1.0) {
     if (aspect > 1.283458) {
@@ -71,46 +75,51 @@ std::optional<Ray> omnimax(const RenderCamera& c, double x0, double y0) {
   }
   const double rad = std::sqrt(x0 * x0 + y0 * y0);
   if (rad > 1.0) return std::nullopt;
-  const double phi = polar_angle(x0, y0, rad);
-  const double theta = 1.411269 * rad - 0.09439 * std::pow(rad, 3) + 0.25674 * std::pow(rad, 5);
-  const double cx = std::cos(phi), sx = std::sin(phi), cy = std::cos(theta), sy = std::sin(theta);
+  x0 = polar_angle(x0, y0, rad);
+  // POV-Ray's polynomial, its powers as products.
+  y0 = 1.411269 * rad - 0.09439 * rad * rad * rad + 0.25674 * rad * rad * rad * rad * rad;
+  const double cx = std::cos(x0), sx = std::sin(x0), cy = std::cos(y0), sy = std::sin(y0);
   if (sx * sy < std::tan(135.0 * kDegree) * cy) return std::nullopt;
   return along(c.location, c.right * (cx * sy) + c.up * (sx * sy) + c.direction * cy);
 }
 
-std::optional<Ray> panoramic(const RenderCamera& c, double across, double y0) {
-  const double x0 = (1.0 - across) * M_PI;
-  const double lat = M_PI / 2 * y0;
+std::optional<Ray> panoramic(const RenderCamera& c, double& x0, double& y0) {
+  x0 = (1.0 - x0) * M_PI;
+  y0 = M_PI_2 * y0;
   double ty;
-  if (std::fabs(M_PI / 2 - std::fabs(lat)) < tolerance::epsilon) ty = lat > 0.0 ? tolerance::bound_huge : -tolerance::bound_huge;
-  else ty = std::tan(lat);
+  if (std::fabs(M_PI / 2 - std::fabs(y0)) < tolerance::epsilon) ty = y0 > 0.0 ? tolerance::bound_huge : -tolerance::bound_huge;
+  else ty = std::tan(y0);
   return along(c.location, c.right * std::cos(x0) + c.up * ty + c.direction * std::sin(x0));
 }
 
-std::optional<Ray> spherical(const RenderCamera& c, double u, double v) {
-  const double lat = v * c.v_angle * kDegree, lon = u * c.h_angle * kDegree;
-  const Vec3 up_down = rotated_about(c.direction, normalize_or_zero(c.right), -lat);
-  return along(c.location, rotated_about(up_down, normalize_or_zero(c.up), lon));
+// The angles as POV-Ray forms them: the fraction of the image times (field of view / 360) · 2π.
+std::optional<Ray> spherical(const RenderCamera& c, double& x0, double& y0) {
+  y0 *= (c.v_angle / 360) * (2 * M_PI);
+  x0 *= (c.h_angle / 360) * (2 * M_PI);
+  const Vec3 up_down = rotated_about(c.direction, normalize_or_zero(c.right), -y0);
+  return along(c.location, rotated_about(up_down, normalize_or_zero(c.up), x0));
 }
 
-}  // namespace
-
-std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int width, int height) {
-  // POV-Ray's CreateCameraRay: the pixel centre is (x + 0.5, y − 0.5) and rows count from the bottom; the screen
-  // coordinates are formed in its order of operations, so that rays agree to the last bit (a pattern with a jump,
-  // such as a function pattern wrapping at 1, shows any difference).
-  const double px = x + 0.5, py = y - 0.5;
+std::optional<Ray> projected_ray(const RenderCamera& c, double px, double py, int width, int height, double& x0,
+                                 double& y0) {
   const double u = px / width - 0.5;
   const double v = ((height - 1) - py) / height - 0.5;
-  const double u2 = 2.0 * px / width - 1.0, v2 = 2.0 * ((height - 1) - py) / height - 1.0;
   const double half_angle = c.angle * kDegree;
+  x0 = u;
+  y0 = v;
   switch (c.projection) {
     case Projection::perspective: return along(c.location, c.direction + c.right * u + c.up * v);
     case Projection::orthographic: return along(c.location + c.right * u + c.up * v, c.direction);
-    case Projection::fisheye: return fisheye(c, u2, v2);
-    case Projection::omnimax: return omnimax(c, u2, v2);
-    case Projection::panoramic: return panoramic(c, px / width, v2);
-    case Projection::spherical: return spherical(c, u, v);
+    case Projection::fisheye:
+    case Projection::omnimax:
+      x0 = 2.0 * px / width - 1.0;
+      y0 = 2.0 * ((height - 1) - py) / height - 1.0;
+      return c.projection == Projection::fisheye ? fisheye(c, x0, y0) : omnimax(c, x0, y0);
+    case Projection::panoramic:
+      x0 = px / width;
+      y0 = 2.0 * ((height - 1) - py) / height - 1.0;
+      return panoramic(c, x0, y0);
+    case Projection::spherical: return spherical(c, x0, y0);
     case Projection::ultra_wide_angle: {
       const double a = u * half_angle, b = v * half_angle * c.aspect;
       return along(c.location, c.right * std::sin(a) + c.up * std::sin(b) + c.direction * (std::cos(a) * std::cos(b)));
@@ -131,17 +140,47 @@ std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int wid
       const double b = v * half_angle;
       return along(c.location + c.right * (u * c.aspect), c.up * std::sin(b) + c.direction * std::cos(b));
     }
+    case Projection::mesh: break;   // mesh_camera_ray
   }
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int width, int height, unsigned ray_number) {
+  // POV-Ray's CreateCameraRay: the pixel centre is (x + 0.5, y − 0.5) and rows count from the bottom; the screen
+  // coordinates are formed in its order of operations, so that rays agree to the last bit (a pattern with a jump,
+  // such as a function pattern wrapping at 1, shows any difference).
+  double x0 = 0, y0 = 0;   // a mesh camera leaves them at 0 (POV-Ray never sets them there)
+  std::optional<Ray> ray = c.projection == Projection::mesh
+                               ? mesh_camera_ray(*c.mesh, x + 0.5, y - 0.5, width, height, ray_number)
+                               : projected_ray(c, x + 0.5, y - 0.5, width, height, x0, y0);
+  if (ray && c.projection == Projection::mesh) ray = along(ray->origin, ray->direction);
+  if (ray && c.normal) {
+    // A camera normal bends the unit direction by its pattern at <x0, y0, 0> (POV-Ray has no hit there: uv, slope
+    // and the like read nothing); the ray is normalised again.
+    const Vec3 bent = perturb_normal(*c.normal, ray->direction, TexturePoint({x0, y0, 0.0}), c.normal_waves);
+    ray = along(ray->origin, bent);
+  }
+  return ray;
+}
+
+unsigned camera_rays_per_pixel(const RenderCamera& c) {
+  return c.projection == Projection::mesh && c.mesh ? c.mesh->rays_per_pixel : 1;
+}
+
 bool origins_vary(const RenderCamera& c) {
   return c.projection == Projection::orthographic || c.projection == Projection::cylinder3 ||
-         c.projection == Projection::cylinder4;
+         c.projection == Projection::cylinder4 || c.projection == Projection::mesh;
 }
 
 RenderCamera make_render_camera(const Camera& camera) {
-  RenderCamera c{camera.projection, camera.location, camera.direction, camera.up, camera.right};
+  RenderCamera c;
+  c.projection = camera.projection;
+  c.location = camera.location;
+  c.direction = camera.direction;
+  c.up = camera.up;
+  c.right = camera.right;
   c.angle = camera.angle;
   c.h_angle = camera.h_angle;
   c.v_angle = camera.v_angle;
@@ -159,6 +198,7 @@ RenderCamera make_render_camera(const Camera& camera) {
     case Projection::ultra_wide_angle: c.aspect = c.up_length / c.right_length; break;
     case Projection::fisheye:
     case Projection::omnimax: c.aspect = c.right_length / c.up_length; break;
+    case Projection::mesh: return c;   // its rays come from the meshes (render_scene.cpp makes them ready)
   }
   c.direction = normalize_or_zero(c.direction);
   c.up = normalize_or_zero(c.up);

@@ -92,4 +92,12 @@ PigmentSample sample_pigment(const RenderPigment& pigment, const TexturePoint& a
   return blend(pigment, value, p);
 }
 
+double pigment_grey(const RenderPigment& pigment, Vec3 p, const ShadingSurface* surface) {
+  TexturePoint at(p);
+  at.surface = surface;
+  const PigmentSample s = sample_pigment(pigment, at);
+  if (!s.found) return 0.0;
+  return static_cast<float>(0.297 * s.colour.r + 0.589 * s.colour.g + 0.114 * s.colour.b);
+}
+
 }  // namespace povtrace::render

@@ -35,8 +35,9 @@ void pretrace_block(Tracer& tracer, const RenderScene& scene, const RenderSettin
     const std::vector<radiosity::PretracePoint> points =
         radiosity::pretrace_points(rect, state, sub, size, jitter);
     for (const radiosity::PretracePoint& p : points)
-      if (const std::optional<Ray> ray = camera_ray(scene.camera, p.x, p.y, settings.width, settings.height))
-        (void)tracer.trace_camera_ray(*ray, true);
+      for (unsigned n = 0; n < camera_rays_per_pixel(scene.camera); ++n)   // a mesh camera's rays per pixel
+        if (const std::optional<Ray> ray = camera_ray(scene.camera, p.x, p.y, settings.width, settings.height, n))
+          (void)tracer.trace_camera_ray(*ray, true);
     if (radiosity::pretrace_again(static_cast<int>(points.size()), gatherer.top_level_queries(),
                                   gatherer.top_level_reuse(), coverage))
       for (int y = 0; y < split_y; ++y)

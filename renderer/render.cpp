@@ -73,10 +73,30 @@ class BlockRenderer {
 
  private:
   Sample shade(double x, double y) {
+    const unsigned rays = camera_rays_per_pixel(scene_.camera);
+    if (rays > 1) [[unlikely]] return shade_rays(x, y, rays);
     const std::optional<Ray> ray = camera_ray(scene_.camera, x, y, s_.width, s_.height);
     if (!ray) return {Rgb{0, 0, 0}, 1.0};   // POV-Ray: no ray traced, a black and fully transparent sample
     const Radiance r = tracer_.trace_camera_ray(*ray);
     return {r.colour, r.transmit};
+  }
+
+  // A mesh camera's rays per pixel: the mean of the rays it traces (POV-Ray's TracePixel; a sample without any is
+  // black and fully transparent).
+  Sample shade_rays(double x, double y, unsigned rays) {
+    Rgb colour{0, 0, 0};
+    double transmit = 0;
+    unsigned traced = 0;
+    for (unsigned n = 0; n < rays; ++n) {
+      const std::optional<Ray> ray = camera_ray(scene_.camera, x, y, s_.width, s_.height, n);
+      if (!ray) continue;
+      const Radiance r = tracer_.trace_camera_ray(*ray);
+      colour += r.colour;
+      transmit += r.transmit;
+      ++traced;
+    }
+    if (traced == 0) return {Rgb{0, 0, 0}, 1.0};
+    return {colour * (1.0 / traced), transmit / traced};
   }
 
   // AA colour distance (§7): decode the working gamma, encode with the AA gamma, sum |Δ| over R, G, B and T.

@@ -73,7 +73,11 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings);
 
 // The camera ray through continuous pixel position (x, y) (integer = pixel centre, y = 0 top row); none where the
 // projection traces no ray (outside a fisheye's or omnimax's circle). renderer/camera.cpp.
-std::optional<Ray> camera_ray(const RenderCamera& camera, double x, double y, int width, int height);
+// Ray `ray_number` (0 … camera_rays_per_pixel − 1) of the sample at (x, y); none where the camera traces nothing.
+std::optional<Ray> camera_ray(const RenderCamera& camera, double x, double y, int width, int height,
+                              unsigned ray_number = 0);
+// How many rays each sample averages (a mesh camera's rays per pixel, else 1).
+unsigned camera_rays_per_pixel(const RenderCamera& camera);
 // Whether camera rays start at different points (orthographic, cylinder 3 and 4).
 bool origins_vary(const RenderCamera& camera);
 RenderCamera make_render_camera(const Camera& camera);

@@ -4,6 +4,7 @@
 
 #include "renderer/csg_build.hpp"
 #include "renderer/located_error.hpp"
+#include "renderer/mesh_camera.hpp"
 #include "renderer/object_geometry.hpp"
 #include "renderer/object_primitives.hpp"
 #include "renderer/shapes/triangle_shapes.hpp"
@@ -261,6 +262,14 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   r.noise_generator = static_cast<NoiseGenerator>(generator);
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = make_render_camera(scene.camera);
+  if (scene.camera.projection == Projection::mesh && scene.camera.mesh)
+    r.camera.mesh = make_mesh_camera(*scene.camera.mesh, scene.camera.location.z, scene.camera.direction.z);
+  if (scene.camera.normal) {
+    auto normal = std::make_shared<RenderNormal>(build_render_normal(*scene.camera.normal, &images));
+    set_normal_generator(*normal, static_cast<NoiseGenerator>(generator));
+    r.camera.normal = std::move(normal);
+    r.camera.normal_waves = r.wave_sources;
+  }
   r.settings = scene.settings;
   if (radiosity) add_radiosity(r, scene);
   r.language_version = scene.language_version;

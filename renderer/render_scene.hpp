@@ -179,11 +179,17 @@ struct RenderLight {
 
 // The camera as its rays are made (renderer/camera.cpp): the non-planar projections keep unit vectors, the
 // lengths they had and the aspect ratio POV-Ray derives from them.
+struct RenderMeshCamera;   // renderer/mesh_camera.hpp
+
 struct RenderCamera {
   Projection projection = Projection::perspective;
   Vec3 location, direction, up, right;
   double angle = 90, h_angle = 360, v_angle = 180;   // degrees
   double up_length = 1, right_length = 1, aspect = 1;
+  // camera normal { }: bends each ray by the pattern at the ray's screen coordinates (with the scene's wave sources).
+  std::shared_ptr<const RenderNormal> normal{};
+  std::vector<WaveSource> normal_waves{};
+  std::shared_ptr<const RenderMeshCamera> mesh{};   // projection mesh
 };
 
 // How working-space values become linear light for output (pipeline §6).

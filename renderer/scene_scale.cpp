@@ -127,7 +127,17 @@ SceneDescription scaled_scene(const SceneDescription& scene, double k) {
     }
   }
   Camera& c = s.camera;
-  c.location = c.location * k;
+  // A mesh camera's location is an offset along its faces' normals in mesh space, which the meshes' scaling below
+  // scales already; its rays come from the meshes.
+  if (c.mesh) {
+    auto mesh = std::make_shared<MeshCamera>(*c.mesh);
+    for (MeshCameraMesh& cm : mesh->meshes) {
+      cm.world_from_object = cm.world_from_object * m;
+      cm.transformed = true;
+    }
+    c.mesh = std::move(mesh);
+  }
+  if (c.projection != Projection::mesh) c.location = c.location * k;
   c.direction = c.direction * k;
   c.up = c.up * k;
   c.right = c.right * k;

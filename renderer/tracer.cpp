@@ -370,7 +370,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
         const double fade = metallic_fade(std::fabs(std::acos(std::clamp(c, -1.0, 1.0))) / (M_PI / 2));
         amount = mul(amount, Rgb{1, 1, 1} + (Rgb{s.r, s.g, s.b} - Rgb{1, 1, 1}) * (m * (1.0 - fade)));
       }
-      reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal});
+      reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal, &layer.finish});
     }
     Rgb lit = model_ == ShadingModel::povray
                   ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state)
@@ -394,7 +394,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
   const HitContext here{ray, sp, level, weight, state};
   bool total_internal_reflection = false;
   if (trans > transmit_bailout_) {
-    const Transmission t = transmit(here, top_normal, filter, trans);
+    const Transmission t = transmit(here, top_normal, filter, trans, texture.layers.front().finish);
     out.colour += t.colour;
     if (!t.total_internal_reflection) out.transmit = t.transmit;
     total_internal_reflection = t.total_internal_reflection;
@@ -407,7 +407,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
     const PendingReflection r = reflections_[i];
     if (is_zero(r.amount)) continue;
     if (total_internal_reflection && r.normal == top_normal) continue;
-    const Radiance seen = trace_reflection(here, r.normal, r.weight);
+    const Radiance seen = trace_reflection(here, r.normal, r.weight, r.finish);
     if (r.exponent != 1.0)
       out.colour += mul(r.amount, Rgb{std::pow(seen.colour.x, r.exponent), std::pow(seen.colour.y, r.exponent),
                                       std::pow(seen.colour.z, r.exponent)});
@@ -436,18 +436,23 @@ Radiance Tracer::unlit_layers(const RenderTexture& texture, const TexturePoint& 
 
 // The mirror ray about the layer normal, corrected when it would go into the geometric surface (a perturbed
 // normal can do that), traced one level deeper without background transparency (§4, §5).
-Radiance Tracer::trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight) {
+Radiance Tracer::trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight, const Finish* irid) {
   const Ray& ray = at.ray;
   ++counts_.secondary;
   RayState reflected = at.state;
   reflected.alpha_background = false;
-  return trace(Ray{at.sp.point, mirror_direction(ray.direction, normal, at.sp.raw_normal),
-                   ray_kind::after_reflection(ray.kind)},
-               at.level + 1, reflected_weight, reflected);
+  const Vec3 direction = mirror_direction(ray.direction, normal, at.sp.raw_normal);
+  Radiance seen = trace(Ray{at.sp.point, direction, ray_kind::after_reflection(ray.kind)}, at.level + 1,
+                        reflected_weight, reflected);
+  // irid tints the reflected colour too (POV-Ray's ComputeReflection), with the reflected ray as the incoming light.
+  if (irid && irid->irid > 0) [[unlikely]]
+    seen.colour = mul(seen.colour, irid_factor(*irid, direction, ray.direction, normal, at.sp.point));
+  return seen;
 }
 
 // Transmission (§4 "Transmission/refraction"): the relative ior comes from the interiors the ray is in.
-Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans) {
+Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans,
+                                      const Finish& top_finish) {
   const Ray& ray = at.ray;
   const SurfaceHit& hit = at.sp.hit;
   const Vec3 point = at.sp.point;
@@ -487,7 +492,8 @@ Tracer::Transmission Tracer::transmit(const HitContext& at, Vec3 normal, Rgb fil
     const std::optional<Vec3> refracted = refracted_direction(ray.direction, normal, eta);
     if (!refracted) {
       // Total internal reflection: the mirror ray (top layer's normal), not filtered by the layers (§4 TIR).
-      const Radiance reflected = trace_reflection(at, normal, next_weight);
+      // POV-Ray's TraceRefractionRay reflects with the top layer's finish: its irid tints the reflection too.
+      const Radiance reflected = trace_reflection(at, normal, next_weight, &top_finish);
       return {mul(attenuation, reflected.colour), 0.0, true};
     }
     behind = trace(Ray{point, *refracted, ray_kind::after_refraction(ray.kind)}, level + 1, next_weight, next);
@@ -738,18 +744,40 @@ Rgb Tracer::shadowed_light(const RenderLight& l, Vec3 point, Vec3 to_light, doub
 // What one light of colour `lc` from direction `to_light` (c = N·L) adds to a layer (POV-Ray's ComputeDiffuseColour,
 // ComputePhongColour and ComputeSpecularColour): diffuse with brilliance, or diffuse_back from behind; highlights
 // tinted by metallic. The lights' loop and the photons' gather (photons/photon_gather.cpp) both use it.
-Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 normal, Vec3 view, Rgb lc, Vec3 to_light,
-                      double c, double speckle, bool highlights) const {
+// irid (POV-Ray's ComputeIridColour): a film of the finish's thickness, made uneven by 5 octaves of the scene's
+// turbulence at the point when irid's turbulence is set, shifts the phase of each primary by
+// 2π·thickness·(|N·L| + |N·E|) over its wavelength; the light is scaled by 1 + irid·cos(phase / wavelength).
+Rgb Tracer::irid_factor(const Finish& fin, Vec3 incoming, Vec3 view, Vec3 normal, Vec3 point) const {
+  double thickness = fin.irid_thickness;
+  if (fin.irid_turbulence != 0) {
+    Turbulence t;
+    t.octaves = 5;
+    t.omega = 0.5f;
+    t.lambda = 2.0f;
+    const double noise = 2.0 * turbulence(point / scene_.scale, t, scene_.noise_generator) - 1.0;
+    thickness *= 1.0 + noise * fin.irid_turbulence;
+  }
+  const Colour& wl = scene_.settings.irid_wavelength;
+  const double phase = 2.0 * M_PI * thickness * (std::fabs(dot(normal, incoming)) + std::fabs(dot(normal, view)));
+  return {1.0 + fin.irid * std::cos(phase / wl.r), 1.0 + fin.irid * std::cos(phase / wl.g),
+          1.0 + fin.irid * std::cos(phase / wl.b)};
+}
+
+Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 point, Vec3 normal, Vec3 view, Rgb lc,
+                      Vec3 to_light, double c, double speckle, bool highlights) const {
   const Finish& fin = layer.finish;
+  const auto with_irid = [&](Rgb light) {
+    return fin.irid > 0 ? mul(light, irid_factor(fin, to_light, view, normal, point)) : light;
+  };
   if (c < tolerance::epsilon) {   // behind the surface: only diffuse_back
     if (fin.diffuse_back > 0)
-      return mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle);
+      return with_irid(mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle));
     return {};
   }
   Rgb out;
   if (fin.diffuse > 0)
     out += mul(pigment, lc) * (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
-  if (!highlights) return out;
+  if (!highlights) return with_irid(out);
   Rgb highlight = lc;
   if (fin.metallic != 0) {
     const double fade = metallic_fade(std::acos(std::clamp(c, -1.0, 1.0)) / (M_PI / 2));
@@ -766,7 +794,7 @@ Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 no
     const double h = dot(normal, half) / length(half);
     if (h > 0) out += highlight * (fin.specular * std::pow(h, layer.specular_exponent));
   }
-  return out;
+  return with_irid(out);
 }
 
 // POV-Ray's finish model for one layer (§2): ambient and emission scaled by opacity; per light, diffuse with
@@ -805,7 +833,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) continue;
     }
-    out += one_light(layer, pigment, att, normal, view, lc, to_light, c, speckle,
+    out += one_light(layer, pigment, att, point, normal, view, lc, to_light, c, speckle,
                      highlights && !l.light.shadowless);   // fill lights give no highlights
   }
   return out;

@@ -112,6 +112,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
     double weight = 0;     // ray weight for adc_bailout
     double exponent = 1;   // 1 / `exponent`
     Vec3 normal;           // the layer's normal (facing the viewer)
+    const Finish* finish = nullptr;   // the layer's finish (irid tints what it reflects)
   };
 
   Radiance trace(const Ray& ray, int level, double weight, const RayState& state);
@@ -165,8 +166,9 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   };
   // The transmitted ray (refracted, continued through ior 1, or totally reflected) of a hit, with interior fade,
   // seen through the layers' `filter` (`trans` its grey); `normal` is the top layer's.
-  Transmission transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans);
-  Radiance trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight);
+  Transmission transmit(const HitContext& at, Vec3 normal, Rgb filter, double trans, const Finish& top_finish);
+  // `irid`: the reflecting layer's finish, when its irid tints the reflected colour.
+  Radiance trace_reflection(const HitContext& at, Vec3 normal, double reflected_weight, const Finish* irid = nullptr);
   // Relative ior n_to/n_from for fresnel reflection at a surface of `self` (POV-Ray's ComputeRelativeIOR).
   double relative_ior(const InteriorRef& self, const RayState& state) const;
   InteriorRef interior_of(const SurfaceHit& hit) const;
@@ -230,8 +232,10 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
                         bool at_surface);
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
   // What one light of colour `lc` from `to_light` (c = N·L) adds to a layer (diffuse, diffuse_back, highlights).
-  Rgb one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 normal, Vec3 view, Rgb lc, Vec3 to_light,
-                double c, double speckle, bool highlights) const;
+  Rgb one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 point, Vec3 normal, Vec3 view, Rgb lc,
+                Vec3 to_light, double c, double speckle, bool highlights) const;
+  // irid: the thin-film factor on light arriving along `incoming` and leaving toward the eye (ComputeIridColour).
+  Rgb irid_factor(const Finish& fin, Vec3 incoming, Vec3 view, Vec3 normal, Vec3 point) const;
 
   // ---- photon pass (photons/photon_trace.cpp) ----
   struct PhotonHit {

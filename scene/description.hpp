@@ -115,7 +115,8 @@ enum class PatternKind {
   density_file,                                                     // a DF3 voxel grid (Pigment::density_file)
   uv_mapping,                                                       // its one entry at the hit's <u, v, 0>
   mandel, julia, magnet,                                            // escape-time fractals (Pigment::fractal)
-  slope, aoi                                                        // of the hit's normal (Pigment::slope) or the ray
+  slope, aoi,                                                       // of the hit's normal (Pigment::slope) or the ray
+  pigment_pattern                                                   // the grey of a pigment (Pigment::pattern_pigment)
 };
 
 // The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).
@@ -222,6 +223,7 @@ struct Pigment {
   int density_interpolation = 0;
   FractalParams fractal;         // mandel, julia, magnet
   SlopeParams slope;             // slope
+  std::shared_ptr<const Pigment> pattern_pigment;   // pigment_pattern: the pigment whose grey is the value
   // `noise_generator N` of this pattern (1…3); 0: the scene's (POV-Ray's GetNoiseGen).
   int noise_generator = 0;
   // quick_color: what the pigment shows instead in draft renders (+Q0…+Q5). POV-Ray uses it only when none of its
@@ -256,6 +258,9 @@ struct Finish {
   double reflection_metallic = 0.0;
   bool conserve_energy = false;
   double crand = 0.0;
+  // irid { amount thickness T turbulence V }: thin-film interference on the light a layer reflects, single precision as
+  // POV-Ray keeps them (its turbulence is V's x).
+  double irid = 0.0, irid_thickness = 0.0, irid_turbulence = 0.0;
   // Pre-3.1 finish items that POV-Ray moves into the object's interior when the object is placed (Post_Process):
   // `ior` (when given) and `refraction` (always, default 1: it scales what is seen through the object).
   std::optional<double> legacy_ior;
@@ -571,7 +576,26 @@ struct Object {
 // POV-Ray 3.7's camera types (mesh_camera is refused by name).
 enum class Projection {
   perspective, orthographic, fisheye, ultra_wide_angle, omnimax, panoramic, spherical,
-  cylinder1, cylinder2, cylinder3, cylinder4   // `cylinder N`: 1, 2 vertical/horizontal axis, 3, 4 the same, orthographic
+  cylinder1, cylinder2, cylinder3, cylinder4,  // `cylinder N`: 1, 2 vertical/horizontal axis, 3, 4 the same, orthographic
+  mesh                                         // mesh_camera: rays leave the faces of meshes (Camera::mesh)
+};
+
+// One mesh of a mesh_camera: its triangles (shared with any other placement of the same mesh) and its transforms.
+struct MeshCameraMesh {
+  std::shared_ptr<const MeshData> data;
+  Matrix world_from_object;
+  bool transformed = false;
+};
+
+// mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { … }… [smooth] } (POV-Ray 3.7's experimental mesh camera;
+// docs/issue21-mesh-camera.md): which face each pixel's rays leave from (distribution 0: mesh r for ray r;
+// 1: the meshes one after another; 2: side by side; 3: by the first mesh's uv map), along the face normal.
+struct MeshCamera {
+  unsigned rays_per_pixel = 1;
+  unsigned distribution = 0;
+  double max_distance = 0;   // primary rays see only hits nearer than this (0: no limit)
+  bool smooth = false;       // distribution 3: the smooth_triangle normals interpolated
+  std::vector<MeshCameraMesh> meshes;
 };
 
 // Final camera vectors, resolved by the parser in POV-Ray's fixed order (pipeline §1).
@@ -583,6 +607,10 @@ struct Camera {
   Vec3 right{1.33, 0, 0};
   double angle = 90;                         // degrees: the field of view of the non-planar projections
   double h_angle = 360, v_angle = 180;       // spherical: horizontal and vertical field of view
+  // normal { … }: bends every camera ray, the pattern read at the ray's screen coordinates <x0, y0, 0>
+  // (POV-Ray's CreateCameraRay: the projection's own x0, y0 after its last change).
+  std::shared_ptr<const Normal> normal;
+  std::shared_ptr<const MeshCamera> mesh;    // projection mesh
   SourceLoc loc;
   Unsupported unsupported;
 };
@@ -654,6 +682,9 @@ struct GlobalSettings {
   double adc_bailout = 1.0 / 255.0;
   std::optional<int> noise_generator;    // 1, 2 or 3; absent: 1 before #version 3.5, 2 from then on (as POV-Ray)
   int number_of_waves = 10;              // the wave sources ripples and waves normals sum over
+  // irid_wavelength: the wavelengths irid uses for red, green and blue, in micrometres (POV-Ray 3.7's defaults
+  // 0.70, 0.52, 0.48, Scene's constructor; single precision).
+  Colour irid_wavelength{0.70f, 0.52f, 0.48f};
 };
 
 // global_settings { photons { … } } (POV-Ray's ScenePhotonSettings, parse.cpp; issue20-photons.md): the photon map's

@@ -50,6 +50,10 @@ struct MeshData {
   std::vector<double> uvs;
   std::vector<std::uint32_t> face_uvs;
   std::optional<Vec3> inside_vector;        // unit; absent: the mesh has no inside (POV-Ray's PATCH_OBJECT)
+  // x y z per triangle: POV-Ray's stored flat normal of a mesh { } triangle, (P3 − P1) × (P2 − P1) of the corners
+  // as written (double precision), normalised, in single precision. Empty for a mesh2, whose flat normals POV-Ray
+  // computes from the single-precision corners (the mesh camera reads them).
+  std::vector<float> flat_normals;
   std::size_t triangle_count() const { return faces.size() / 3; }
   Vec3 vertex(std::uint32_t i) const { return {vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]}; }
   Vec3 normal(std::uint32_t i) const { return {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]}; }

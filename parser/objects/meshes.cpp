@@ -142,6 +142,10 @@ struct ObjectParser::MeshBuilder {
       data.face_uvs.insert(data.face_uvs.end(), 3, 0);
     }
     for (const Vec3& v : p) data.faces.push_back(add(data.vertices, vertex_index, v));
+    // Compute_Mesh_Triangle's flat normal, from the corners before they are rounded (a non-degenerate triangle).
+    Vec3 flat = cross(p[2] - p[0], p[1] - p[0]);
+    flat = flat * (1.0 / std::sqrt(flat.x * flat.x + flat.y * flat.y + flat.z * flat.z));
+    for (const double c : {flat.x, flat.y, flat.z}) data.flat_normals.push_back(static_cast<float>(c));
     // The per-face arrays start with the first face that needs them, earlier faces filled in as flat/untextured.
     if (smooth_normals) {
       data.face_normals.resize(3 * before, MeshData::flat);

@@ -176,6 +176,18 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
   }
   while (!t.is("}")) {
     const std::string_view k = t.kind == TokenKind::identifier ? t.text : std::string_view();
+    if (k == "mesh_camera") {   // a projection with its block (mesh_camera.cpp)
+      if (item_seen && language_version() >= 350)
+        fail_at(t, "the camera type 'mesh_camera' must come first in camera { }, before location, angle and the "
+                   "other items (POV-Ray 3.5 and later)");
+      if (in.camera.mesh) fail_at(t, "a camera has at most one mesh_camera { }");
+      in.camera.mesh = parse_mesh_camera(t, in.camera.unsupported);
+      in.camera.projection = Projection::mesh;
+      in.planar = false;
+      spherical = false;
+      t = next();
+      continue;
+    }
     if (const std::optional<Projection> type = try_camera_type(t)) {
       // POV-Ray 3.5 and later read the projection keywords only at the start of camera { } (several may follow
       // one another, the last one counts); one after any other item is its parse error.
@@ -199,6 +211,8 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
       in.look_at = parse_vector();
     }
     else if (k == "angle") {
+      // POV-Ray's mesh camera has no angle: its parser stops there ("No matching } in 'camera'").
+      if (in.camera.projection == Projection::mesh) fail_at(t, "a mesh_camera has no angle (as in POV-Ray)");
       // Negative angles are refused at once; the 180° limit only holds for perspective and orthographic cameras
       // (fisheye and the others take up to 360°), checked once the projection is known. An orthographic camera's
       // angle may have no value: it then means 0 (POV-Ray's Allow_Float(0.0)).
@@ -222,12 +236,14 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
         }
       }
     } else if (!textures_.try_transform(t, in.transform)) {
-      if (k == "mesh_camera") {
-        in.planar = false;
-        spherical = false;
+      if (k == "normal") {   // from the #default texture's normal, if any (Parse_Tnormal with none yet)
+        const Normal start = textures_.starting_normal(nullptr);
+        in.camera.normal = std::make_shared<const Normal>(textures_.parse_normal_block(t, start));
+        taint(in.camera.unsupported, in.camera.normal->unsupported);
+        t = next();
+        continue;
       }
-      if (k == "mesh_camera" || k == "aperture" || k == "focal_point" || k == "blur_samples" ||
-          k == "normal" || k == "confidence" || k == "variance") {
+      if (k == "aperture" || k == "focal_point" || k == "blur_samples" || k == "confidence" || k == "variance") {
         taint(in.camera.unsupported, skip_unsupported(t, "the camera item '" + std::string(k) + "'"));
         t = next();
         continue;

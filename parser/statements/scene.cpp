@@ -163,6 +163,9 @@ void SceneStatements::parse_global_settings(const Token& keyword) {
       if (n > 65536) fail_at(value_at, "number_of_waves above 65536 is refused (each wave is summed at every sample)");
       scene_.settings.number_of_waves = n >= 1 ? static_cast<int>(n) : 1;
       if (!(n >= 1)) warn(value_at.loc, "Illegal Value: number_of_waves must be greater than 0. Changed to 1.");
+    } else if (k == "irid_wavelength") {   // a colour, single precision as POV-Ray's RGBColour
+      const Colour c = expressions_.parse_colour();
+      scene_.settings.irid_wavelength = Colour{static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b), 0, 0};
     } else if (k == "radiosity") {
       radiosity_.parse_settings(t, scene_.radiosity);
     } else if (k == "photons") {

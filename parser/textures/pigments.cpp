@@ -217,6 +217,15 @@ bool TextureParser::try_pattern(const Token& t, Pigment& p) {
     parse_slope_pattern(t, p);
     return true;
   }
+  if (t.is("pigment_pattern")) {   // a pigment of its own, from plain black (Create_Pigment), not the #default one
+    const NestingGuard guard(*this, t);
+    expect("{", " after 'pigment_pattern'");
+    auto inner = std::make_shared<const Pigment>(parse_pigment_contents(Pigment{}, t.loc, "}"));
+    taint(p.unsupported, inner->unsupported);
+    p.pattern = PatternKind::pigment_pattern;
+    p.pattern_pigment = std::move(inner);
+    return true;
+  }
   if (t.is("aoi")) {
     p.pattern = PatternKind::aoi;
     return true;

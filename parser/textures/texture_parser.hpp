@@ -52,6 +52,7 @@ class TextureParser : ParserPart {
  private:
   // ---- textures (textures.cpp) ----
   void parse_finish_reflection(Finish& f);
+  void parse_irid(const Token& keyword, Finish& f);
   bool try_pigment_item(const Token& t, Pigment& p);
 
   // ---- pigment patterns, maps and pattern modifiers (pigments.cpp) ----

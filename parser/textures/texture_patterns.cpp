@@ -34,7 +34,7 @@ bool TextureParser::starts_texture_pattern(const Token& t) {
   static const std::string_view patterns[] = {
       "checker", "hexagon", "brick", "gradient", "radial", "onion", "planar", "boxed", "spherical", "cylindrical",
       "leopard", "bozo", "spotted", "granite", "marble", "wood", "agate", "crackle", "cells", "average", "function", "spiral1", "spiral2", "quilted",
-      "mandel", "julia", "magnet", "slope", "aoi", "bumps", "dents", "wrinkles", "ripples", "waves", "density_file"};
+      "mandel", "julia", "magnet", "slope", "aoi", "pigment_pattern", "bumps", "dents", "wrinkles", "ripples", "waves", "density_file"};
   for (auto p : patterns)
     if (t.is(p)) return true;
   return false;

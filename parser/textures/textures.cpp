@@ -105,6 +105,19 @@ Pigment TextureParser::parse_pigment_block(const Token& keyword, const Pigment& 
   return parse_pigment_contents(start, keyword.loc, "}");
 }
 
+// irid { AMOUNT [thickness T] [turbulence V] } (Parse_Finish's IRID_TOKEN): single-precision fields; the turbulence
+// is a vector of which only x counts. Items after the amount may repeat, the last one wins.
+void TextureParser::parse_irid(const Token& keyword, Finish& f) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'irid'");
+  f.irid = static_cast<float>(parse_float());
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (t.is("thickness")) f.irid_thickness = static_cast<float>(parse_float());
+    else if (t.is("turbulence")) f.irid_turbulence = static_cast<float>(parse_vector().x);
+    else fail_expected(t, "thickness, turbulence or '}' in irid { }");
+  }
+}
+
 Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& start) {
   expect("{", " after 'finish'");
   Finish f = start;
@@ -178,6 +191,8 @@ Finish TextureParser::parse_finish_block(const Token& keyword, const Finish& sta
       warn(t.loc, "the caustics value should be given in 'interior { caustics … }'");
     } else if (k == "crand") {
       f.crand = parse_float();
+    } else if (k == "irid") {
+      parse_irid(t, f);
     } else if (!k.empty() && is_reserved_word(k)) {
       taint(f.unsupported, skip_unsupported(t, "the finish item '" + std::string(k) + "'"));
     } else {

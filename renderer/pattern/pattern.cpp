@@ -120,6 +120,7 @@ double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* 
     case PatternKind::magnet: return patterns::fractal(params.fractal, p);
     case PatternKind::slope: return patterns::slope(params.slope, p, hit);
     case PatternKind::aoi: return patterns::aoi(hit);
+    case PatternKind::pigment_pattern: return pigment_grey(*params.pigment, p, hit);
     case PatternKind::density_file:
       return patterns::density_file(*params.density_file, params.density_interpolation, p);
     case PatternKind::solid:

@@ -9,6 +9,8 @@
 
 namespace povtrace::render {
 
+struct RenderPigment;
+
 // What a pattern function reads besides the point.
 struct PatternParams {
   PatternKind kind = PatternKind::solid;
@@ -30,6 +32,8 @@ struct PatternParams {
   int density_interpolation = 0;                     // and `interpolate N` as written
   FractalParams fractal;                             // mandel, julia, magnet
   SlopeParams slope;                                 // slope
+  // pigment_pattern: the pigment whose grey is the value (owned: set_generator copies it before changing it).
+  std::shared_ptr<RenderPigment> pigment;
   // The pattern's own `noise_generator` (1…3), 0 for the scene's: set_generator keeps it (POV-Ray's GetNoiseGen).
   int own_noise_generator = 0;
 };
@@ -54,6 +58,10 @@ struct WaveParams {
 // The raw value of the pattern at a pattern-space point: 0..1 for most, 0/1 for checker and brick, 0/1/2 for
 // hexagon, any value for marble and wood (their wave folds it).
 double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* hit = nullptr);
+
+// pigment_pattern's value: the pigment's grey at p, in single precision as POV-Ray's Colour::greyscale; 0 where
+// no colour is found (off an image map used once). Defined with the pigments (renderer/pigment.cpp).
+double pigment_grey(const RenderPigment& pigment, Vec3 p, const ShadingSurface* surface);
 
 // Frequency, phase and the wave shape (Evaluate_TPat after the pattern switch).
 double apply_wave(double value, const WaveParams& wave);

@@ -59,11 +59,19 @@ void set_generator(RenderPigment& r, NoiseGenerator generator) {
   r.params.noise_generator = own != 0 ? static_cast<NoiseGenerator>(own) : generator;
   r.params.function_noise_generator = static_cast<int>(generator);
   for (auto& c : r.children) set_generator(c, generator);
+  if (r.params.pigment) {   // copies of this pigment share it until one is set
+    r.params.pigment = std::make_shared<RenderPigment>(*r.params.pigment);
+    set_generator(*r.params.pigment, generator);
+  }
 }
 
 void set_function_generator(RenderPigment& r, int generator) {
   r.params.function_noise_generator = generator;
   for (auto& c : r.children) set_function_generator(c, generator);
+  if (r.params.pigment) {
+    r.params.pigment = std::make_shared<RenderPigment>(*r.params.pigment);
+    set_function_generator(*r.params.pigment, generator);
+  }
 }
 
 RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool quick_colours) {
@@ -83,7 +91,9 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected,
                            p.frequency,  p.phase,    p.function,   p.arms,
                            p.control0,   p.control1, 2,   // both generators set for the scene (set_generator)
-                           p.density_file, p.density_interpolation, p.fractal, p.slope, p.noise_generator};
+                           p.density_file, p.density_interpolation, p.fractal, p.slope, nullptr, p.noise_generator};
+  if (p.pattern_pigment)
+    r.params.pigment = std::make_shared<RenderPigment>(build_render_pigment(*p.pattern_pigment, images, quick_colours));
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).

@@ -21,6 +21,7 @@ RenderLayer build_layer(const TextureLayer& l, ImageCache& images, bool quick_co
 
 bool pigment_reads_uv(const RenderPigment& p) {
   if (p.pattern == PatternKind::uv_mapping) return true;
+  if (p.params.pigment && pigment_reads_uv(*p.params.pigment)) return true;
   for (const auto& c : p.children)
     if (pigment_reads_uv(c)) return true;
   return false;
@@ -32,6 +33,7 @@ bool is_surface_pattern(PatternKind k) { return k == PatternKind::slope || k == 
 
 bool pigment_reads_surface(const RenderPigment& p) {
   if (is_surface_pattern(p.pattern)) return true;
+  if (p.params.pigment && pigment_reads_surface(*p.params.pigment)) return true;
   for (const auto& c : p.children)
     if (pigment_reads_surface(c)) return true;
   return false;

@@ -37,7 +37,7 @@ Rgb Tracer::photon_light(const RenderLayer& layer, const Colour& s, const Shadin
     const double c = dot(normal, to_light);
     if (c < tolerance::epsilon && fin.diffuse_back == 0) continue;   // from behind: only diffuse_back sees it
     const double speckle = fin.crand > 0 ? fin.crand * speckle_random(sp.point, scene_.lights.size() + index) : 0.0;
-    sum += one_light(layer, pigment, att, normal, view, colour, to_light, c, speckle, highlights);
+    sum += one_light(layer, pigment, att, sp.point, normal, view, colour, to_light, c, speckle, highlights);
   }
   return sum * (1.0 / (M_PI * found.radius * found.radius));
 }

@@ -1,4 +1,4 @@
-// mandel, julia, magnet, slope, aoi and a pattern's own noise_generator as the parser records them (POV-Ray 3.7's
+// mandel, julia, magnet, slope, aoi, pigment_pattern and a pattern's own noise_generator as the parser records them (POV-Ray 3.7's
 // Parse_Pattern: defaults, resets, limits, errors and warnings).
 #include <gtest/gtest.h>
 
@@ -149,6 +149,33 @@ TEST(SurfacePatternParse, AoiAndTexturePatterns) {
   EXPECT_EQ(n.pattern.pattern, PatternKind::mandel);
   EXPECT_EQ(n.pattern.fractal.iterations, 20);
   EXPECT_EQ(n.amount, 0.5);
+}
+
+TEST(PigmentPatternParse, APigmentOfItsOwnFromPlainBlack) {
+  const SceneDescription s = scene(
+      "#default { pigment { rgb <1, 0, 0> } }\n"
+      "#declare P = pigment { checker rgb 1, rgb 0 }\n"
+      "sphere { 0, 1 pigment { pigment_pattern { P scale 2 } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+      "sphere { 0, 1 pigment { pigment_pattern { } } }\n"
+      "sphere { 0, 1 normal { pigment_pattern { bozo } 0.7 } }\n");
+  const Pigment& a = pigment_of(s, 0);
+  EXPECT_EQ(a.pattern, PatternKind::pigment_pattern);
+  ASSERT_TRUE(a.pattern_pigment);
+  EXPECT_EQ(a.pattern_pigment->pattern, PatternKind::checker);
+  EXPECT_EQ(a.pattern_pigment->world_from_pattern.m[0][0], 2.0);   // its transforms are its own
+  EXPECT_EQ(a.world_from_pattern.m[0][0], 1.0);
+  ASSERT_EQ(a.entries.size(), 2u);
+  const Pigment& b = pigment_of(s, 1);   // not the #default pigment: POV-Ray's Create_Pigment is black
+  ASSERT_TRUE(b.pattern_pigment);
+  EXPECT_EQ(b.pattern_pigment->pattern, PatternKind::solid);
+  EXPECT_EQ(b.pattern_pigment->colour.r, 0.0);
+  const Normal& n = *s.objects[2].texture->layers.back().normal;
+  EXPECT_EQ(n.pattern.pattern, PatternKind::pigment_pattern);
+  EXPECT_EQ(n.amount, 0.7);
+  EXPECT_NE(error_of("sphere { 0, 1 pigment { pigment_pattern rgb 1 } }\n").find("'{'"), std::string::npos);
+  EXPECT_NE(error_of("sphere { 0, 1 pigment { pigment_pattern { pavement } } }\n")
+                .find("unsupported: the pigment item 'pavement'"),
+            std::string::npos);
 }
 
 TEST(PatternNoiseGenerator, OwnGeneratorOrsIntoTheFlags) {

@@ -96,10 +96,10 @@ TEST(NormalParse, TypeMayComeLaterThanTheFirstNormalBlock) {
   const ParseError e = parse_error("#version 3.7;\n#default { normal { bump_size 1.5 } }\nsphere { 0, 1 }\n");
   EXPECT_NE(std::string(e.what()).find("no normal type given"), std::string::npos) << e.what();
   // An unrendered pattern keeps its amount after a comma or without one.
-  for (const char* text : {"plane { y, 0 normal { pigment_pattern { checker } , 0.5 } }\n",
-                           "plane { y, 0 normal { pigment_pattern { checker } 10 } }\n"}) {
+  for (const char* text : {"plane { y, 0 normal { pavement , 0.5 } }\n",
+                           "plane { y, 0 normal { pavement 10 } }\n"}) {
     const ParseError u = parse_error(std::string("#version 3.7;\n") + text);
-    EXPECT_NE(std::string(u.what()).find("unsupported: the normal item 'pigment_pattern'"), std::string::npos)
+    EXPECT_NE(std::string(u.what()).find("unsupported: the normal item 'pavement'"), std::string::npos)
         << u.what();
   }
 }
