@@ -9,6 +9,7 @@
 // circle (the pixel is black and fully transparent).
 #include <cmath>
 
+#include "scene/pov_vector_math.hpp"
 #include "renderer/render.hpp"
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/mesh_camera.hpp"
@@ -18,7 +19,6 @@ namespace povtrace::render {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-constexpr double kPiOver360 = 0.00872664625997164788;   // POV-Ray's M_PI_360 as its source spells it
 
 // v rotated by `angle` radians about the unit axis a (right-hand rule; POV-Ray's axis rotation).
 Vec3 rotated_about(Vec3 v, Vec3 a, double angle) {
@@ -54,7 +54,7 @@ std::optional<Ray> fisheye(const RenderCamera& c, double& x0, double& y0) {
   const double rad = std::sqrt(x0 * x0 + y0 * y0);
   if (rad > 1.0) return std::nullopt;
   x0 = polar_angle(x0, y0, rad);
-  y0 = rad * c.angle * kPiOver360;
+  y0 = rad * c.angle * kPovPiOver360;
   return along(c.location, c.right * (std::cos(x0) * std::sin(y0)) + c.up * (std::sin(x0) * std::sin(y0)) +
                                c.direction * std::cos(y0));
 }

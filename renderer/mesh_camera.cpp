@@ -3,6 +3,8 @@
 // leaves from the same point in the same direction as POV-Ray's.
 #include "renderer/mesh_camera.hpp"
 
+#include "scene/pov_vector_math.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,7 +51,7 @@ void flat_normal_and_swap(Vec3 p1, Vec3 p2, Vec3 p3, std::array<float, 3>& norma
 void smooth_frame(Vec3 p1, Vec3 p2, Vec3 p3, std::array<float, 3>& perp, std::uint8_t& axis) {
   axis = static_cast<std::uint8_t>(dominant_axis(p3 - p2));
   Vec3 t1 = p2 - p3;
-  t1 = t1 * (1.0 / std::sqrt(dot(t1, t1)));
+  t1 = pov_normalized(t1);
   const Vec3 t2 = p1 - p3;
   t1 = t1 * dot(t2, t1);
   std::array<float, 3> p = narrowed(t1 - t2);

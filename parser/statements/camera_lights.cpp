@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "scene/description_transforms.hpp"
+#include "scene/pov_vector_math.hpp"
 #include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/statements/camera_light_parser.hpp"
@@ -29,32 +30,25 @@ bool is_zero(Vec3 v) { return !(dot(v, v) >= std::numeric_limits<double>::min())
 
 bool is_finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// POV-Ray's VNormalize: scaled by the reciprocal of the length, not divided by it. The camera's vectors are built
-// this way so that every camera ray agrees with POV-Ray's to the last bit (chaotic patterns such as a fractal's
-// escape value amplify any difference).
-Vec3 reciprocal_normalized(Vec3 v) { return v * (1.0 / length(v)); }
-
-// POV-Ray's M_PI_360 as its source spells it.
-constexpr double kPiOver360 = 0.00872664625997164788;
-
-// POV-Ray's fixed order of application, whatever the textual order (§1): vectors as given; then angle; then
+// POV-Ray's fixed order of application (its vectors normalised as POV-Ray does, so that every camera ray agrees
+// with POV-Ray's to the last bit: chaotic patterns such as a fractal's escape value amplify any difference), whatever the textual order (§1): vectors as given; then angle; then
 // look_at; then the orthographic resize; finally the camera's own transforms.
 Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
   Camera c = in.camera;
   if (in.angle && *in.angle > 0 && in.planar) {   // POV-Ray applies an angle of 0 as no angle
-    c.direction = reciprocal_normalized(c.direction) * (length(c.right) / std::tan(*in.angle * kPiOver360) / 2.0);
+    c.direction = pov_normalized(c.direction) * (length(c.right) / std::tan(*in.angle * kPovPiOver360) / 2.0);
   }
   if (in.angle && !in.planar) c.angle = *in.angle;   // the other projections read it as it is
   if (in.look_at) {   // parse_camera has refused a look_at at the location, and a zero right where it is needed
     const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
     const double handedness = dot(cross(c.up, c.direction), c.right);
-    const Vec3 d = reciprocal_normalized(*in.look_at - c.location);
+    const Vec3 d = pov_normalized(*in.look_at - c.location);
     Vec3 r = cross(in.sky, d);
     if (length(r) < 1e-10) {   // the same test as check_camera's
       warn("camera look_at is parallel to sky: the previous 'right' is kept");
       r = c.right;
     }
-    r = reciprocal_normalized(r);
+    r = pov_normalized(r);
     const Vec3 u = cross(d, r);
     c.direction = d * dl;
     c.right = r * (handedness > 0 ? rl : -rl);

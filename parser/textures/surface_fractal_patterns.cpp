@@ -13,6 +13,7 @@
 #include <string>
 #include <tuple>
 
+#include "scene/pov_vector_math.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/textures/texture_parser.hpp"
 
@@ -22,9 +23,6 @@ namespace {
 bool is_fractal(PatternKind k) {
   return k == PatternKind::mandel || k == PatternKind::julia || k == PatternKind::magnet;
 }
-
-// POV-Ray's VNormalizeEq: scaled by the reciprocal of the length (the exact-axis shortcut below depends on it).
-Vec3 reciprocal_normalized(Vec3 v) { return v * (1.0 / std::sqrt(dot(v, v))); }
 
 // ±(1 + axis) when v is exactly ± that unit axis (the first such axis), else 0.
 int unit_axis(Vec3 v) {
@@ -154,8 +152,8 @@ void TextureParser::parse_slope_pattern(const Token& keyword, Pigment& p) {
     s.altitude_weight = 0.0;
   } else {
     double slope_len = length(s.direction), altitude_len = length(s.altitude);
-    if (slope_len != 0.0) s.direction = reciprocal_normalized(s.direction);
-    if (altitude_len != 0.0) s.altitude = reciprocal_normalized(s.altitude);
+    if (slope_len != 0.0) s.direction = pov_normalized(s.direction);
+    if (altitude_len != 0.0) s.altitude = pov_normalized(s.altitude);
     const double total = slope_len + altitude_len;
     if (total == 0.0) fail_at(keyword, "Zero length for both slope and gradient.");
     s.slope_weight = slope_len / total;

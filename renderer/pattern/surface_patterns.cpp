@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/pov_vector_math.hpp"
 #include "renderer/pattern/pattern_functions.hpp"
 
 namespace povtrace::render::patterns {
@@ -22,9 +23,6 @@ double along(Vec3 v, int axis, Vec3 direction) {
 
 // Values of exactly 1 stay just below it instead of wrapping to the bottom of the map; everything else wraps into
 // [0, 1) (negative values from the top).
-// POV-Ray's VNormalize: scaled by the reciprocal of the length.
-Vec3 unit(Vec3 v) { return v * (1.0 / std::sqrt(dot(v, v))); }
-
 double wrap_unit(double v) {
   if (v == 1.0) return v - kPovEpsilon;
   return v < 0.0 ? 1.0 + std::fmod(v, 1.0) : std::fmod(v, 1.0);
@@ -34,7 +32,7 @@ double wrap_unit(double v) {
 double slope(const SlopeParams& s, Vec3 p, const ShadingSurface* hit) {
   if (!hit) return 0.0;
   double cosine;
-  if (s.point_at) cosine = dot(hit->normal, unit(s.direction - hit->point));
+  if (s.point_at) cosine = dot(hit->normal, pov_normalized(s.direction - hit->point));
   else cosine = along(hit->normal, s.slope_axis, s.direction);
   cosine = std::clamp(cosine, -1.0, 1.0);
   // The angle above the plane normal to the direction, from −90° to 90°, as 0 … 1.
@@ -53,7 +51,7 @@ double slope(const SlopeParams& s, Vec3 p, const ShadingSurface* hit) {
 // The angle between the normal and the ray, 0 (along the ray) … 1 (against it).
 double aoi(const ShadingSurface* hit) {
   if (!hit) return 0.0;
-  const double c = std::clamp(dot(unit(hit->normal), unit(hit->ray_direction)), -1.0, 1.0);
+  const double c = std::clamp(dot(pov_normalized(hit->normal), pov_normalized(hit->ray_direction)), -1.0, 1.0);
   return std::acos(c) / std::numbers::pi;
 }
 
