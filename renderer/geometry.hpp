@@ -136,6 +136,7 @@ struct Primitive {
   std::uint8_t ray_flags = 0;
   std::uint8_t hidden_from = 0;
   bool inverse = false;          // inside/outside flipped
+  bool double_illuminate = false;   // lit from both sides (the object's double_illuminate)
   // Part of a CSG node (a child, or a clipped or bounded shape): the node filters the hits, so a shape whose walk
   // otherwise ends at its first hit (a height field, as POV-Ray's block_traversal for IS_CHILD_OBJECT) reports
   // every one.

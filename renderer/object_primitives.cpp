@@ -17,6 +17,7 @@ void add_shape_primitives(const Object& o, std::uint32_t material, std::uint32_t
   p.casts_shadow = !o.no_shadow;
   set_ray_flags(p, o);
   p.inverse = o.inverse;
+  p.double_illuminate = o.double_illuminate;
   p.radiosity_importance = o.radiosity_importance ? static_cast<float>(*o.radiosity_importance) : -1.0f;
 }
 

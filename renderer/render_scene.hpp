@@ -165,6 +165,9 @@ struct Material {
   ObjectPhotons photons;             // the object's photons { } flags (a CSG child's as its parent left them)
   // The photon target (index into RenderScene::photon_targets) whose tree the object is in; none: kNoPhotonTarget.
   std::uint32_t photon_target = ~0u;
+  // The object's interior_texture as a material of its own (index into RenderScene::materials), shading the hits
+  // seen from inside (Tracer::materials_facing); none: ~0u. `opaque` above is then true only if both are.
+  std::uint32_t interior_material = ~0u;
 };
 inline constexpr std::uint32_t kNoPhotonTarget = ~0u;
 

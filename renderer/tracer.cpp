@@ -219,6 +219,22 @@ Radiance mix(const Radiance& a, double wa, const Radiance& b, double wb) {
 
 }  // namespace
 
+// The material(s) shading a hit seen along `direction`: the object's interior_texture when the ray meets the surface
+// from inside, i.e. the raw normal, turned by `inverse`, points along the ray (POV-Ray's ComputeTextureColour and
+// ComputeShadowTexture; a mesh's triangle textures give way to it too, Mesh::Determine_Textures).
+MaterialBlend Tracer::materials_facing(const SurfaceHit& hit, Vec3 point, Vec3 direction) const {
+  const std::uint32_t inside = scene_.materials[hit.leaf->material].interior_material;
+  if (inside == ~0u) [[likely]]
+    return materials_at(hit);
+  const double along = dot(surface_normal(hit, point), direction);
+  if (hit.leaf->inverse ? along < 0.0 : along > 0.0) {
+    MaterialBlend blend;
+    blend.material[0] = inside;
+    return blend;
+  }
+  return materials_at(hit);
+}
+
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
   // The shadow rays of this hit use the shadow-cache slot of its level; the rays it traces set their own.
   struct LevelScope {
@@ -227,8 +243,8 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
     ~LevelScope() { current = outer; }
   } scope{shading_level_, shading_level_};
   shading_level_ = level;
-  const MaterialBlend blend = materials_at(hit);
   const Vec3 point = ray.origin + ray.direction * hit.t;
+  const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
   const TexturePoint at = texture_point(hit, point, uv, scene_.scale);
@@ -373,7 +389,8 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
       reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal, &layer.finish});
     }
     Rgb lit = model_ == ShadingModel::povray
-                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state)
+                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state,
+                                                sp.hit.leaf->double_illuminate)
                   : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
     if constexpr (Radiosity)
       if (radiosity) lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
@@ -553,7 +570,7 @@ std::optional<Tracer::LightRay> Tracer::cylinder_light_at(const RenderLight& l, 
 // weighted sum of its textures' filters (an opaque texture among them passes nothing); a patterned texture by the
 // filters of the textures its pattern picks, blended as their colours would be.
 Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction) {
-  const MaterialBlend blend = materials_at(hit);
+  const MaterialBlend blend = materials_facing(hit, at, direction);
   if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) return {0, 0, 0};
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
@@ -763,20 +780,24 @@ Rgb Tracer::irid_factor(const Finish& fin, Vec3 incoming, Vec3 view, Vec3 normal
           1.0 + fin.irid * std::cos(phase / wl.b)};
 }
 
+// double_illuminate: a light behind the surface is no different (POV-Ray skips its Cos_Shadow_Angle test), and the
+// diffuse term takes |N·L| as it always does.
 Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 point, Vec3 normal, Vec3 view, Rgb lc,
-                      Vec3 to_light, double c, double speckle, bool highlights) const {
+                      Vec3 to_light, double c, double speckle, bool highlights, bool double_illuminate) const {
   const Finish& fin = layer.finish;
   const auto with_irid = [&](Rgb light) {
     return fin.irid > 0 ? mul(light, irid_factor(fin, to_light, view, normal, point)) : light;
   };
-  if (c < tolerance::epsilon) {   // behind the surface: only diffuse_back
+  if (c < tolerance::epsilon && !double_illuminate) {   // behind the surface: only diffuse_back
     if (fin.diffuse_back > 0)
       return with_irid(mul(pigment, lc) * (fin.diffuse_back * att * std::pow(std::fabs(c), fin.brilliance) - speckle));
     return {};
   }
   Rgb out;
+  const double cos_in = std::fabs(c);
   if (fin.diffuse > 0)
-    out += mul(pigment, lc) * (fin.diffuse * att * (fin.brilliance == 1.0 ? c : std::pow(c, fin.brilliance)) - speckle);
+    out += mul(pigment, lc) *
+           (fin.diffuse * att * (fin.brilliance == 1.0 ? cos_in : std::pow(cos_in, fin.brilliance)) - speckle);
   if (!highlights) return with_irid(out);
   Rgb highlight = lc;
   if (fin.metallic != 0) {
@@ -801,7 +822,7 @@ Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 po
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
 template <bool Radiosity>
 Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
-                             const RayState& state) {
+                             const RayState& state, bool double_illuminate) {
   const Finish& fin = layer.finish;
   const Rgb pigment{s.r, s.g, s.b};
   const double att = scene_.language_version >= 370 ? 1.0 - s.f - s.t
@@ -827,14 +848,14 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     // sequence (its order depends on threads and blocks); ours is a hash of the point and the light, so the speckle
     // has the same distribution and the same image comes out whatever the threads.
     const double speckle = fin.crand > 0 ? fin.crand * speckle_random(point, li) : 0.0;
-    const bool behind = c < tolerance::epsilon;
+    const bool behind = c < tolerance::epsilon && !double_illuminate;
     if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) continue;
     }
     out += one_light(layer, pigment, att, point, normal, view, lc, to_light, c, speckle,
-                     highlights && !l.light.shadowless);   // fill lights give no highlights
+                     highlights && !l.light.shadowless, double_illuminate);   // fill lights give no highlights
   }
   return out;
 }

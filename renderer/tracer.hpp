@@ -150,6 +150,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   // What light keeps crossing the surface at `hit` toward a light: the product over the material's layers of
   // (S·f + t), or for a texture_list triangle the weighted sum over its textures; black when it stops it.
   Rgb filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction);
+  MaterialBlend materials_facing(const SurfaceHit& hit, Vec3 point, Vec3 direction) const;
   // A hit being shaded and the ray that found it: where its transmitted and reflected rays start.
   struct HitContext {
     const Ray& ray;
@@ -185,7 +186,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   radiosity::SampleRayResult trace_sample(Vec3 origin, Vec3 direction, const radiosity::SampleRayParams& p) override;
   template <bool Radiosity>   // the scene has radiosity: sample rays get no highlights
   Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
-                       const RayState& state);
+                       const RayState& state, bool double_illuminate);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
                          const RayState& state);
   // Light reaching a point from one light before shadowing.
@@ -233,7 +234,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Radiance legacy_background(Vec3 sky_point, const RayState& state) const;
   // What one light of colour `lc` from `to_light` (c = N·L) adds to a layer (diffuse, diffuse_back, highlights).
   Rgb one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 point, Vec3 normal, Vec3 view, Rgb lc,
-                Vec3 to_light, double c, double speckle, bool highlights) const;
+                Vec3 to_light, double c, double speckle, bool highlights, bool double_illuminate = false) const;
   // irid: the thin-film factor on light arriving along `incoming` and leaving toward the eye (ComputeIridColour).
   Rgb irid_factor(const Finish& fin, Vec3 incoming, Vec3 view, Vec3 normal, Vec3 point) const;
 

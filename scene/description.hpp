@@ -530,7 +530,14 @@ struct Object {
   // Never null once the parser has placed the object. A texture that no transform can change how it renders
   // (texture_ignores_transforms) is not moved with the object, so copies of one declared object share it.
   std::shared_ptr<const Texture> texture;
+  // interior_texture { … }: shades the surface where a ray meets it from inside (the raw normal, after `inverse`,
+  // pointing along the ray: POV-Ray's Interior_Texture). Moves with the object as `texture` does; CSG children
+  // without one take their parent's.
+  std::shared_ptr<const Texture> interior_texture;
   std::optional<Interior> interior;
+  // double_illuminate [bool]: lights on the far side of the surface light it too (POV-Ray skips its
+  // light-behind-the-surface test, DOUBLE_ILLUMINATE_FLAG). Set on a CSG, it is set on the whole tree.
+  bool double_illuminate = false;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
   // no_image [bool], no_reflection [bool] (POV-Ray's NO_IMAGE_FLAG, NO_REFLECTION_FLAG): the object is left out by

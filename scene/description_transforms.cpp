@@ -66,6 +66,8 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
   // declared object). The parser keeps those transforms in its notes in case the texture is edited later.
   if (!object.uv_mapping && object.texture && !texture_ignores_transforms(*object.texture))
     transform_texture(object.texture, m);
+  if (!object.uv_mapping && object.interior_texture && !texture_ignores_transforms(*object.interior_texture))
+    transform_texture(object.interior_texture, m);
   // The interior's media densities move with the object, uv-mapped or not (POV-Ray's Interior::Transform in
   // Transform_Object and friends).
   if (object.interior) transform_media(object.interior->media, m);

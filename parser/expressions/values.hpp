@@ -69,6 +69,7 @@ struct Alias {
 // material { texture interior } as a declared value.
 struct MaterialValue {
   std::shared_ptr<const Texture> texture;
+  std::shared_ptr<const Texture> interior_texture;
   std::optional<Interior> interior;
 };
 

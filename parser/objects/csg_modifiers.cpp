@@ -41,6 +41,14 @@ void ObjectParser::invert_object(Object& object) {
   csg->kind = csg->kind == CsgKind::intersection ? CsgKind::merge : CsgKind::intersection;
 }
 
+// double_illuminate on a union, merge, intersection or difference reaches every object of its tree (POV-Ray's
+// Set_CSG_Tree_Flag), so that the leaves a ray hits carry it.
+void ObjectParser::set_double_illuminate(Object& object, bool on) {
+  object.double_illuminate = on;
+  if (auto* csg = std::get_if<Csg>(&object.shape))
+    for (auto& child : csg->children) set_double_illuminate(child, on);
+}
+
 std::vector<Object> ObjectParser::parse_bound_clip_objects(const Token& keyword) {
   std::vector<Object> objects;
   Token t = next();

@@ -123,6 +123,7 @@ class ObjectParser : ParserPart {
   void parse_mesh2_faces(const Token& keyword, std::size_t vertex_count, std::size_t texture_count, MeshData& data);
   // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
   static void invert_object(Object& object);                  // De Morgan for CSG (§10)
+  static void set_double_illuminate(Object& object, bool on);
   void parse_clip_or_bound(const Token& keyword, Object& object);
   void parse_object_photons(const Token& keyword, Object& object);   // object_photons.cpp
   std::vector<Object> parse_bound_clip_objects(const Token& keyword);

@@ -55,6 +55,24 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
     }
     return true;
   }
+  if (k == "interior_texture") {
+    // Layers stack on the interior texture as texture blocks do on the texture (POV-Ray's Link_Textures).
+    auto tex = textures_.parse_texture_block(t);
+    textures_.refuse_layering(t, object.interior_texture.get(), tex->patterned());
+    if (object.interior_texture) {
+      auto layered = std::make_shared<Texture>(*object.interior_texture);
+      for (const auto& l : tex->layers) layered->layers.push_back(l);
+      object.interior_texture = std::move(layered);
+    } else {
+      object.interior_texture = std::move(tex);
+    }
+    return true;
+  }
+  if (k == "double_illuminate") {
+    // POV-Ray's Bool_Flag; on a union, merge or intersection it is set (or cleared) through the whole tree.
+    set_double_illuminate(object, optional_float(1.0) > 0.0);
+    return true;
+  }
   if (k == "uv_mapping") {
     if (object.texture) fail_at(t, "uv_mapping must be specified before texture (as in POV-Ray)");
     object.uv_mapping = true;
@@ -113,7 +131,7 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
                "modifier");
   // Real POV-Ray object modifiers povtrace does not render yet: parsed, and the object is tainted.
   static const std::string_view unrendered[] = {
-      "double_illuminate", "sturm", "interior_texture", "split_union", "cutaway_textures",
+      "sturm", "split_union", "cutaway_textures",
       "hierarchy", "smooth", "water_level", "inside_vector", "uv_vectors", "texture_list"};
   for (auto u : unrendered)
     if (k == u) {
@@ -133,13 +151,15 @@ void ObjectParser::parse_material_block(const Token& keyword, Object& object) {
     if (v && std::holds_alternative<Boxed<MaterialValue>>(*v)) {
       const auto& m = *std::get<Boxed<MaterialValue>>(*v);
       holder.texture = m.texture;
+      holder.interior_texture = m.interior_texture;
       holder.interior = m.interior;
       t = next();
     }
   }
   while (!t.is("}")) {
     Matrix m;
-    if (t.is("texture") || t.is("interior") || t.is("pigment") || t.is("normal") || t.is("finish"))
+    if (t.is("texture") || t.is("interior_texture") || t.is("interior") || t.is("pigment") || t.is("normal") ||
+        t.is("finish"))
       try_object_modifier(t, holder);
     else if (textures_.try_transform(t, m)) {
       transform_texture(holder.texture, m);
@@ -153,19 +173,24 @@ void ObjectParser::parse_material_block(const Token& keyword, Object& object) {
     object.texture = holder.texture;
     drop_deferred_texture_transforms(object, notes_pool());   // they belonged to the texture replaced
   }
+  if (holder.interior_texture) object.interior_texture = holder.interior_texture;
   if (holder.interior) object.interior = holder.interior;
   taint(object.unsupported, holder.unsupported);
 }
 
 void ObjectParser::parse_object_modifiers(Object& object) {
   while (true) {
-    if (plain_symbol(plain_ahead(), '}')) {   // the closing brace, without making its Token
+    if (plain_symbol(plain_ahead(), '}') && !object.interior_texture) {   // the closing brace, without its Token
       consume_plain();
       extents().modifiers_ended(object);
       return;
     }
     Token t = next();
     if (t.is("}")) {
+      // POV-Ray's Parse_Object_Mods: the #default texture is given only later, so it does not count.
+      if (object.interior_texture && !object.texture)
+        fail_at(t, "interior_texture needs a texture (pigment, normal or finish) on the same object (POV-Ray: "
+                   "\"Interior texture requires an exterior texture\")");
       extents().modifiers_ended(object);
       return;
     }

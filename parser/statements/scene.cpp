@@ -226,16 +226,21 @@ void SceneStatements::parse_default(const Token& keyword) {
 namespace {
 // The first feature povtrace cannot render anywhere in an object: its shape or modifiers, its texture's
 // layers, its interior, or (for CSG) its children and lights.
+Unsupported first_unsupported(const Texture& texture) {
+  if (texture.unsupported) return texture.unsupported;
+  for (const auto& l : texture.layers) {
+    if (l.pigment.unsupported) return l.pigment.unsupported;
+    if (l.finish.unsupported) return l.finish.unsupported;
+    if (l.normal && l.normal->unsupported) return l.normal->unsupported;
+  }
+  return std::nullopt;
+}
+
 Unsupported first_unsupported(const Object& o) {
   if (o.unsupported) return o.unsupported;
-  if (o.texture) {
-    if (o.texture->unsupported) return o.texture->unsupported;
-    for (const auto& l : o.texture->layers) {
-      if (l.pigment.unsupported) return l.pigment.unsupported;
-      if (l.finish.unsupported) return l.finish.unsupported;
-      if (l.normal && l.normal->unsupported) return l.normal->unsupported;
-    }
-  }
+  for (const auto* texture : {o.texture.get(), o.interior_texture.get()})
+    if (texture)
+      if (auto u = first_unsupported(*texture)) return u;
   if (o.interior && o.interior->unsupported) return o.interior->unsupported;
   if (const auto* csg = std::get_if<Csg>(&o.shape)) {
     for (const auto& c : csg->children)
@@ -316,6 +321,10 @@ void SceneStatements::post_process(Object& object) {
       if (!child.texture) {   // the uv_mapping flag goes with the texture (POV-Ray's Post_Process)
         child.texture = object.texture;
         child.uv_mapping = child.uv_mapping || object.uv_mapping;
+      }
+      if (!child.interior_texture) {   // with the uv_mapping flag, as the texture (POV-Ray's Post_Process)
+        child.interior_texture = object.interior_texture;
+        child.uv_mapping = child.uv_mapping || (object.interior_texture && object.uv_mapping);
       }
       if (!child.interior) child.interior = object.interior;
       if (!child.hollow) child.hollow = object.hollow;   // hollow reaches the children that did not set it

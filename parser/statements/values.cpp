@@ -84,7 +84,7 @@ std::optional<Value> ValueReader::try_parse_rvalue(const Token& first) {
     Object holder;
     objects_.parse_material_block(first, holder);
     if (holder.unsupported) return Value(OpaqueValue{"material", *holder.unsupported});
-    return Value(MaterialValue{holder.texture, holder.interior});
+    return Value(MaterialValue{holder.texture, holder.interior_texture, holder.interior});
   }
   if (k == "array") return arrays_.parse_array_declaration(first);
   if (auto s = splines_.try_parse_rvalue(first)) return s;     // spline { … }, or a call S(…) in an expression

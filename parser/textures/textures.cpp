@@ -396,7 +396,7 @@ Interior TextureParser::parse_interior_block(const Token& keyword, const Interio
 // texture { … } (POV-Ray's Parse_Texture).
 std::shared_ptr<const Texture> TextureParser::parse_texture_block(const Token& keyword) {
   const NestingGuard guard(*this, keyword);
-  expect("{", " after 'texture'");
+  expect("{", " after '" + std::string(keyword.text) + "'");   // texture or interior_texture
   return parse_texture_contents(keyword.loc, "}");
 }
 

@@ -35,9 +35,10 @@ Rgb Tracer::photon_light(const RenderLayer& layer, const Colour& s, const Shadin
     const double cos_raw = std::clamp(dot(sp.raw_normal, to_light), 0.1, 1.0);
     const Rgb colour = photons::photon_colour(*photon) * (1.0 / cos_raw);
     const double c = dot(normal, to_light);
-    if (c < tolerance::epsilon && fin.diffuse_back == 0) continue;   // from behind: only diffuse_back sees it
+    const bool two_sided = sp.hit.leaf->double_illuminate;
+    if (c < tolerance::epsilon && fin.diffuse_back == 0 && !two_sided) continue;   // from behind: only diffuse_back
     const double speckle = fin.crand > 0 ? fin.crand * speckle_random(sp.point, scene_.lights.size() + index) : 0.0;
-    sum += one_light(layer, pigment, att, sp.point, normal, view, colour, to_light, c, speckle, highlights);
+    sum += one_light(layer, pigment, att, sp.point, normal, view, colour, to_light, c, speckle, highlights, two_sided);
   }
   return sum * (1.0 / (M_PI * found.radius * found.radius));
 }

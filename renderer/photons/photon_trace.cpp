@@ -68,8 +68,8 @@ void Tracer::photon_trace(const Ray& ray, Rgb colour, int level, double weight, 
 // share of the photon.
 void Tracer::photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, int level, double weight,
                             const RayState& state, PhotonShot& shot) {
-  const MaterialBlend blend = materials_at(hit);
   const Vec3 point = ray.origin + ray.direction * hit.t;
+  const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
   TexturePoint at = texture_point(hit, point, uv, scene_.scale);

@@ -247,3 +247,54 @@ TEST(ClipAndBound, PovRaysErrors) {
 }
 
 }  // namespace
+
+// interior_texture (POV-Ray's Interior_Texture): kept beside the texture, layered by repeated blocks, moved by the
+// object's transforms, inherited by CSG children without one (with uv_mapping), and carried by a material.
+TEST(InteriorTexture, ParsedInheritedAndMoved) {
+  const SceneDescription s = scene(
+      "union { sphere { 0, 1 pigment { rgb 1 } interior_texture { pigment { rgb x } } } sphere { x, 1 }\n"
+      "        pigment { rgb 1 } interior_texture { pigment { checker } } translate y }\n"
+      "sphere { 0, 1 pigment { rgb 1 } interior_texture { pigment { rgb y } } interior_texture { pigment { rgbf 1 } "
+      "} }\n"
+      "#declare M = material { texture { pigment { rgb 1 } } interior_texture { pigment { rgb z } } }\n"
+      "sphere { 0, 1 material { M } }\n");
+  const Csg& u = csg_of(s.objects.at(0));
+  ASSERT_TRUE(u.children[0].interior_texture);
+  EXPECT_EQ(u.children[0].interior_texture->layers.back().pigment.colour.r, 1.0);   // its own
+  ASSERT_TRUE(u.children[1].interior_texture);
+  EXPECT_EQ(u.children[1].interior_texture, s.objects[0].interior_texture);         // the parent's
+  EXPECT_EQ(u.children[1].interior_texture->layers.back().pigment.pattern, PatternKind::checker);
+  // the translate moved the checker with the object
+  EXPECT_EQ(u.children[1].interior_texture->layers.back().pigment.world_from_pattern.point(Vec3{0, 0, 0}).y, 1.0);
+  ASSERT_TRUE(s.objects.at(1).interior_texture);
+  EXPECT_EQ(s.objects[1].interior_texture->layers.size(), 2u);   // layered
+  ASSERT_TRUE(s.objects.at(2).interior_texture);
+  EXPECT_EQ(s.objects[2].interior_texture->layers.back().pigment.colour.b, 1.0);
+  for (const Object& o : s.objects) EXPECT_FALSE(o.unsupported);
+}
+
+// POV-Ray refuses an interior_texture on an object without a texture of its own (the #default does not count).
+TEST(InteriorTexture, NeedsAnExteriorTexture) {
+  const std::string message =
+      parse_error("#version 3.7;\nsphere { 0, 1\n  interior_texture { pigment { rgb 1 } }\n}\n").what();
+  EXPECT_NE(message.find("interior_texture needs a texture"), std::string::npos) << message;
+  EXPECT_NE(message.find(":4:1"), std::string::npos) << message;
+}
+
+// double_illuminate [bool]: on a union, merge or intersection it is set through the whole tree (Set_CSG_Tree_Flag);
+// `off` on a copy clears it the same way.
+TEST(DoubleIlluminate, SetThroughTheCsgTree) {
+  const SceneDescription s = scene(
+      "#declare U = union { sphere { 0, 1 } intersection { sphere { 0, 1 } box { -1, 1 } } double_illuminate }\n"
+      "object { U }\n"
+      "object { U double_illuminate off }\n"
+      "sphere { 0, 1 double_illuminate 1 }\n");
+  const Csg& on = csg_of(s.objects.at(0));
+  EXPECT_TRUE(on.children[0].double_illuminate);
+  for (const Object& c : csg_of(on.children[1]).children) EXPECT_TRUE(c.double_illuminate);
+  const Csg& off = csg_of(s.objects.at(1));
+  EXPECT_FALSE(off.children[0].double_illuminate);
+  for (const Object& c : csg_of(off.children[1]).children) EXPECT_FALSE(c.double_illuminate);
+  EXPECT_TRUE(s.objects.at(2).double_illuminate);
+  for (const Object& o : s.objects) EXPECT_FALSE(o.unsupported);
+}
