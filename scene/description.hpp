@@ -4,6 +4,7 @@
 // itself resolves at parse time (camera vectors, transforms already composed into matrices).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -496,8 +497,38 @@ struct Isosurface {
   bool open = false;
 };
 
+// julia_fractal { <c> [quaternion|hypercomplex] [FUNCTION] [max_iteration N] [precision P] [slice <S>, D] }: the 4-D
+// julia set of z ← f(z) + c cut by the hyperplane S·(x, y, z, w) = D (POV-Ray 3.7's Fractal), as the parser leaves
+// it: defaults, clamps and the algebra/function check done.
+enum class JuliaAlgebra : std::uint8_t { quaternion, hypercomplex };
+enum class JuliaFunction : std::uint8_t {
+  sqr, cube, reciprocal, exp, ln, sin, asin, cos, acos, tan, atan, sinh, asinh, cosh, acosh, tanh, atanh, pwr
+};
+struct JuliaFractal {
+  std::array<double, 4> julia{1, 0, 0, 0};
+  JuliaAlgebra algebra = JuliaAlgebra::quaternion;
+  JuliaFunction function = JuliaFunction::sqr;
+  std::array<double, 2> exponent{0, 0};     // pwr(x, y)
+  int max_iteration = 20;                   // at least 1
+  double precision = 1.0 / 20.0;            // the march step: 1 / the SDL precision (which is at least 1)
+  std::array<double, 4> slice{0, 0, 0, 1};  // normalised
+  double slice_distance = 0;
+};
+
+// bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] [uv_vectors …] P1 … P16 }: a Bézier patch whose 16
+// control points are kept where the object's transforms have put them (POV-Ray keeps no matrix for a patch and
+// subdivides it in the scene's space), row by row: points[4·i + j] is P[i][j], u along i, v along j.
+struct BicubicPatch {
+  int type = 1;                             // 0 or 1: the same surface (POV-Ray subdivides per ray or once)
+  double flatness = 0;
+  int u_steps = 0, v_steps = 0;
+  std::array<Vec3, 16> points{};
+  std::array<std::array<double, 2>, 4> uv_vectors{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+};
+
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
-                           Superellipsoid, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface>;
+                           Superellipsoid, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface, JuliaFractal,
+                           BicubicPatch>;
 
 // POV-Ray's bounding box of an object placed in the scene (what min_extent()/max_extent() give then), made by the
 // parser when it places the object (parser/extents/); the renderer culls the object's rays with it (csg_build.cpp).

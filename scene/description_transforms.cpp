@@ -81,6 +81,13 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
+  // A bicubic_patch keeps no matrix: POV-Ray moves its control points (MTransPoint) and subdivides them as they are.
+  if (auto* patch = std::get_if<BicubicPatch>(&object.shape)) {
+    for (Vec3& p : patch->points) p = m.point(p);
+    return;
+  }
+  // Every transform of a julia_fractal runs its Compute_BBox, which clears its inversion (POV-Ray 3.7's Fractal).
+  if (std::holds_alternative<JuliaFractal>(object.shape)) object.inverse = false;
   if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !transform_keeps_sphere(kind, m))
     sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {

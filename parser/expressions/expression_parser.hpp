@@ -38,6 +38,7 @@ class SymbolTable;
 
 class ExpressionParser {
  public:
+  static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
   Numeric parse_expression();            // full level: ?:, & |, comparisons, + -
   Numeric parse_additive();              // parameter level (Parse_Rel_Factor)
   // The rest of an additive expression whose first operand the caller has already read (a call of a function or
@@ -124,7 +125,6 @@ class ExpressionParser {
   bool string_ahead();   // starts_string() of what comes next, made a Token only where needed
   double to_float(const Numeric& n, const Token& at) const;
   CallArguments parse_call_arguments(const Token& name, std::size_t min_args, std::size_t max_args);
-  static bool is_float_function(std::string_view name);   // abs, sin, … (the built-ins that return a float)
   // A number or a numeric identifier as a whole operand, read from the kept tokens without a Token (most operands
   // are one); false, having read nothing, where the full parse_unary() must run.
   bool fast_operand(Numeric& out);

@@ -83,6 +83,8 @@ std::optional<std::string> shape_outside_parser(const Object& o) {
     std::optional<std::string> operator()(const Prism&) const { return "the shape 'prism'"; }
     std::optional<std::string> operator()(const Sor&) const { return "the shape 'sor'"; }
     std::optional<std::string> operator()(const Isosurface&) const { return "the shape 'isosurface'"; }
+    std::optional<std::string> operator()(const JuliaFractal&) const { return "the shape 'julia_fractal'"; }
+    std::optional<std::string> operator()(const BicubicPatch&) const { return "the shape 'bicubic_patch'"; }
   };
   return std::visit(Name{}, o.shape);
 }
@@ -155,6 +157,8 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Prism&) const { throw std::logic_error("inside() of a prism"); }
     bool operator()(const Sor&) const { throw std::logic_error("inside() of a sor"); }
     bool operator()(const Isosurface&) const { throw std::logic_error("inside() of an isosurface"); }
+    bool operator()(const JuliaFractal&) const { throw std::logic_error("inside() of a julia_fractal"); }
+    bool operator()(const BicubicPatch&) const { throw std::logic_error("inside() of a bicubic_patch"); }
   };
   return std::visit(Test{o, p, invert}, o.shape);
 }

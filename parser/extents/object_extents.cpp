@@ -121,6 +121,10 @@ struct MinMax {
     hi = std_min(hi, h);
   }
   void narrow(const ExtentBox& b) { narrow(b.lo(), b.hi()); }
+  void enclose_point(Vec3 p) {   // the min/max in double, before any rounding to float
+    lo = std_min(lo, p);
+    hi = std_max(hi, p);
+  }
   bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
   double volume() const { return (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z); }
   static MinMax everything() {
@@ -301,6 +305,23 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     ExtentBox operator()(const Lathe& sweep) const { return lathe_local_box(sweep).transformed(m); }
     ExtentBox operator()(const Prism& sweep) const { return prism_local_box(sweep).transformed(m); }
     ExtentBox operator()(const Sor& sweep) const { return sor_local_box(sweep).transformed(m); }
+    // Fractal::Compute_BBox: the cube around its bounding sphere, radius 1 + |c| (plus 1e-7, at most 2) for
+    // quaternions and 4 for hypercomplex numbers, carried by the transform.
+    ExtentBox operator()(const JuliaFractal& j) const {
+      double r = 4.0;
+      if (j.algebra == JuliaAlgebra::quaternion) {
+        const auto& c = j.julia;
+        r = std::min(2.0, 1.0 + std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] + c[3] * c[3]) + 1e-7);
+      }
+      const ExtentBox local = ExtentBox::make({-r, -r, -r}, {2 * r, 2 * r, 2 * r});
+      return is_identity(m) ? local : local.transformed(m);
+    }
+    // BicubicPatch::Compute_BBox: the box of its 16 control points, where its transforms have put them.
+    ExtentBox operator()(const BicubicPatch& b) const {
+      MinMax box;
+      for (const Vec3& p : b.points) box.enclose_point(p);
+      return ExtentBox::from_min_max(box.lo, box.hi);
+    }
     // IsoSurface::Compute_BBox: the container's box (a sphere's cube), carried by the transform.
     ExtentBox operator()(const Isosurface& iso) const {
       const ExtentBox local =

@@ -27,6 +27,8 @@
 namespace povtrace::sdl {
 
 void ObjectParser::invert_object(Object& object) {
+  // A bicubic_patch has no inside to invert (BicubicPatch::Invert does nothing).
+  if (std::holds_alternative<BicubicPatch>(object.shape)) return;
   auto* csg = std::get_if<Csg>(&object.shape);
   if (!csg) {
     object.inverse = !object.inverse;

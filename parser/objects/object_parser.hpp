@@ -147,6 +147,14 @@ class ObjectParser : ParserPart {
   void close_prism_outline(const Token& keyword, Prism& prism, std::vector<ProfilePoint>& points);
 
   // ---- isosurface (isosurface.cpp) ----
+  // ---- julia_fractal, bicubic_patch (fractal_patch.cpp) ----
+  Object parse_julia_fractal(const Token& keyword);
+  std::array<double, 4> parse_vector4(std::string_view what);
+  static bool is_julia_item(const Token& t);
+  void parse_julia_item(const Token& t, JuliaFractal& j, std::optional<Token>& function_at);
+  void parse_julia_slice(JuliaFractal& j);
+  Object parse_bicubic_patch(const Token& keyword);
+  void parse_patch_items(BicubicPatch& b);
   Object parse_isosurface(const Token& keyword);
   void parse_isosurface_function(Isosurface& iso, Object& o);
   void parse_isosurface_container(Isosurface& iso);

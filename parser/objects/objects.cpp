@@ -116,7 +116,12 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
       object.radiosity_importance = importance;
     return true;
   }
-  if (k == "inverse") { invert_object(object); return true; }
+  if (k == "inverse") {
+    if (std::holds_alternative<BicubicPatch>(object.shape))
+      warn(t.loc, "cannot invert a patch object (as in POV-Ray, inverse has no effect on a bicubic_patch)");
+    invert_object(object);
+    return true;
+  }
   if (k == "clipped_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "bounded_by") { parse_clip_or_bound(t, object); return true; }
   if (k == "hollow") {
@@ -275,6 +280,9 @@ Object ObjectParser::parse_csg(const Token& keyword, CsgKind kind) {
       csg.lights.push_back(std::move(*light));
     } else {
       Object& child = std::get<Object>(*item);
+      if ((kind == CsgKind::intersection || kind == CsgKind::difference) &&
+          std::holds_alternative<BicubicPatch>(child.shape))   // Parse_CSG's warning; the patch is still added
+        warn(t.loc, "patch objects are not allowed in an intersection (a bicubic_patch has no inside)");
       if (kind == CsgKind::difference && items > 1) invert_object(child);
       csg.children.push_back(std::move(child));
     }
@@ -369,9 +377,10 @@ std::optional<SceneItem> ObjectParser::try_parse_item(const Token& t) {
   if (k == "prism") return parse_prism(t);
   if (k == "sor") return parse_sor(t);
   if (k == "isosurface") return parse_isosurface(t);
+  if (k == "julia_fractal") return parse_julia_fractal(t);
+  if (k == "bicubic_patch") return parse_bicubic_patch(t);
   static const std::string_view shapes[] = {
-      "julia_fractal",
-      "sphere_sweep", "bicubic_patch", "parametric", "ovus", "lemon",
+      "sphere_sweep", "parametric", "ovus", "lemon",
       "light_group", "polynomial"};
   for (auto s : shapes)
     if (k == s) {

@@ -28,4 +28,6 @@
   X(lathe, LatheShape)                      \
   X(prism, PrismShape)                      \
   X(sor, SorShape)                          \
-  X(isosurface, IsosurfaceShape)
+  X(isosurface, IsosurfaceShape)            \
+  X(julia_fractal, JuliaFractalShape)       \
+  X(bicubic_patch, BicubicPatchShape)

@@ -19,6 +19,7 @@
 #include "renderer/geometry.hpp"
 #include "renderer/shapes/shape_list.hpp"
 
+#include "renderer/shapes/bicubic_patch.hpp"
 #include "renderer/shapes/blob.hpp"
 #include "renderer/shapes/box.hpp"
 #include "renderer/shapes/cone.hpp"
@@ -27,6 +28,7 @@
 #include "renderer/shapes/disc.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/isosurface.hpp"
+#include "renderer/shapes/julia_fractal.hpp"
 #include "renderer/shapes/lathe.hpp"
 #include "renderer/shapes/many_roots.hpp"
 #include "renderer/shapes/mesh.hpp"

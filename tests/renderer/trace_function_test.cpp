@@ -200,12 +200,21 @@ TEST(TraceFunction, TheFourthArgumentMustBeAVectorIdentifier) {
 TEST(TraceFunction, UnsupportedGeometryIsRefusedByName) {
   ParseOptions o;
   o.object_geometry = std::make_shared<render::RendererGeometry>();
-  const ParseError e = parse_error("#declare B = bicubic_patch { type 0 flatness 0 u_steps 1 v_steps 1 "
-                                   "<0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>,<0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>,"
-                                   "<0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>,<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }\n"
+  const ParseError e = parse_error("#declare B = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }\n"
                                    "#declare P = trace(B, 5*y, -y);\n",
                                    o);
-  EXPECT_NE(e.bare_message().find("trace() of the shape 'bicubic_patch'"), std::string::npos) << e.bare_message();
+  EXPECT_NE(e.bare_message().find("trace() of the shape 'sphere_sweep'"), std::string::npos) << e.bare_message();
+}
+
+// A flat bicubic_patch in z = 0 over [0, 3]²: trace() meets it where the ray crosses the plane, normal ±z.
+TEST(TraceFunction, BicubicPatch) {
+  const std::string out = traced(
+      "#declare B = bicubic_patch { type 1 u_steps 2 v_steps 2 "
+      "<0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>,<0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>,"
+      "<0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>,<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }\n"
+      "#declare N = <0, 0, 0>;\n#declare P = trace(B, <1.25, 0.5, 5>, -z, N);\n"
+      "#debug concat(vstr(3, P, \",\", 0, 3), \" \", str(abs(N.z), 0, 3), \"\\n\")\n");
+  EXPECT_EQ(out, "1.250,0.500,0.000 1.000\n");
 }
 
 TEST(InsideFunction, ShapesThatOnlyTheRendererTestsAskItsGeometry) {
