@@ -203,6 +203,10 @@ void collect_hits(const Primitive& p, const Ray& ray, HitBuffer& out);
 // The nearest intersection of p with depth in (t_min, t_max), if there is one. Works for every shape.
 std::optional<SurfaceHit> nearest_hit(const Primitive& p, const Ray& ray, double t_min, double t_max);
 
+// The world point of a hit: where the ray is at its depth, or for a julia_fractal the point its march found (POV-Ray's
+// IPoint, which the depth does not give back to the last bit).
+Vec3 hit_point(const Ray& ray, const SurfaceHit& hit);
+
 // World-space unit normal at a world-space point on the primitive (not flipped toward the ray; `inverse` does
 // not change it either — the shading side flips normals to face the viewer as POV-Ray does).
 Vec3 surface_normal(const Primitive& p, Vec3 world_point);

@@ -38,7 +38,7 @@ class PreparedPrimitives final : public PreparedObject {
     const Ray ray{origin, unit_direction, ray_kind::other};
     const Hit hit = accelerator_.closest_hit(ray, tolerance::min_isect_depth, tolerance::bound_huge);
     if (!hit.found()) return std::nullopt;
-    const Vec3 point = origin + unit_direction * hit.t;
+    const Vec3 point = hit_point(ray, hit.surface);
     const Vec3 normal = surface_normal(hit.surface, point);
     return TracedHit{point, hit.surface.leaf->inverse ? -normal : normal};
   }

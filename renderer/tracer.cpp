@@ -243,7 +243,7 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
     ~LevelScope() { current = outer; }
   } scope{shading_level_, shading_level_};
   shading_level_ = level;
-  const Vec3 point = ray.origin + ray.direction * hit.t;
+  const Vec3 point = hit_point(ray, hit);
   const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
@@ -263,7 +263,7 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
 
 Radiance Tracer::shade_material(const Ray& ray, const SurfaceHit& hit, const Material& material,
                                 const TexturePoint& at, int level, double weight, const RayState& state) {
-  const Vec3 point = ray.origin + ray.direction * hit.t;
+  const Vec3 point = hit_point(ray, hit);
   const Vec3 geometric = surface_normal(hit, point);
   // Every surface is two-sided: shade on the side the ray sees (§2 "Normal").
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
@@ -693,6 +693,30 @@ bool Tracer::cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, dou
 // from MIN_ISECT_DEPTH, so its images show it (prim_height_field, prim_prism, bump_map matched POV-Ray only to
 // 60-71 dB without it, 115-121 dB with it). With fading interiors the shadow ray also tracks the interiors it is
 // in (it starts in those of the ray that reached the point), and light fades over each stretch inside one (§3).
+namespace {
+// A julia_fractal outside CSG reports only the first surface its march meets (POV-Ray's Fractal::All_Intersections
+// stops there), so the surfaces beyond it are found only by the ray POV-Ray's shadow walk starts from that hit.
+bool reports_first_hit_only(const Primitive& p) { return p.type == ShapeType::julia_fractal && !p.csg_child; }
+}  // namespace
+
+// POV-Ray moves its shadow ray to each crossing it counts and looks again from there: for an object that reports only
+// its first hit, the next crossing of the same object is found from the one at depth `at` and joins the sorted list
+// after position k.
+template <class Crossings>
+void Tracer::add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double distance,
+                                  Crossings& crossings, std::size_t k) const {
+  const Ray from_here{hit_point(ray, crossings[k].hit), ray.direction, ray.kind};
+  const std::optional<SurfaceHit> next = nearest_hit(scene_.accelerator.primitives()[primitive], from_here,
+                                                     tolerance::shadow, distance - at - tolerance::shadow);
+  if (!next) return;
+  auto crossing = crossings[k];
+  crossing.hit = *next;
+  crossing.hit.t = at + next->t;
+  auto place = crossings.begin() + static_cast<std::ptrdiff_t>(k) + 1;
+  while (place != crossings.end() && place->hit.t <= crossing.hit.t) ++place;
+  crossings.insert(place, crossing);
+}
+
 Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state) {
   std::uint32_t& cached = shadow_cache_slot(l);
   if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, distance)) return {0, 0, 0};
@@ -723,14 +747,17 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
   const bool track = scene_.any_shadow_fade || scene_.any_interior_media || shadow_atmosphere_;
   if (track) in = state.interiors;
   double previous = 0;
-  for (const Crossing& c : crossings) {
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const Crossing c = crossings[k];
     if (previous > 0 && c.hit.t - previous <= tolerance::shadow) continue;
+    if (reports_first_hit_only(scene_.accelerator.primitives()[c.primitive]))
+      add_next_crossing_of(c.primitive, ray, c.hit.t, distance, crossings, k);
     if (opaque_at(c.hit)) {
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
     }
     if (photon_map_ && photons_replace_shadow(l, c.hit)) return {0, 0, 0};
-    Rgb through = filter_through(c.hit, ray.origin + ray.direction * c.hit.t, ray.direction);
+    Rgb through = filter_through(c.hit, hit_point(ray, c.hit), ray.direction);
     // The media of the interiors crossed since the last surface dim the light the surface lets through (POV-Ray's
     // ComputeShadowColour), as the atmosphere does for lights with media_attenuation (ComputeShadowMedia).
     if (media_ && scene_.any_interior_media && in.any_media() && in.all_hollow() && !all_below(through, tolerance::epsilon))

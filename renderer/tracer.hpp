@@ -203,6 +203,9 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Rgb shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, const RayState& state);
   // POV-Ray's walk along the shadow ray, with its shadow cache.
   Rgb povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state);
+  template <class Crossings>
+  void add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double distance, Crossings& crossings,
+                            std::size_t k) const;
   std::uint32_t& shadow_cache_slot(const RenderLight& l);
   bool cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const;
   bool opaque_at(const SurfaceHit& hit) const;   // one material, and it lets no light through

@@ -513,6 +513,10 @@ struct JuliaFractal {
   double precision = 1.0 / 20.0;            // the march step: 1 / the SDL precision (which is at least 1)
   std::array<double, 4> slice{0, 0, 0, 1};  // normalised
   double slice_distance = 0;
+  // The inverse of the object's transform as POV-Ray composes it (Compose_Transforms: each transform's own inverse,
+  // exact for translate, rotate and scale, multiplied in reverse order): the fractal's chaotic surface shows the last
+  // bit of the object-space ray, which inverting the composed matrix would change.
+  Matrix object_from_world{};
 };
 
 // bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] [uv_vectors …] P1 … P16 }: a Bézier patch whose 16

@@ -60,6 +60,23 @@ bool texture_ignores_transforms(const Texture& texture) {
   return true;
 }
 
+// The inverse POV-Ray keeps with a transform (Compute_Translation_Transform, Compute_Scaling_Transform,
+// Compute_Rotation_Transform: −v, 1/s, the rotation's transpose); a general matrix is inverted.
+Matrix povray_inverse(const Matrix& m, TransformKind kind) {
+  switch (kind) {
+    case TransformKind::translate: return Matrix::translation({-m.m[3][0], -m.m[3][1], -m.m[3][2]});
+    case TransformKind::scale: return Matrix::scaling({1.0 / m.m[0][0], 1.0 / m.m[1][1], 1.0 / m.m[2][2]});
+    case TransformKind::rotate: {
+      Matrix t;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) t.m[i][j] = m.m[j][i];
+      return t;
+    }
+    case TransformKind::other: break;
+  }
+  return m.inverse();
+}
+
 void transform_object(Object& object, const Matrix& m, TransformKind kind, ObjectTransformObserver* observer) {
   if (observer) observer->transforming(object, m, kind);
   // A texture that ignores transforms stays as it is: moving it would only copy it (for every moved copy of a
@@ -87,7 +104,10 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
     return;
   }
   // Every transform of a julia_fractal runs its Compute_BBox, which clears its inversion (POV-Ray 3.7's Fractal).
-  if (std::holds_alternative<JuliaFractal>(object.shape)) object.inverse = false;
+  if (auto* julia = std::get_if<JuliaFractal>(&object.shape)) {
+    object.inverse = false;
+    julia->object_from_world = povray_inverse(m, kind) * julia->object_from_world;
+  }
   if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !transform_keeps_sphere(kind, m))
     sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {

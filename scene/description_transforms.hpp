@@ -26,6 +26,10 @@ bool texture_ignores_transforms(const Texture& texture);
 // (POV-Ray's Box::Translate, Box::Scale).
 enum class TransformKind { translate, rotate, scale, other };
 
+// The inverse of the transform m of that kind as POV-Ray keeps it beside the matrix (exact for translate, scale and
+// rotate; a general matrix is inverted).
+Matrix povray_inverse(const Matrix& m, TransformKind kind);
+
 // Sphere::Translate, Sphere::Rotate and a uniform Sphere::Scale keep a sphere a sphere; any other transform makes it
 // POV-Ray's ellipsoid (Sphere::ellipsoid), for good.
 bool transform_keeps_sphere(TransformKind kind, const Matrix& m);

@@ -68,7 +68,7 @@ void Tracer::photon_trace(const Ray& ray, Rgb colour, int level, double weight, 
 // share of the photon.
 void Tracer::photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, int level, double weight,
                             const RayState& state, PhotonShot& shot) {
-  const Vec3 point = ray.origin + ray.direction * hit.t;
+  const Vec3 point = hit_point(ray, hit);
   const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
   for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;

@@ -1,5 +1,5 @@
 // bicubic_patch: a cubic Bézier patch, subdivided into flat quads as POV-Ray 3.7 does (written anew from the facts of
-// source/backend/shape/bezier.cpp, 3.7-stable; ../notes bicubic spec):
+// source/backend/shape/bezier.cpp, 3.7-stable; docs/issue21-bicubic-patch.md):
 // - The net is halved by de Casteljau at ½ (each midpoint 0.5·(a + b)), across the rows (u) and along them (v), until
 //   it is flat enough (the largest distance of its 16 points from the plane of three corners below `flatness`,
 //   strictly) or u_steps and v_steps halvings are done; when one direction's steps are used up only the other is

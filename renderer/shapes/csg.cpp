@@ -139,7 +139,7 @@ void CsgShape::collect(const Primitive& p, const Ray& ray, HitBuffer& out) {
     collect_hits(d.children[i], ray, out);
     std::size_t kept = begin;
     for (std::size_t k = begin; k < out.size(); ++k)
-      if (survives(d, i, ray.origin + ray.direction * out[k].t, ray.kind)) out[kept++] = out[k];
+      if (survives(d, i, hit_point(ray, out[k]), ray.kind)) out[kept++] = out[k];
     out.resize(kept);
   }
 }

@@ -1,5 +1,5 @@
 // julia_fractal placed in the scene, as POV-Ray 3.7's Fractal::All_Intersections, Normal and Inside do it (facts
-// from source/backend/shape/fractal.cpp, 3.7-stable; ../notes julia spec §3, §7):
+// from source/backend/shape/fractal.cpp, 3.7-stable; docs/issue21-julia-fractal.md §3, §7):
 // - The world ray goes to object space; its direction is normalised there when its length is not exactly 1 (length
 //   factor Len), and object depths become world depths times Len. The march and its hits are julia_fractal_math.cpp's.
 // - The normal found at the hit goes to world space by the inverse transpose and is normalised.
@@ -33,24 +33,22 @@ julia::Fractal fractal_of(const JuliaFractal& d) {
   return f;
 }
 
-// A unit normal in a SurfaceHit: the two smaller components exactly, the largest (at least 1/√3 in size) rebuilt from
-// them, its axis and sign in the element.
-void pack_normal(Vec3 n, SurfaceHit& hit) {
-  const double a[3] = {std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)};
-  const std::uint32_t axis = a[0] >= a[1] && a[0] >= a[2] ? 0u : (a[1] >= a[2] ? 1u : 2u);
-  hit.u = n[static_cast<int>((axis + 1) % 3)];
-  hit.v = n[static_cast<int>((axis + 2) % 3)];
-  hit.element = axis | (n[static_cast<int>(axis)] < 0 ? 4u : 0u);
-}
+// What a hit found that its depth cannot give back: POV-Ray's hit point (the bisection's end inside the set, carried
+// to world space) and the normal built from the orbit there. Kept per thread in a ring; a hit's element is its slot.
+// A hit is read (shaded, filtered) before its thread has made kHitRecords more julia hits, far more than the hits of
+// one ray's closest-hit search.
+struct HitRecord {
+  Vec3 point, normal;
+};
+constexpr std::uint32_t kHitRecords = 1u << 16;
+thread_local std::vector<HitRecord> hit_records;
+thread_local std::uint32_t next_record = 0;
 
-Vec3 unpack_normal(const SurfaceHit& hit) {
-  const std::uint32_t axis = hit.element & 3u;
-  const double largest = std::sqrt(std::max(0.0, 1.0 - hit.u * hit.u - hit.v * hit.v));
-  Vec3 n;
-  n[static_cast<int>(axis)] = (hit.element & 4u) ? -largest : largest;
-  n[static_cast<int>((axis + 1) % 3)] = hit.u;
-  n[static_cast<int>((axis + 2) % 3)] = hit.v;
-  return n;
+std::uint32_t record(Vec3 point, Vec3 normal) {
+  if (hit_records.empty()) hit_records.resize(kHitRecords);
+  const std::uint32_t slot = next_record++ & (kHitRecords - 1);
+  hit_records[slot] = {point, normal};
+  return slot;
 }
 
 // The march's hits of the world ray as SurfaceHits (world depths, packed world normals); none for a ray whose
@@ -75,15 +73,16 @@ void march(const Primitive& p, const Ray& ray, bool all_hits, Found&& found) {
   for (const julia::FractalHit& h : hits) {
     Vec3 n = p.transformed ? p.object_from_world.normal_from_inverse(h.normal) : h.normal;
     n = n * (1.0 / std::sqrt(dot(n, n)));
-    SurfaceHit hit{h.depth * len, &p, 0, 0, 0};
-    pack_normal(n, hit);
-    found(hit);
+    const Vec3 point = p.transformed ? p.world_from_object.point(h.point) : h.point;
+    found(SurfaceHit{h.depth * len, &p, record(point, n), 0, 0});
   }
 }
 }  // namespace
 
 Primitive JuliaFractalShape::build(const JuliaFractal& description, const Matrix& world_from_object) {
   Primitive p = placed_primitive(ShapeType::julia_fractal, world_from_object);
+  // POV-Ray's own inverse, composed transform by transform along with world_from_object (transform_object).
+  if (p.transformed) p.object_from_world = description.object_from_world;
   auto data = std::make_shared<JuliaFractalData>();
   data->fractal = fractal_of(description);
   p.data = std::move(data);
@@ -104,7 +103,9 @@ std::optional<SurfaceHit> JuliaFractalShape::nearest(const Primitive& p, const R
   return best;
 }
 
-Vec3 JuliaFractalShape::hit_normal(const SurfaceHit& hit, Vec3) { return unpack_normal(hit); }
+Vec3 JuliaFractalShape::hit_normal(const SurfaceHit& hit, Vec3) { return hit_records[hit.element].normal; }
+
+Vec3 JuliaFractalShape::hit_point(const SurfaceHit& hit) { return hit_records[hit.element].point; }
 
 // Without a hit, the normal is the one the march finds nearest the point, marching in from the bounding sphere
 // along the line through the centre (POV-Ray's normals exist only with a hit's orbit).

@@ -21,15 +21,15 @@ struct JuliaFractalData : ShapeData {
 namespace povtrace::render::shapes {
 
 // julia_fractal (julia_fractal.cpp): the first hit of the march, or every hit for a CSG child or a clipped fractal
-// (POV-Ray's IS_CHILD_OBJECT). The normal found with the hit travels in it: u and v hold its two smaller world
-// components, element which one is the largest and its sign (the normal comes from the orbit at the hit, which a
-// later evaluation at the point would not reproduce).
+// (POV-Ray's IS_CHILD_OBJECT). The point and normal found with a hit are kept for it (its element): the normal comes
+// from the orbit there, and the point from the bisection, which the depth along the ray would not reproduce.
 struct JuliaFractalShape {
   using Description = JuliaFractal;
   static Primitive build(const JuliaFractal& description, const Matrix& world_from_object);
   static void collect(const Primitive& p, const Ray& ray, HitBuffer& out);
   static std::optional<SurfaceHit> nearest(const Primitive& p, const Ray& ray, double t_min, double t_max);
   static Vec3 hit_normal(const SurfaceHit& hit, Vec3 world_point);
+  static Vec3 hit_point(const SurfaceHit& hit);
   static Vec3 normal(const Primitive& p, Vec3 world_point);
   static bool inside(const Primitive& p, Vec3 world_point);
   static Bounds object_bounds(const Primitive& p);

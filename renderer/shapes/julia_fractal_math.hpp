@@ -1,4 +1,4 @@
-// POV-Ray 3.7's julia_fractal in its own object space (docs: ../notes julia spec, written anew from POV-Ray's
+// POV-Ray 3.7's julia_fractal in its own object space (docs: docs/issue21-julia-fractal.md, written anew from POV-Ray's
 // fractal.cpp, quatern.cpp and hcmplx.cpp): the 4-D iteration of quaternions or hypercomplex numbers, the march
 // along a ray with bisection, the normal from the orbit and the inside test, in POV-Ray's order of operations.
 // renderer/shapes/julia_fractal.cpp places it in the scene (transforms, hits, normals).

@@ -27,6 +27,12 @@ double Bounds::surface_area() const {
   return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
 }
 
+Vec3 hit_point(const Ray& ray, const SurfaceHit& hit) {
+  if (hit.leaf->type == ShapeType::julia_fractal) [[unlikely]]
+    return shapes::JuliaFractalShape::hit_point(hit);
+  return ray.origin + ray.direction * hit.t;
+}
+
 Primitive placed_primitive(ShapeType type, const Matrix& world_from_object) {
   Primitive p;
   p.type = type;
