@@ -117,7 +117,8 @@ enum class PatternKind {
   uv_mapping,                                                       // its one entry at the hit's <u, v, 0>
   mandel, julia, magnet,                                            // escape-time fractals (Pigment::fractal)
   slope, aoi,                                                       // of the hit's normal (Pigment::slope) or the ray
-  pigment_pattern                                                   // the grey of a pigment (Pigment::pattern_pigment)
+  pigment_pattern,                                                  // the grey of a pigment (Pigment::pattern_pigment)
+  object                                                            // list: 1 inside Pigment::object, else 0
 };
 
 // The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).
@@ -195,6 +196,7 @@ struct MapEntry {
   std::shared_ptr<const Pigment> pigment;
 };
 
+struct Object;
 struct Pigment {
   PatternKind pattern = PatternKind::solid;
   Colour colour;                 // solid colour (default: black, rgbft 0)
@@ -225,6 +227,9 @@ struct Pigment {
   FractalParams fractal;         // mandel, julia, magnet
   SlopeParams slope;             // slope
   std::shared_ptr<const Pigment> pattern_pigment;   // pigment_pattern: the pigment whose grey is the value
+  // object { OBJECT … }: the object whose inside picks the second entry, as declared (not moved with the pigment:
+  // the pattern's transforms take the point to it).
+  std::shared_ptr<const Object> object;
   // `noise_generator N` of this pattern (1…3); 0: the scene's (POV-Ray's GetNoiseGen).
   int noise_generator = 0;
   // quick_color: what the pigment shows instead in draft renders (+Q0…+Q5). POV-Ray uses it only when none of its

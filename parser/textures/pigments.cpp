@@ -6,6 +6,7 @@
 
 #include "runtime/density_file.hpp"
 #include "runtime/function_value.hpp"
+#include "parser/extents/object_notes.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/textures/image_location.hpp"
 #include "parser/textures/texture_parser.hpp"
@@ -24,7 +25,8 @@ constexpr double kPovEpsilon = 1e-10;
 constexpr std::size_t kMaxMapEntries = 256;
 
 bool is_list_pattern(PatternKind k) {
-  return k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick;
+  return k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick ||
+         k == PatternKind::object;
 }
 
 struct SimplePattern {
@@ -140,6 +142,21 @@ std::vector<MapEntry> TextureParser::parse_list_entries(PatternKind kind, std::s
   return entries;
 }
 
+// The object of an object pattern (POV-Ray's Parse_Bound_Clip): one object or object identifier, untextured and
+// no patch. It keeps the coordinates it was written in: the pattern's transforms take the point to it.
+std::shared_ptr<const Object> TextureParser::parse_pattern_object() {
+  const Token t = next();
+  std::optional<SceneItem> item = try_parse_item(t);
+  if (!item || !std::holds_alternative<Object>(*item))
+    fail_expected(t, "an object or object identifier in the object pattern");
+  Object& o = std::get<Object>(*item);
+  if (o.texture || std::holds_alternative<BicubicPatch>(o.shape))
+    fail_at(t, "an object pattern's object can have no texture and be no bicubic_patch (POV-Ray: \"Illegal "
+               "texture or patch in clip, bound or object pattern.\")");
+  clear_notes(o);
+  return std::make_shared<const Object>(std::move(o));
+}
+
 void TextureParser::set_list_pattern(const Token& t, Pigment& p) {
   const PatternKind kind = t.is("checker") ? PatternKind::checker
                            : t.is("hexagon") ? PatternKind::hexagon : PatternKind::brick;
@@ -228,6 +245,22 @@ bool TextureParser::try_pattern(const Token& t, Pigment& p) {
   }
   if (t.is("aoi")) {
     p.pattern = PatternKind::aoi;
+    return true;
+  }
+  if (t.is("object")) {   // object { OBJECT [C1, C2 | pigment { } pigment { }] }
+    const NestingGuard guard(*this, t);
+    const Token open = expect("{", " after 'object' (the object pattern)");
+    p.object = parse_pattern_object();
+    taint(p.unsupported, p.object->unsupported);
+    p.pattern = PatternKind::object;
+    p.frequency = 0.0;   // a list pattern (Parse_Pattern sets Frequency 0)
+    if (peek().is("normal")) {
+      taint(p.unsupported, UnsupportedFeature{"the object pattern with normal entries", peek().loc});
+      skip_balanced(open);
+      return true;
+    }
+    p.entries = parse_list_entries(PatternKind::object, 2);
+    expect("}", " closing the object pattern");
     return true;
   }
   if (t.is("agate")) {

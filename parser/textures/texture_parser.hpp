@@ -61,6 +61,7 @@ class TextureParser : ParserPart {
   Pigment uv_mapped_pigment(Pigment outer, const SourceLoc& loc, std::string_view closer);
   bool try_pattern(const Token& t, Pigment& p);
   void set_list_pattern(const Token& t, Pigment& p);   // checker/hexagon/brick without their entries
+  std::shared_ptr<const Object> parse_pattern_object();   // the object of an object pattern
   void parse_density_file(Pigment& p);                  // after `density_file`: df3 "NAME", the file read
   bool try_pattern_modifier(const Token& t, Pigment& p);
   bool try_pattern_parameter(const Token& t, Pigment& p);

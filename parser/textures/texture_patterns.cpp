@@ -22,7 +22,8 @@ namespace {
 double single(double d) { return static_cast<double>(static_cast<float>(d)); }
 
 bool is_list_pattern(PatternKind k) {
-  return k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick;
+  return k == PatternKind::checker || k == PatternKind::hexagon || k == PatternKind::brick ||
+         k == PatternKind::object;
 }
 
 constexpr std::size_t kMaxMapEntries = 256;   // POV-Ray's MAX_BLEND_MAP_ENTRIES
@@ -34,7 +35,8 @@ bool TextureParser::starts_texture_pattern(const Token& t) {
   static const std::string_view patterns[] = {
       "checker", "hexagon", "brick", "gradient", "radial", "onion", "planar", "boxed", "spherical", "cylindrical",
       "leopard", "bozo", "spotted", "granite", "marble", "wood", "agate", "crackle", "cells", "average", "function", "spiral1", "spiral2", "quilted",
-      "mandel", "julia", "magnet", "slope", "aoi", "pigment_pattern", "bumps", "dents", "wrinkles", "ripples", "waves", "density_file"};
+      "mandel", "julia", "magnet", "slope", "aoi", "pigment_pattern", "bumps", "dents", "wrinkles", "ripples", "waves", "density_file",
+      "object"};
   for (auto p : patterns)
     if (t.is(p)) return true;
   return false;
@@ -148,6 +150,15 @@ std::shared_ptr<const Texture> TextureParser::parse_patterned_texture(const Toke
   } else if (is_list_pattern_word(first)) {
     set_list_pattern(first, carrier);
     pattern->entries = parse_texture_list(carrier.pattern == PatternKind::hexagon ? 3 : 2);
+  } else if (first.is("object")) {   // object { OBJECT [texture { } texture { }] }
+    const NestingGuard guard(*this, first);
+    expect("{", " after 'object' (the object pattern)");
+    carrier.object = parse_pattern_object();
+    taint(carrier.unsupported, carrier.object->unsupported);
+    carrier.pattern = PatternKind::object;
+    carrier.frequency = 0.0;
+    pattern->entries = parse_texture_list(2);
+    expect("}", " closing the object pattern");
   } else if (!first.is("material_map") && !try_pattern(first, carrier)) {
     fail_expected(first, "a pattern in the patterned texture");
   }

@@ -121,6 +121,8 @@ double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* 
     case PatternKind::slope: return patterns::slope(params.slope, p, hit);
     case PatternKind::aoi: return patterns::aoi(hit);
     case PatternKind::pigment_pattern: return pigment_grey(*params.pigment, p, hit);
+    // POV-Ray's object_pattern: Inside_Object at the pattern-space point.
+    case PatternKind::object: return params.object && params.object->inside(p) ? 1.0 : 0.0;
     case PatternKind::density_file:
       return patterns::density_file(*params.density_file, params.density_interpolation, p);
     case PatternKind::solid:

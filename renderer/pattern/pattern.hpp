@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "scene/description.hpp"
+#include "scene/object_geometry.hpp"
 #include "runtime/noise.hpp"
 
 namespace povtrace::render {
@@ -36,6 +37,10 @@ struct PatternParams {
   std::shared_ptr<RenderPigment> pigment;
   // The pattern's own `noise_generator` (1…3), 0 for the scene's: set_generator keeps it (POV-Ray's GetNoiseGen).
   int own_noise_generator = 0;
+  // object: its inside test, made from the description (kept to make it again for the scene's noise generator,
+  // which an isosurface in it reads).
+  std::shared_ptr<const PreparedObject> object;
+  std::shared_ptr<const Object> object_description;
 };
 
 // What slope and aoi read of the surface being shaded, in world space: the hit point, the normal as POV-Ray's

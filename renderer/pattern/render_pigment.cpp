@@ -1,4 +1,5 @@
 #include "renderer/pattern/render_pigment.hpp"
+#include "renderer/object_geometry.hpp"
 
 #include "renderer/pattern/default_maps.hpp"
 #include "renderer/pattern/render_texture.hpp"
@@ -58,6 +59,8 @@ void set_generator(RenderPigment& r, NoiseGenerator generator) {
   const int own = r.params.own_noise_generator;
   r.params.noise_generator = own != 0 ? static_cast<NoiseGenerator>(own) : generator;
   r.params.function_noise_generator = static_cast<int>(generator);
+  if (r.params.object_description)
+    r.params.object = RendererGeometry().prepare(*r.params.object_description, static_cast<int>(generator));
   for (auto& c : r.children) set_generator(c, generator);
   if (r.params.pigment) {   // copies of this pigment share it until one is set
     r.params.pigment = std::make_shared<RenderPigment>(*r.params.pigment);
@@ -67,6 +70,7 @@ void set_generator(RenderPigment& r, NoiseGenerator generator) {
 
 void set_function_generator(RenderPigment& r, int generator) {
   r.params.function_noise_generator = generator;
+  if (r.params.object_description) r.params.object = RendererGeometry().prepare(*r.params.object_description, generator);
   for (auto& c : r.children) set_function_generator(c, generator);
   if (r.params.pigment) {
     r.params.pigment = std::make_shared<RenderPigment>(*r.params.pigment);
@@ -91,9 +95,14 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
                            p.agate_turb, p.crackle,  p.turbulence, NoiseGenerator::range_corrected,
                            p.frequency,  p.phase,    p.function,   p.arms,
                            p.control0,   p.control1, 2,   // both generators set for the scene (set_generator)
-                           p.density_file, p.density_interpolation, p.fractal, p.slope, nullptr, p.noise_generator};
+                           p.density_file, p.density_interpolation, p.fractal, p.slope, nullptr, p.noise_generator,
+                           nullptr, nullptr};
   if (p.pattern_pigment)
     r.params.pigment = std::make_shared<RenderPigment>(build_render_pigment(*p.pattern_pigment, images, quick_colours));
+  if (p.object) {
+    r.params.object_description = p.object;
+    r.params.object = RendererGeometry().prepare(*p.object, 2);   // made again for the scene's (set_generator)
+  }
   r.wave = WaveParams{p.frequency, p.phase, p.wave, p.exponent};
   r.steps = steps_of(p);
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
