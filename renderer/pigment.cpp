@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/pattern/pattern_functions.hpp"
 #include "renderer/tracer.hpp"
 
 namespace povtrace::render {
@@ -30,10 +31,15 @@ Vec3 repeated(Vec3 p, const RepeatWarp& r) {
 }  // namespace
 
 Vec3 to_pattern_space(const RenderPigment& pigment, Vec3 p) {
+  // The repeated cell of the black holes: one per evaluation, shared by all of them (POV-Ray's Warp_EPoint keeps
+  // the indices of an axis a hole does not repeat on from the hole before).
+  int hole_cell[3] = {0, 0, 0};
   for (const PatternStep& s : pigment.steps) {
     if (s.transformed) p = s.pattern_from_world.point(p);
     if (s.turbulence) p = displaced(p, *s.turbulence);
     if (s.repeat) p = repeated(p, *s.repeat);
+    if (s.mapping) p = patterns::mapping_warp(p, *s.mapping);
+    if (s.black_hole) p = patterns::black_hole_warp(p, *s.black_hole, hole_cell);
   }
   if (pigment.classic_turbulence_warps) p = displaced(p, *pigment.params.turbulence);
   for (double* c : {&p.x, &p.y, &p.z}) *c = std::clamp(*c, -kCoordinateLimit, kCoordinateLimit);

@@ -60,6 +60,8 @@ struct PatternStep {
   Matrix pattern_from_world;
   std::optional<Turbulence> turbulence;
   std::optional<RepeatWarp> repeat;
+  std::optional<MappingWarp> mapping;
+  std::optional<BlackHoleWarp> black_hole;
 };
 
 // An entry of the pigment's map: a colour, or a child pigment (index into RenderPigment::children).

@@ -143,9 +143,35 @@ struct RepeatWarp {
   Vec3 flip{1, 1, 1};   // −1 on the flipped axes (POV-Ray stores them so)
 };
 
+// warp { planar | cylindrical | spherical | toroidal | cubic … } (POV-Ray's mapping warps): the point goes to the
+// shape's own coordinates (angle, height or angle, distance), turned by the orientation.
+enum class MappingWarpKind { planar, cylindrical, spherical, toroidal, cubic };
+struct MappingWarp {
+  MappingWarpKind kind = MappingWarpKind::cylindrical;
+  Vec3 orientation{0, 0, 1};   // normalised as POV-Ray normalises (a zero vector gives NaN, as in POV-Ray)
+  double dist_exp = 0;         // cylindrical, spherical, toroidal
+  double major_radius = 1;     // toroidal
+  double offset = 0;           // planar: the distance written after the orientation
+};
+
+// warp { black_hole <centre>, radius … }, with the centre and repeat vector as POV-Ray's Check_BH_Parameters
+// leaves them.
+struct BlackHoleWarp {
+  Vec3 centre{0, 0, 0};
+  double radius = 1, strength = 1, falloff = 2;
+  bool inverse = false;
+  int type = 0;                // only type 0 moves points
+  bool repeat = false;
+  Vec3 repeat_vector{0, 0, 0};
+  bool uncertain = false;      // `turbulence` given: the centre jitters per repeated cell
+  Vec3 uncertainty{0, 0, 0};
+};
+
 struct PatternWarp {
   Turbulence turbulence;
   std::optional<RepeatWarp> repeat;   // a repeat warp instead of a turbulence warp
+  std::optional<MappingWarp> mapping; // or a mapping warp
+  std::optional<BlackHoleWarp> black_hole;   // or a black hole
   Matrix before;
 };
 

@@ -4,7 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <cstdio>
+
 #include "runtime/density_file.hpp"
+#include "scene/pov_vector_math.hpp"
+#include "parser/expressions/int_cast.hpp"
 #include "runtime/function_value.hpp"
 #include "parser/extents/object_notes.hpp"
 #include "parser/interpreter.hpp"
@@ -364,6 +368,17 @@ void TextureParser::parse_warp(const Token& keyword, Pigment& p) {
     p.warps.push_back(w);
     return;
   }
+  if (kind.is("planar") || kind.is("cylindrical") || kind.is("spherical") || kind.is("toroidal") ||
+      kind.is("cubic") || kind.is("black_hole")) {
+    PatternWarp w;
+    if (kind.is("black_hole")) w.black_hole = parse_black_hole_warp();
+    else w.mapping = parse_mapping_warp(kind);
+    expect("}", " closing the warp (one warp per warp { })");
+    w.before = p.world_from_pattern;
+    p.world_from_pattern = Matrix::identity();
+    p.warps.push_back(w);
+    return;
+  }
   if (!kind.is("turbulence")) {
     taint(p.unsupported, UnsupportedFeature{"the warp '" + std::string(kind.text) + "'", kind.loc});
     unget(kind);
@@ -384,6 +399,89 @@ void TextureParser::parse_warp(const Token& keyword, Pigment& p) {
   w.before = p.world_from_pattern;
   p.world_from_pattern = Matrix::identity();
   p.warps.push_back(w);
+}
+
+// planar [V [,] D] | cylindrical | spherical | toroidal [orientation V] [dist_exp F] [major_radius R] | cubic
+// (Parse_Warp): the orientation normalised by its reciprocal length, as VNormalizeEq does.
+MappingWarp TextureParser::parse_mapping_warp(const Token& kind) {
+  MappingWarp w;
+  if (kind.is("cubic")) {
+    w.kind = MappingWarpKind::cubic;
+    return w;
+  }
+  if (kind.is("planar")) {
+    w.kind = MappingWarpKind::planar;
+    if (!peek().is("}")) {   // the orientation and the (then mandatory) distance
+      w.orientation = pov_normalized(parse_vector());
+      accept(",");
+      w.offset = parse_float();
+    }
+    return w;
+  }
+  w.kind = kind.is("cylindrical") ? MappingWarpKind::cylindrical
+           : kind.is("spherical") ? MappingWarpKind::spherical : MappingWarpKind::toroidal;
+  while (true) {
+    const Token t = peek();
+    if (t.is("orientation")) { next(); w.orientation = pov_normalized(parse_vector()); }
+    else if (t.is("dist_exp")) { next(); w.dist_exp = parse_float(); }
+    else if (t.is("major_radius") && w.kind == MappingWarpKind::toroidal) { next(); w.major_radius = parse_float(); }
+    else return w;
+  }
+}
+
+// black_hole <centre> [,] radius [strength S] [falloff F] [inverse] [type T] [repeat V] [turbulence V] (Parse_Warp),
+// the centre and repeat vector adjusted at each repeat and turbulence as Check_BH_Parameters does.
+BlackHoleWarp TextureParser::parse_black_hole_warp() {
+  BlackHoleWarp w;
+  w.centre = parse_vector();
+  accept(",");
+  w.radius = parse_float();
+  while (true) {
+    const Token t = peek();
+    if (t.is("strength")) { next(); w.strength = parse_float(); }
+    else if (t.is("falloff")) { next(); w.falloff = parse_float(); }
+    else if (t.is("inverse")) { next(); w.inverse = true; }
+    else if (t.is("type")) { next(); w.type = saturating_cast<int>(parse_float()); }
+    else if (t.is("repeat")) {
+      next();
+      w.repeat_vector = parse_vector();
+      w.repeat = true;
+      check_black_hole(t, w);
+    } else if (t.is("turbulence")) {
+      next();
+      w.uncertainty = parse_vector();
+      w.uncertain = true;
+      check_black_hole(t, w);
+    } else return w;
+  }
+}
+
+// Check_BH_Parameters: on each repeated axis the centre is at least the radius and the repeat at least the hole's
+// far side plus its jitter (a warning when it grows); a repeat below EPSILON is dropped with a warning.
+void TextureParser::check_black_hole(const Token& at, BlackHoleWarp& w) const {
+  if (!w.repeat) return;
+  const auto general = [](double v) {   // printf's %g, as POV-Ray's warning prints the value
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return std::string(text);
+  };
+  static const char* const axis_names[3] = {"X", "Y", "Z"};
+  for (int a = 0; a < 3; ++a) {
+    double& repeat = w.repeat_vector[a];
+    if (!(repeat > 0.0)) continue;
+    double& centre = w.centre[a];
+    if (centre < w.radius) centre = w.radius;
+    const double needed = (centre + w.radius) + w.uncertainty[a];
+    if (repeat < needed) {
+      repeat = needed;
+      warn(at.loc, std::string("Black Hole repeat vector ") + axis_names[a] + " too small; increased to " +
+                       general(repeat));
+    }
+    if (repeat < kPovEpsilon) {
+      warn(at.loc, std::string("Black Hole repeat vector ") + axis_names[a] + " is less than 0.000000; ignored");
+      repeat = 0.0;
+    }
+  }
 }
 
 // `repeat V [offset O] [flip F] }` (Parse_Warp): V must name exactly one axis.

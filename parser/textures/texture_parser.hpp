@@ -62,6 +62,9 @@ class TextureParser : ParserPart {
   bool try_pattern(const Token& t, Pigment& p);
   void set_list_pattern(const Token& t, Pigment& p);   // checker/hexagon/brick without their entries
   std::shared_ptr<const Object> parse_pattern_object();   // the object of an object pattern
+  MappingWarp parse_mapping_warp(const Token& kind);
+  BlackHoleWarp parse_black_hole_warp();
+  void check_black_hole(const Token& at, BlackHoleWarp& w) const;
   void parse_density_file(Pigment& p);                  // after `density_file`: df3 "NAME", the file read
   bool try_pattern_modifier(const Token& t, Pigment& p);
   bool try_pattern_parameter(const Token& t, Pigment& p);

@@ -26,7 +26,6 @@ const std::vector<double>& pattern_randoms() {
   return values;
 }
 
-double pattern_random(std::size_t index) { return pattern_randoms()[index % kRandomCount]; }
 
 // POV-Ray's IntPickInCube: the cube's random point.
 Vec3 cell_point(long long x, long long y, long long z) {
@@ -123,6 +122,8 @@ Nearest nearest_three(const std::array<Vec3, 81>& points, Vec3 p, Sum sum) {
 }
 
 }  // namespace
+
+double pattern_random(std::size_t index) { return pattern_randoms()[index % kRandomCount]; }
 
 double crackle(Vec3 p, const CrackleParams& c, NoiseGenerator generator) {
   // floor(x − ε), not POV-Ray's FLOOR: no mirror image about zero.

@@ -1,4 +1,5 @@
 #include "renderer/pattern/image_map.hpp"
+#include "renderer/pattern/pattern_functions.hpp"
 
 #include <cmath>
 
@@ -16,12 +17,6 @@ double wrap(double value, double limit) {
   return r;
 }
 
-// The angle of (x, z) from +x towards +z, in [0, 2π) (the mappers' acos form, exact on the axes).
-double angle_around_y(double x, double z, double len) {
-  if (z == 0.0) return x > 0 ? 0.0 : M_PI;
-  const double theta = std::acos(x / len);
-  return z < 0.0 ? kTwoPi - theta : theta;
-}
 
 // A mapper's image position before the offsets, in pixels.
 struct MappedUv {
@@ -41,7 +36,7 @@ std::optional<MappedUv> spherical(const ImageMapping& m, Vec3 p) {
   const Vec3 d = p / len;
   const double phi = 0.5 + std::asin(d.y) / M_PI;
   const double flat = std::sqrt(d.x * d.x + d.z * d.z);
-  const double theta = flat == 0.0 ? 0.0 : angle_around_y(d.x, d.z, flat) / kTwoPi;
+  const double theta = flat == 0.0 ? 0.0 : patterns::angle_around_y(d.x, d.z, flat) / kTwoPi;
   return MappedUv{theta * m.width, phi * m.height};
 }
 
@@ -53,14 +48,14 @@ std::optional<MappedUv> cylindrical(const ImageMapping& m, Vec3 p) {
   const double x = p.x / len, z = p.z / len;
   const double flat = std::sqrt(x * x + z * z);
   if (flat == 0.0) return std::nullopt;
-  return MappedUv{angle_around_y(x, z, flat) / kTwoPi * m.width, v};
+  return MappedUv{patterns::angle_around_y(x, z, flat) / kTwoPi * m.width, v};
 }
 
 std::optional<MappedUv> torus(const ImageMapping& m, Vec3 p) {
   constexpr double kMajorRadius = 1.0;   // POV-Ray's image gradient x
   const double len = std::sqrt(p.x * p.x + p.z * p.z);
   if (len == 0.0) return std::nullopt;
-  const double theta = -angle_around_y(p.x, p.z, len);
+  const double theta = -patterns::angle_around_y(p.x, p.z, len);
   const double x = len - kMajorRadius;
   const double tube = std::sqrt(x * x + p.y * p.y);
   double phi = std::acos(-x / tube);
@@ -207,3 +202,13 @@ std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping
 }
 
 }  // namespace povtrace::render
+
+namespace povtrace::render::patterns {
+
+double angle_around_y(double x, double z, double len) {
+  if (z == 0.0) return x > 0 ? 0.0 : M_PI;
+  const double theta = std::acos(x / len);
+  return z < 0.0 ? 2.0 * M_PI - theta : theta;
+}
+
+}  // namespace povtrace::render::patterns

@@ -8,6 +8,17 @@
 
 namespace povtrace::render::patterns {
 
+// The angle of (x, z) from +x towards +z, in [0, 2π), as POV-Ray's mappers and mapping warps take it: acos of
+// x / len, mirrored for negative z, exact on the axes (image_map.cpp).
+double angle_around_y(double x, double z, double len);
+// POV-Ray's table of 32768 random doubles in [0, 1) (its PatternRands and WarpRands), index taken modulo its size
+// (cell_patterns.cpp).
+double pattern_random(std::size_t index);
+
+// warp { planar | cylindrical | spherical | toroidal | cubic } and warp { black_hole } on a point (mapping_warps.cpp).
+Vec3 mapping_warp(Vec3 p, const MappingWarp& w);
+Vec3 black_hole_warp(Vec3 p, const BlackHoleWarp& w, int cell[3]);
+
 double checker(Vec3 p);
 double hexagon(Vec3 p);
 double brick(Vec3 p, Vec3 size, double mortar);

@@ -22,14 +22,18 @@ std::vector<PatternStep> steps_of(const Pigment& p) {
   const Matrix* outer = &p.world_from_pattern;
   for (auto it = p.warps.rbegin(); it != p.warps.rend(); ++it) {
     steps.push_back(step(*outer, it->turbulence));   // the transforms after this warp, then the warp
-    if (it->repeat) {
+    if (it->repeat || it->mapping || it->black_hole) {
       steps.back().turbulence.reset();
       steps.back().repeat = it->repeat;
+      steps.back().mapping = it->mapping;
+      steps.back().black_hole = it->black_hole;
     }
     outer = &it->before;
   }
   steps.push_back(step(*outer, std::nullopt));
-  std::erase_if(steps, [](const PatternStep& s) { return !s.transformed && !s.turbulence && !s.repeat; });
+  std::erase_if(steps, [](const PatternStep& s) {
+    return !s.transformed && !s.turbulence && !s.repeat && !s.mapping && !s.black_hole;
+  });
   return steps;
 }
 

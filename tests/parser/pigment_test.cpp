@@ -93,8 +93,10 @@ TEST(PigmentParse, Refusals) {
                 .bare_message().find("non-brick"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { average } }\n")
                 .bare_message().find("pigment_map"), std::string::npos);
-  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n")
-                .bare_message().find("unsupported: the warp 'black_hole'"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { cylindrical planar } } }\n")
+                .bare_message().find("closing the warp"), std::string::npos);
+  EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { bozo warp { planar x } } }\n")
+                .bare_message().find("expected"), std::string::npos);
   EXPECT_NE(parse_error("#version 3.7;\nsphere { 0, 1 pigment { gradient x pigment_map { [0 pavement] [1 rgb 1] } } }\n")
                 .bare_message().find("unsupported: the pigment item 'pavement'"), std::string::npos);
 }
@@ -188,5 +190,38 @@ TEST(PigmentParse, RepeatWarp) {
                             .what()).find("no axis specified"), std::string::npos);
 }
 
+}  // namespace
+}  // namespace povtrace::test
+
+namespace povtrace::test {
+namespace {
+// The mapping warps and black_hole as Parse_Warp reads them: orientation normalised by its reciprocal length,
+// planar's distance, and Check_BH_Parameters moving the centre up to the radius and growing the repeat vector.
+TEST(PigmentParse, MappingAndBlackHoleWarps) {
+  Messages m;
+  const SceneDescription s = parse(
+      "#version 3.7;\nsphere { 0, 1 pigment { bozo warp { planar x, 0.3 } warp { cylindrical orientation <0, 2, 0> "
+      "dist_exp 1 } warp { toroidal major_radius 2 } warp { black_hole <0, 0, 0>, 0.5 falloff 3 repeat <0.5, 0, 0> "
+      "turbulence <0.2, 0, 0> inverse } } }\n",
+      &m);
+  const Pigment& p = s.objects.at(0).texture->layers.back().pigment;
+  ASSERT_EQ(p.warps.size(), 4u);
+  ASSERT_TRUE(p.warps[0].mapping);
+  EXPECT_EQ(p.warps[0].mapping->kind, MappingWarpKind::planar);
+  EXPECT_EQ(p.warps[0].mapping->orientation, (Vec3{1, 0, 0}));
+  EXPECT_EQ(p.warps[0].mapping->offset, 0.3);
+  EXPECT_EQ(p.warps[1].mapping->orientation, (Vec3{0, 1, 0}));
+  EXPECT_EQ(p.warps[1].mapping->dist_exp, 1.0);
+  EXPECT_EQ(p.warps[2].mapping->major_radius, 2.0);
+  ASSERT_TRUE(p.warps[3].black_hole);
+  const BlackHoleWarp& h = *p.warps[3].black_hole;
+  EXPECT_EQ(h.centre.x, 0.5);            // moved up to the radius on the repeated axis
+  EXPECT_EQ(h.centre.y, 0.0);
+  EXPECT_EQ(h.repeat_vector.x, 1.2);     // grown to the far side plus the jitter
+  EXPECT_TRUE(h.inverse);
+  EXPECT_EQ(h.falloff, 3.0);
+  EXPECT_NE(m.joined().find("Black Hole repeat vector X too small; increased to 1.2"), std::string::npos)
+      << m.joined();
+}
 }  // namespace
 }  // namespace povtrace::test

@@ -39,17 +39,18 @@ TEST(StandardIncludeUse, ColoursAndFinishesAreUsable) {
   EXPECT_DOUBLE_EQ(layer.finish.roughness, 0.001);
 }
 
-TEST(StandardIncludeUse, UnrenderedPatternIsRefusedAtTheScenePosition) {
+// textures.inc's Tiles_Ptrn(): two repeat warps and a planar one (warp { planar z, 0 }), all rendered now.
+TEST(StandardIncludeUse, TilesPatternWithRepeatAndPlanarWarps) {
   if (!std::filesystem::is_directory(kStandardIncludeDir)) GTEST_SKIP() << "povray-includes is not installed";
-  try {
-    parse("#version 3.7;\n#include \"colors.inc\"\n#include \"textures.inc\"\n\nsphere { 0, 1 pigment { Tiles_Ptrn() } }\n");
-    FAIL() << "a pattern with repeat warps cannot be rendered yet and must be refused";
-  } catch (const ParseError& e) {
-    EXPECT_EQ(e.location().line, 5);
-    EXPECT_EQ(e.location().column, 1);
-    EXPECT_NE(e.bare_message().find("unsupported"), std::string::npos) << e.what();
-    EXPECT_NE(e.bare_message().find("textures.inc"), std::string::npos) << e.what();
-  }
+  const SceneDescription s =
+      parse("#version 3.7;\n#include \"colors.inc\"\n#include \"textures.inc\"\n\nsphere { 0, 1 pigment { Tiles_Ptrn() } }\n");
+  const Pigment& p = s.objects.at(0).texture->layers.back().pigment;
+  EXPECT_FALSE(p.unsupported);
+  ASSERT_EQ(p.warps.size(), 3u);
+  EXPECT_TRUE(p.warps[0].repeat);
+  EXPECT_TRUE(p.warps[1].repeat);
+  ASSERT_TRUE(p.warps[2].mapping);
+  EXPECT_EQ(p.warps[2].mapping->kind, MappingWarpKind::planar);
 }
 
 }  // namespace
