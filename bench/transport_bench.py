@@ -3,6 +3,7 @@
 
     python3 bench/transport_bench.py                   # the media set: every case, 320x240, 3 repetitions, 2 threads
     python3 bench/transport_bench.py --set photons     # the photon set
+    python3 bench/transport_bench.py --set benchmark   # POV-Ray's benchmark scene
     python3 bench/transport_bench.py --only micro mediasky --reps 1
     python3 bench/transport_bench.py --set photons --list
 
@@ -20,7 +21,7 @@ it. These media sample without randomness in POV-Ray (method 3 or 2 without jitt
 samples, so equal images mean equal error: the ratio is the speed at equal error. povtrace shoots POV-Ray's photons
 (its one-thread map): for sample scenes with several light × target units POV-Ray's +WT2 map is another draw, and
 the PSNR is then as far as POV-Ray's own +WT2 render is from its +WT1 one (reference/photons_random/). Results go to
-bench/results/media.{md,csv} or bench/results/photons.{md,csv}.
+bench/results/media.{md,csv}, bench/results/photons.{md,csv} or bench/results/benchmark.{md,csv}.
 """
 import argparse
 import csv
@@ -45,6 +46,9 @@ SETS["media"] = (SAMPLES, OWN, "Media")
 SETS["photons"] = (["lights/phot_met_glass", "lights/glassthing", "advanced/grenadine/grenadine"],
                    ["photons_refraction", "photons_reflection", "photons_area_light", "photons_count",
                     "photons_pass_through"], "Photons")
+# POV-Ray's built-in benchmark scene (`povray --benchmark` renders the same text): photons, scattering media, fog,
+# isosurfaces, julia fractals, text and a jittered area light, whose jitter makes POV-Ray's own renders differ.
+SETS["benchmark"] = (["advanced/benchmark/benchmark"], [], "Benchmark")
 
 
 def cases(scene_root, samples, own):
