@@ -88,8 +88,11 @@ void ObjectParser::parse_height_field_image(const Token& keyword, HeightField& h
   else unget(t);
   h.file_loc = peek().loc;
   const std::string name = parse_string();
-  if (type.empty() && lower_extension(name) != ".png") type = "'" + std::filesystem::path(name).extension().string() + "'";
-  if (!type.empty() && type != "png")
+  // PNG and JPEG files are read (the renderer tells them apart by their first bytes).
+  const std::string extension = lower_extension(name);
+  if (type.empty() && extension != ".png" && extension != ".jpg" && extension != ".jpeg")
+    type = "'" + std::filesystem::path(name).extension().string() + "'";
+  if (!type.empty() && type != "png" && type != "jpeg")
     taint(o.unsupported, UnsupportedFeature{"a height_field read from a " + type + " image", keyword.loc});
   h.file = locate_image_file(name, library_paths());
   while (true) {

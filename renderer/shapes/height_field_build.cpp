@@ -19,6 +19,7 @@
 
 #include "runtime/image_files.hpp"
 #include "renderer/located_error.hpp"
+#include "renderer/image/image.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/image/png_samples.hpp"
 #include "renderer/shapes/height_field.hpp"
@@ -117,10 +118,19 @@ std::vector<std::uint16_t> palette_heights(const HeightField& h, int& width, int
   return heights;
 }
 
+// A JPEG file (its first two bytes): POV-Ray reads it with libjpeg as an 8-bit RGB image, whose heights are those of
+// an 8-bit RGB PNG (image_height_at: red the high byte, green the low one).
+bool is_jpeg_file(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char head[2] = {};
+  return in.read(reinterpret_cast<char*>(head), 2) && head[0] == 0xFF && head[1] == 0xD8;
+}
+
 std::shared_ptr<HeightFieldData> read_height_field(const HeightField& h) {
   if (h.samples)   // function W, H { … }, sampled by the parser
     return height_field_data(*h.samples, h.samples_width, h.samples_depth, h.water_level, h.smooth);
-  const PngKind kind = png_kind(h.file, h.file_loc);
+  const bool jpeg = is_jpeg_file(h.file);
+  const PngKind kind = jpeg ? PngKind{8, 2} : png_kind(h.file, h.file_loc);
   if (kind.colour_type == 3) {
     int width = 0, height = 0;
     std::vector<std::uint16_t> heights = palette_heights(h, width, height);
@@ -133,7 +143,7 @@ std::shared_ptr<HeightFieldData> read_height_field(const HeightField& h) {
                                      "feature that povtrace does not render yet (grey, RGB and palette PNGs are read)");
   image::Image img;
   try {
-    img = image::read_png(h.file);
+    img = jpeg ? image::read_image(h.file) : image::read_png(h.file);
   } catch (const image::ImageError& e) {
     fail_at(h.file_loc, "cannot read the height_field image '" + h.file + "': " + e.what());
   }

@@ -12,6 +12,8 @@
 
 #include "geometry_kit.hpp"
 #include "scene/source.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/image/jpeg_io.hpp"
 #include "renderer/image/png_io.hpp"
 #include "renderer/shapes/height_field.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
@@ -206,6 +208,42 @@ TEST(HeightField, PalettePngHeightsAreTheIndicesTimes256) {
   EXPECT_EQ(f.height(11, 9), 255 * 256);
   EXPECT_EQ(f.height(12, 8), 253 * 256);
   EXPECT_EQ(f.height(23, 17), 40 * 256);
+}
+
+// A JPEG: POV-Ray reads it as an 8-bit RGB image, the height (r·256 + g)·255 of the decoded red and green, as for
+// an 8-bit RGB PNG (image_height_at). The file is one povtrace writes; its decoded bytes give the expected heights.
+TEST(HeightField, JpegHeightsAreRedHighGreenLow) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "povtrace_hf_jpeg_test";
+  std::filesystem::create_directories(dir);
+  image::Image img(8, 6);
+  img.encoding = image::Encoding::encoded;
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) {
+      float* px = &img.rgba[(static_cast<std::size_t>(y) * 8 + x) * 4];
+      px[0] = static_cast<float>(x) / 8.0f;
+      px[1] = static_cast<float>(y) / 6.0f;
+      px[2] = 0.5f;
+      px[3] = 1.0f;
+    }
+  image::EncodeOptions options;
+  options.format = image::FileFormat::jpeg;
+  options.jpeg_quality = 100;
+  const std::string bytes = image::encode_image(img, options);
+  const std::filesystem::path file = dir / "heights.jpg";
+  std::ofstream(file, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const image::Image decoded = image::decode_jpeg(bytes);
+  HeightField h;
+  h.file = file.string();
+  const Primitive p = make_height_field(h, Matrix::identity());
+  const auto& f = static_cast<const HeightFieldData&>(*p.data);
+  ASSERT_EQ(f.width, 8);
+  ASSERT_EQ(f.depth, 6);
+  for (int z = 0; z < 6; ++z)
+    for (int x = 0; x < 8; ++x) {
+      const float* px = decoded.pixel(x, 5 - z);   // sample (x, z) is image pixel (x, 5 - z)
+      EXPECT_EQ(f.height(x, z), static_cast<std::uint16_t>((px[0] * 256.0 + px[1]) * 255.0)) << x << "," << z;
+    }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
