@@ -66,18 +66,20 @@ class MaterialTable {
     const Key key{o.texture.get(), o.uv_mapping};
     // An object with an interior or photon flags of its own gets a material of its own.
     const std::uint32_t target = photon_target_of(o);
-    const bool shareable =
-        !o.interior && !o.interior_texture && o.photons == ObjectPhotons{} && target == kNoPhotonTarget;
+    const bool shareable = !o.interior && !o.interior_texture && o.photons == ObjectPhotons{} &&
+                           target == kNoPhotonTarget && o.light_groups.empty() && !o.no_global_lights;
     auto found = shareable ? shared_.find(key) : shared_.end();
     if (found != shared_.end()) return found->second;
     materials_.push_back(make_material(*o.texture, o.interior, o.uv_mapping, images_, quick_colours_));
     materials_.back().photons = o.photons;
     materials_.back().photon_target = target;
+    set_lights(materials_.back(), o);
     if (o.interior_texture) {
       // POV-Ray's opaque flag needs both textures opaque (Post_Process): a shadow ray may leave through the inside.
       Material inside = make_material(*o.interior_texture, o.interior, o.uv_mapping, images_, quick_colours_);
       inside.photons = o.photons;
       inside.photon_target = target;
+      set_lights(inside, o);
       materials_.back().opaque = materials_.back().opaque && inside.opaque;
       materials_.back().interior_material = static_cast<std::uint32_t>(materials_.size());
       materials_.push_back(std::move(inside));
@@ -94,11 +96,16 @@ class MaterialTable {
       materials_.push_back(make_material(*t, o.interior, o.uv_mapping, images_, quick_colours_));
       materials_.back().photons = o.photons;
       materials_.back().photon_target = photon_target_of(o);
+      set_lights(materials_.back(), o);
     }
     return first;
   }
 
  private:
+  static void set_lights(Material& m, const Object& o) {
+    m.global_lights = !o.no_global_lights;
+    m.light_groups = o.light_groups;
+  }
   std::uint32_t photon_target_of(const Object& o) const {
     if (!photon_groups_) return kNoPhotonTarget;
     const auto it = photon_groups_->group_of.find(&o);

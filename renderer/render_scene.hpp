@@ -170,6 +170,10 @@ struct Material {
   // The object's interior_texture as a material of its own (index into RenderScene::materials), shading the hits
   // seen from inside (Tracer::materials_facing); none: ~0u. `opaque` above is then true only if both are.
   std::uint32_t interior_material = ~0u;
+  // Which lights light the object (POV-Ray's ComputeDiffuseLight): the scene's unless `no_global_lights`, then those
+  // of its light groups (RenderLight::light.group), innermost group first.
+  bool global_lights = true;
+  std::vector<int> light_groups;
 };
 inline constexpr std::uint32_t kNoPhotonTarget = ~0u;
 

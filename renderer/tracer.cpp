@@ -389,8 +389,7 @@ Radiance Tracer::shade_layers_as(const Ray& ray, const ShadingPoint& sp, const R
       reflections_.push_back(PendingReflection{amount, w, layer.reflection_exponent_inverse, normal, &layer.finish});
     }
     Rgb lit = model_ == ShadingModel::povray
-                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state,
-                                                sp.hit.leaf->double_illuminate)
+                  ? lit_layer_povray<Radiosity>(layer, s, point, normal, ray.direction, state, sp.hit)
                   : lit_layer_textbook(layer, s, point, normal, ray.direction, state);
     if constexpr (Radiosity)
       if (radiosity) lit += radiosity_layer(layer, s, filter, sp, normal, weight, state, ambient);
@@ -718,7 +717,9 @@ void Tracer::add_next_crossing_of(std::uint32_t primitive, const Ray& ray, doubl
 }
 
 Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state) {
-  std::uint32_t& cached = shadow_cache_slot(l);
+  // POV-Ray caches no occluder for a light_group's lights.
+  std::uint32_t uncached = kNoOccluder;
+  std::uint32_t& cached = l.light.group < 0 ? shadow_cache_slot(l) : uncached;
   if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, distance)) return {0, 0, 0};
   if (scene_.specialisation.nearest_shadow_first) {
     // The walk below starts at the nearest crossing and ends there when it is opaque (ties between primitives go
@@ -849,7 +850,8 @@ Rgb Tracer::one_light(const RenderLayer& layer, Rgb pigment, double att, Vec3 po
 // brilliance, Phong and Blinn highlights (not scaled by opacity), metallic tint, back-side diffuse.
 template <bool Radiosity>
 Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 point, Vec3 normal, Vec3 view,
-                             const RayState& state, bool double_illuminate) {
+                             const RayState& state, const SurfaceHit& hit) {
+  const bool double_illuminate = hit.leaf->double_illuminate;
   const Finish& fin = layer.finish;
   const Rgb pigment{s.r, s.g, s.b};
   const double att = scene_.language_version >= 370 ? 1.0 - s.f - s.t
@@ -865,10 +867,13 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
   bool highlights = layer.has_highlights;
   if constexpr (Radiosity) highlights = highlights && state.radiosity_depth == 0;
 
-  for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+  // The scene's lights, unless the object is in a light_group without global_lights, then its groups' lights, innermost
+  // group first (POV-Ray's ComputeDiffuseLight: the global list, then the object's LLights).
+  const Material& lit = scene_.materials[hit.leaf->material];
+  const auto one = [&](std::size_t li) {
     const RenderLight& l = scene_.lights[li];
     const std::optional<LightRay> seen = light_at(l, point);
-    if (!seen) continue;
+    if (!seen) return;
     auto [lc, to_light, distance] = *seen;
     const double c = dot(normal, to_light);
     // crand: POV-Ray lowers each diffuse term by a uniform random amount in [0, crand] drawn from a per-thread
@@ -876,14 +881,20 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     // has the same distribution and the same image comes out whatever the threads.
     const double speckle = fin.crand > 0 ? fin.crand * speckle_random(point, li) : 0.0;
     const bool behind = c < tolerance::epsilon && !double_illuminate;
-    if (behind && fin.diffuse_back == 0) continue;   // a light behind the surface gives nothing at all
+    if (behind && fin.diffuse_back == 0) return;   // a light behind the surface gives nothing at all
     if (!l.light.shadowless) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
-      if (near_zero(lc)) continue;
+      if (near_zero(lc)) return;
     }
     out += one_light(layer, pigment, att, point, normal, view, lc, to_light, c, speckle,
                      highlights && !l.light.shadowless, double_illuminate);   // fill lights give no highlights
-  }
+  };
+  if (lit.global_lights)
+    for (std::size_t li = 0; li < scene_.lights.size(); ++li)
+      if (scene_.lights[li].light.group < 0) one(li);
+  for (const int group : lit.light_groups)
+    for (std::size_t li = 0; li < scene_.lights.size(); ++li)
+      if (scene_.lights[li].light.group == group) one(li);
   return out;
 }
 

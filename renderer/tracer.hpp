@@ -186,7 +186,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   radiosity::SampleRayResult trace_sample(Vec3 origin, Vec3 direction, const radiosity::SampleRayParams& p) override;
   template <bool Radiosity>   // the scene has radiosity: sample rays get no highlights
   Rgb lit_layer_povray(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
-                       const RayState& state, bool double_illuminate);
+                       const RayState& state, const SurfaceHit& hit);
   Rgb lit_layer_textbook(const RenderLayer& layer, const Colour& pigment, Vec3 point, Vec3 normal, Vec3 view,
                          const RayState& state);
   // Light reaching a point from one light before shadowing.

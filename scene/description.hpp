@@ -456,6 +456,9 @@ struct Csg {
   // POV-Ray's INVERTED_FLAG on the CSG node, toggled by each inversion (which also turns the kind and the children):
   // an intersection leaves inverted children out of its bounding box (CSG::Compute_BBox).
   bool inverted = false;
+  // light_group { objects… light_source { }… [global_lights B] }: a union whose lights light only its objects (and
+  // not at all without objects); the parser gives each placed group its id (Light::group, Object::light_groups).
+  bool light_group = false;
 };
 
 // The quadric-like shapes, as written (POV-Ray's canonical transforms are the renderer's business). The parser has
@@ -604,6 +607,11 @@ struct Object {
   // double_illuminate [bool]: lights on the far side of the surface light it too (POV-Ray skips its
   // light-behind-the-surface test, DOUBLE_ILLUMINATE_FLAG). Set on a CSG, it is set on the whole tree.
   bool double_illuminate = false;
+  // The light groups whose lights light this object (POV-Ray's LLights: its own group's, and those of groups around it
+  // unless a nearer group has lights and objects of its own), and whether the scene's
+  // lights do too (a light_group's `global_lights`, off by default, set on every object of the group).
+  std::vector<int> light_groups;
+  bool no_global_lights = false;
   bool inverse = false;                     // leaves only: inverting a CSG inverts its children (De Morgan)
   bool no_shadow = false;
   // no_image [bool], no_reflection [bool] (POV-Ray's NO_IMAGE_FLAG, NO_REFLECTION_FLAG): the object is left out by
@@ -719,6 +727,8 @@ struct Light {
   // looks_like { object }: an object placed at the light (moved with it), casting no shadow; the parser places it in
   // the scene next to the light. At most one.
   std::vector<Object> looks_like;
+  // The light_group this light belongs to (it lights only that group's objects), or -1 for a scene light.
+  int group = -1;
   SourceLoc loc;
   Unsupported unsupported;
 };

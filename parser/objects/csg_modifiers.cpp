@@ -51,6 +51,55 @@ void ObjectParser::set_double_illuminate(Object& object, bool on) {
     for (auto& child : csg->children) set_double_illuminate(child, on);
 }
 
+// light_group { objects and light_source { }s  transforms  [global_lights [B]]  [photons { … }] } (POV-Ray's
+// Parse_Light_Group): a union whose lights are no scene lights; only its objects see them, and the scene's lights only
+// with `global_lights` (set on every object of the group when the group ends, Set_CSG_Children_Flag). The group ids
+// are given when the group is placed (SceneStatements::assign_light_groups).
+Object ObjectParser::parse_light_group(const Token& keyword) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'light_group'");
+  Object o;
+  o.loc = keyword.loc;
+  Csg csg;
+  csg.kind = CsgKind::union_;
+  csg.light_group = true;
+  Token t = next();
+  while (auto item = try_parse_item(t)) {
+    if (auto* light = std::get_if<Light>(&*item)) csg.lights.push_back(std::move(*light));
+    else csg.children.push_back(std::move(std::get<Object>(*item)));
+    t = next();
+  }
+  o.shape = std::move(csg);
+  extents().made(o);
+  bool global_lights = false;
+  for (;; t = next()) {
+    Matrix m;
+    if (t.is("}")) break;
+    if (textures_.try_transform(t, m)) {
+      apply_transform(o, m, t.is("translate") ? TransformKind::translate
+                            : t.is("rotate")  ? TransformKind::rotate
+                            : t.is("scale")   ? TransformKind::scale
+                                              : TransformKind::other);
+    } else if (t.is("global_lights")) {
+      global_lights = optional_float(1.0) > 0.5;
+    } else if (t.is("photons")) {
+      parse_object_photons(t, o);
+    } else {
+      fail_expected(t, "an object, a light_source, a transform, global_lights, photons or '}' in light_group");
+    }
+  }
+  set_no_global_lights(o, !global_lights);
+  extents().modifiers_ended(o);
+  return o;
+}
+
+// Set_CSG_Children_Flag: the objects of a CSG tree (not the CSG nodes in it) take the flag.
+void ObjectParser::set_no_global_lights(Object& object, bool no_global) {
+  object.no_global_lights = no_global;
+  if (auto* csg = std::get_if<Csg>(&object.shape))
+    for (auto& child : csg->children) set_no_global_lights(child, no_global);
+}
+
 std::vector<Object> ObjectParser::parse_bound_clip_objects(const Token& keyword) {
   std::vector<Object> objects;
   Token t = next();

@@ -124,6 +124,8 @@ class ObjectParser : ParserPart {
   // ---- inverse, clipped_by, bounded_by (csg_modifiers.cpp) ----
   static void invert_object(Object& object);                  // De Morgan for CSG (§10)
   static void set_double_illuminate(Object& object, bool on);
+  Object parse_light_group(const Token& keyword);
+  static void set_no_global_lights(Object& object, bool no_global);
   void parse_clip_or_bound(const Token& keyword, Object& object);
   void parse_object_photons(const Token& keyword, Object& object);   // object_photons.cpp
   std::vector<Object> parse_bound_clip_objects(const Token& keyword);

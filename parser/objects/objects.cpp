@@ -378,10 +378,11 @@ std::optional<SceneItem> ObjectParser::try_parse_item(const Token& t) {
   if (k == "sor") return parse_sor(t);
   if (k == "isosurface") return parse_isosurface(t);
   if (k == "julia_fractal") return parse_julia_fractal(t);
+  if (k == "light_group") return parse_light_group(t);
   if (k == "bicubic_patch") return parse_bicubic_patch(t);
   static const std::string_view shapes[] = {
       "sphere_sweep", "parametric", "ovus", "lemon",
-      "light_group", "polynomial"};
+      "polynomial"};
   for (auto s : shapes)
     if (k == s) {
       Object o;

@@ -299,6 +299,31 @@ void SceneStatements::placed(Object& object) {
   clear_notes(object);
 }
 
+// Promote_Local_Lights for each light_group in a placed object, innermost first: its lights get the group's id, and
+// when it has both lights and objects every object of it (nested ones included) is lit by them, after the lights of
+// the groups inside it. Each placement of a declared group is a group of its own.
+void SceneStatements::assign_light_groups(Object& object) {
+  auto* csg = std::get_if<Csg>(&object.shape);
+  if (!csg) return;
+  for (Object& child : csg->children) assign_light_groups(child);
+  if (!csg->light_group) return;
+  const int id = next_light_group_++;
+  for (Light& light : csg->lights) light.group = id;
+  if (csg->lights.empty() || csg->children.empty()) return;
+  // Promote_Local_Lights_Recursive: a group inside that lights its own objects keeps them to its lights (the outer
+  // lights join only its own node's list, which no ray sees); other CSG pass the lights down.
+  struct Promote {
+    int id;
+    void operator()(Object& o) const {
+      o.light_groups.push_back(id);
+      auto* c = std::get_if<Csg>(&o.shape);
+      if (!c || (c->light_group && !c->lights.empty() && !c->children.empty())) return;
+      for (Object& child : c->children) (*this)(child);
+    }
+  };
+  for (Object& child : csg->children) Promote{id}(child);
+}
+
 // Post_Process when a finished top-level object is placed (§10 "Texture inheritance"): CSG children without a
 // texture or interior take the parent's (the same texture, so it moves with the parent), the parent's no_shadow,
 // no_image, no_reflection and no_radiosity are forced onto them, lights inside CSG join the scene's lights, and anything still untextured gets the
@@ -393,6 +418,7 @@ void SceneStatements::place_object(Object&& object, const SourceLoc& at) {
   unsupported_.refuse_if_unsupported(first_unsupported(object), at, "object");
   objects_.remove_unnecessary_bounds(object);
   settle_deferred_texture_transforms(object, notes_pool());
+  assign_light_groups(object);
   post_process(object);
   if (const Normal* n = first_untyped_normal(object)) fail(n->loc, "no normal type given (as in POV-Ray)");
   set_placed_boxes(object, extents());   // the renderer culls the object's rays with them (csg_build.cpp)

@@ -76,6 +76,7 @@ class SceneStatements : ParserPart {
   void parse_background(const Token& keyword);
   void add_light(Light light, std::optional<double> importance);   // importance: the CSG parent's, if any
   void post_process(Object& object);
+  void assign_light_groups(Object& object);
   void placed(Object& object);   // the last step before the object joins scene_.objects
   std::string reached_from() const;
 
@@ -92,6 +93,7 @@ class SceneStatements : ParserPart {
   SceneDescription scene_;
   Texture default_texture_;
   std::shared_ptr<const Texture> placed_default_texture_;   // shared by untextured objects until #default changes
+  int next_light_group_ = 0;   // the id the next light_group placed gets (Light::group)
   bool camera_seen_ = false;
   bool statement_seen_ = false;
   // The scene's noise generator as functions see it when they run (POV-Ray's f_noise3d reads the scene's current

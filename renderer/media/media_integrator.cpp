@@ -98,7 +98,8 @@ std::vector<LightSpan> light_spans(const MediaSegment& seg, const std::vector<Re
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const RenderLight& l = lights[i];
     // POV-Ray's shadowless lights are FILL_LIGHT_SOURCE, which its beam test knows nothing of: they light no media.
-    if (!l.light.media_interaction || l.light.shadowless) continue;
+    // A light_group's lights are not among the scene's lights that media see.
+    if (!l.light.media_interaction || l.light.shadowless || l.light.group >= 0) continue;
     double t1 = 0.0, t2 = seg.depth;
     bool insert = true;
     if (l.light.cylinder || l.light.spotlight) {

@@ -98,7 +98,7 @@ bool shoots(const Light& light, const ObjectPhotons& target) {
 double estimated_photons(const RenderScene& scene, double spacing) {
   double total = 0;
   for (const RenderLight& l : scene.lights) {
-    if (l.light.shadowless) continue;
+    if (l.light.shadowless || l.light.group >= 0) continue;   // a light_group's lights shoot no photons
     for (const PhotonTarget& t : scene.photon_targets) {
       if (!shoots(l.light, t.flags) || !t.bounded) continue;
       const Light& light = l.light;
@@ -365,7 +365,7 @@ std::shared_ptr<const PhotonMap> shoot_photons(const RenderScene& scene, int qua
   std::size_t random_index = 0;   // POV-Ray's one shooting thread: one generator for every unit
   bool warned_cylinder = false;
   for (const RenderLight& l : scene.lights) {
-    if (l.light.shadowless) continue;   // fill lights shoot no photons
+    if (l.light.shadowless || l.light.group >= 0) continue;   // fill lights and a light_group's lights shoot none
     if (l.light.cylinder && !l.light.parallel && !warned_cylinder) {
       warnings.push_back("photons: cylinder lights should be parallel when used with photons (as POV-Ray warns)");
       warned_cylinder = true;

@@ -298,3 +298,43 @@ TEST(DoubleIlluminate, SetThroughTheCsgTree) {
   EXPECT_TRUE(s.objects.at(2).double_illuminate);
   for (const Object& o : s.objects) EXPECT_FALSE(o.unsupported);
 }
+
+// light_group (Parse_Light_Group, Promote_Local_Lights): its lights are no scene lights, its objects see them and
+// (with global_lights) the scene's; a nested group with lights and objects keeps its objects to its own lights; each
+// placement of a declared group is a group of its own.
+TEST(LightGroup, LightsAndObjectsOfEachGroup) {
+  const SceneDescription s = scene(
+      "light_source { <0, 9, 0> rgb 1 }\n"
+      "#declare G = light_group { sphere { 0, 1 } light_source { <0, 5, 0> rgb 1 }\n"
+      "  light_group { box { -1, 1 } light_source { x, rgb 1 } } translate x }\n"
+      "object { G }\nobject { G }\n"
+      "light_group { sphere { 0, 1 } light_source { y, rgb 1 } global_lights on }\n");
+  ASSERT_EQ(s.lights.size(), 6u);   // the scene light, two per copy of G, one in the last group
+  EXPECT_EQ(s.lights[0].group, -1);
+  const Object& first = s.objects.at(0);
+  const Csg& g = csg_of(first);
+  EXPECT_TRUE(g.light_group);
+  ASSERT_EQ(g.children.size(), 2u);
+  const Object& sphere = g.children[0];
+  const Object& box = csg_of(g.children[1]).children.at(0);
+  EXPECT_TRUE(sphere.no_global_lights);
+  EXPECT_TRUE(box.no_global_lights);
+  ASSERT_EQ(sphere.light_groups.size(), 1u);
+  ASSERT_EQ(box.light_groups.size(), 1u);   // the inner group's lights only
+  EXPECT_NE(sphere.light_groups[0], box.light_groups[0]);
+  // the second copy's groups are other groups
+  const Object& second_sphere = csg_of(s.objects.at(1)).children.at(0);
+  ASSERT_EQ(second_sphere.light_groups.size(), 1u);
+  EXPECT_NE(second_sphere.light_groups[0], sphere.light_groups[0]);
+  // lights moved with the group, tagged with its id
+  int tagged = 0;
+  for (const Light& l : s.lights)
+    if (l.group == sphere.light_groups[0]) {
+      ++tagged;
+      EXPECT_EQ(l.location, (Vec3{1, 5, 0}));
+    }
+  EXPECT_EQ(tagged, 1);
+  const Object& lit = csg_of(s.objects.at(2)).children.at(0);
+  EXPECT_FALSE(lit.no_global_lights);
+  EXPECT_EQ(lit.light_groups.size(), 1u);
+}
