@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <variant>
 
 #include "parser/parse_scene.hpp"
 #include "renderer/object_geometry.hpp"
@@ -30,14 +31,32 @@ const povtrace::ParseOptions& fuzz_options() {
   return options;
 }
 
-// Keeps each input's render cheap (legal but slow settings are not what this target looks for): a shallow trace
-// and small area-light grids.
+// Julia fractals march in steps of 1/precision with max_iteration iterations each, and a bicubic patch makes
+// 2^(u_steps + v_steps) pieces: both kept small here, in every object of the tree.
+void bound_shapes(povtrace::Object& o) {
+  if (auto* j = std::get_if<povtrace::JuliaFractal>(&o.shape)) {
+    j->max_iteration = std::min(j->max_iteration, 30);
+    j->precision = std::max(j->precision, 1.0 / 100.0);
+  }
+  if (auto* b = std::get_if<povtrace::BicubicPatch>(&o.shape)) {
+    b->u_steps = std::min(b->u_steps, 4);
+    b->v_steps = std::min(b->v_steps, 4);
+  }
+  if (auto* csg = std::get_if<povtrace::Csg>(&o.shape))
+    for (povtrace::Object& child : csg->children) bound_shapes(child);
+  for (auto* list : {&o.clipped_by, &o.bounded_by})
+    for (povtrace::Object& inner : *list) bound_shapes(inner);
+}
+
+// Keeps each input's render cheap (legal but slow settings are not what this target looks for): a shallow trace,
+// small area-light grids, and small julia fractal and bicubic patch settings.
 void bound_the_work(povtrace::SceneDescription& scene) {
   scene.settings.max_trace_level = std::min(scene.settings.max_trace_level, 5);
   for (povtrace::Light& l : scene.lights) {
     l.size1 = std::min(l.size1, 4);
     l.size2 = std::min(l.size2, 4);
   }
+  for (povtrace::Object& o : scene.objects) bound_shapes(o);
 }
 }  // namespace
 
