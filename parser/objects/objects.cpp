@@ -20,6 +20,16 @@ TextureLayer& own_top_layer(Object& object, const Texture& defaults, const Notes
   object.texture = tex;
   return tex->layers.back();
 }
+// POV-Ray's Link_Textures: the new block's layers on top of those `target` has (or the block itself when none).
+void link_layers(std::shared_ptr<const Texture>& target, std::shared_ptr<const Texture> added) {
+  if (!target) {
+    target = std::move(added);
+    return;
+  }
+  auto layered = std::make_shared<Texture>(*target);
+  for (const auto& l : added->layers) layered->layers.push_back(l);
+  target = std::move(layered);
+}
 }  // namespace
 
 // A transform moves the object and what is attached to it (scene/description_transforms.cpp), and the parser's notes
@@ -45,27 +55,16 @@ bool ObjectParser::try_object_modifier(const Token& t, Object& object) {
     // stack as layers; the last written is the top (§11, pipeline §2 "Layers"). Patterned textures take no part in
     // layering (POV-Ray's Link_Textures).
     textures_.refuse_layering(t, object.texture.get(), tex->patterned());
-    if (object.texture) {
-      apply_deferred_texture_transforms(object, notes_pool());   // the layers below were moved by them, the new ones are not
-      auto layered = std::make_shared<Texture>(*object.texture);
-      for (const auto& l : tex->layers) layered->layers.push_back(l);
-      object.texture = std::move(layered);
-    } else {
-      object.texture = std::move(tex);
-    }
+    // the layers below were moved by the deferred transforms, the new ones are not
+    if (object.texture) apply_deferred_texture_transforms(object, notes_pool());
+    link_layers(object.texture, std::move(tex));
     return true;
   }
   if (k == "interior_texture") {
     // Layers stack on the interior texture as texture blocks do on the texture (POV-Ray's Link_Textures).
     auto tex = textures_.parse_texture_block(t);
     textures_.refuse_layering(t, object.interior_texture.get(), tex->patterned());
-    if (object.interior_texture) {
-      auto layered = std::make_shared<Texture>(*object.interior_texture);
-      for (const auto& l : tex->layers) layered->layers.push_back(l);
-      object.interior_texture = std::move(layered);
-    } else {
-      object.interior_texture = std::move(tex);
-    }
+    link_layers(object.interior_texture, std::move(tex));
     return true;
   }
   if (k == "double_illuminate") {
