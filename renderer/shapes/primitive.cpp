@@ -28,9 +28,8 @@ double Bounds::surface_area() const {
 }
 
 Vec3 hit_point(const Ray& ray, const SurfaceHit& hit) {
-  if (hit.leaf->type == ShapeType::julia_fractal) [[unlikely]]
-    return shapes::JuliaFractalShape::hit_point(hit);
-  return ray.origin + ray.direction * hit.t;
+  return shapes::visit_shape(hit.leaf->type,
+                             [&]<class S>(std::type_identity<S>) { return shapes::hit_point_of<S>(ray, hit); });
 }
 
 Primitive placed_primitive(ShapeType type, const Matrix& world_from_object) {

@@ -3,7 +3,8 @@
 // out (a shape declares only the operations it has; see any renderer/shapes/<shape>.hpp):
 // - hits: intersect (at most Intersections::capacity depth-sorted roots), or roots (any number, many_roots.hpp),
 //   or collect + nearest (CSG, text, meshes);
-// - normal, and hit_normal where the hit (its element, u, v) decides the normal;
+// - normal, and hit_normal where the hit (its element, u, v) decides the normal; hit_point where the depth does not
+//   give the hit's point back;
 // - inside (false without: triangles and polygons are never inside, inverse or not, as in POV-Ray);
 // - object_bounds (carried to world here) or world_bounds; uv (else the world point's x and y);
 // - build from the description (else the description is built elsewhere: CSG in renderer/csg_build.cpp).
@@ -59,6 +60,8 @@ concept HasCollect = requires(const Primitive& p, const Ray& r, HitBuffer& out) 
 };
 template <class S>
 concept HasHitNormal = requires(const SurfaceHit& h, Vec3 w) { { S::hit_normal(h, w) } -> std::same_as<Vec3>; };
+template <class S>
+concept HasHitPoint = requires(const SurfaceHit& h) { { S::hit_point(h) } -> std::same_as<Vec3>; };
 template <class S>
 concept HasInside = requires(const Primitive& p, Vec3 w) { { S::inside(p, w) } -> std::same_as<bool>; };
 template <class S>
@@ -126,6 +129,14 @@ template <class S>
 Vec3 hit_normal_of(const SurfaceHit& hit, Vec3 world_point) {
   if constexpr (HasHitNormal<S>) return S::hit_normal(hit, world_point);
   else return S::normal(*hit.leaf, world_point);
+}
+
+// The hit's world point: the shape's own where its depth does not give it back (a julia_fractal's march), else
+// where the ray is at that depth.
+template <class S>
+Vec3 hit_point_of(const Ray& ray, const SurfaceHit& hit) {
+  if constexpr (HasHitPoint<S>) return S::hit_point(hit);
+  else return ray.origin + ray.direction * hit.t;
 }
 
 template <class S>
