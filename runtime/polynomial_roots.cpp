@@ -1,4 +1,4 @@
-// Real roots of polynomials up to degree 6 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
+// Real roots of polynomials up to degree 35 (see polynomial_roots.hpp for the contract and the POV-Ray rules kept).
 #include "runtime/polynomial_roots.hpp"
 
 #include <algorithm>
@@ -12,14 +12,6 @@ namespace povtrace::poly {
 namespace {
 constexpr double kSmallEnough = 1e-10;        // POV-Ray's SMALL_ENOUGH: a coefficient this small is zero
 constexpr double kDifficultSpread = 1e12;      // POV-Ray's FUDGE_FACTOR1: coefficient spread that needs Sturm
-constexpr int kMaxIterations = 100;
-
-// Value of the polynomial (highest degree first) at t, by Horner's rule.
-double evaluate(int degree, const double* c, double t) {
-  double v = c[0];
-  for (int i = 1; i <= degree; ++i) v = v * t + c[i];
-  return v;
-}
 
 // Value and derivative together.
 void evaluate_with_slope(int degree, const double* c, double t, double& value, double& slope) {
@@ -48,146 +40,179 @@ double polish(int degree, const double* c, double t) {
   return t;
 }
 
-// ---- Sturm sequences ----
-struct Poly {
+// ---- Sturm sequences, as POV-Ray's polysolve computes them ----
+// POV-Ray's Sturm solver (polysolv.cpp: polysolve, buildsturm, modp, numchanges, sbisect, regula_falsa) stops
+// refining a root when the polynomial's value there is small, |p(t)/t| < 1e-12, not when the root is known to
+// rounding; on a flat polynomial (a poly of order 5 and up near a tangent, a blob's density) the root it returns is
+// off by far more than rounding, and a shadow ray from that point may find the surface again: speckles that are part
+// of POV-Ray's image. The arithmetic below is the same sequence of operations, so the same roots come out.
+constexpr int kSturmIterations = 50;            // POV-Ray's MAX_ITERATIONS for bisection and false position
+constexpr double kRelativeError = 1e-12;        // POV-Ray's RELERROR
+
+// A polynomial with its coefficients lowest power first (c[i] multiplies tⁱ), as POV-Ray stores the sequence: the
+// order of the operations decides the last bits of every value, so it is kept.
+template <int Capacity>
+struct AscendingPoly {
   int degree = 0;
-  std::array<double, max_degree + 1> c{};   // highest degree first
+  std::array<double, Capacity + 1> c;
 };
 
-// Remainder of a / b (b's leading coefficient non-zero), with coefficients below kSmallEnough dropped from the top.
-Poly remainder(const Poly& a, const Poly& b) {
-  std::array<double, max_degree + 1> r = a.c;
-  for (int shift = 0; shift <= a.degree - b.degree; ++shift) {
-    const double q = r[shift] / b.c[0];
-    for (int i = 0; i <= b.degree; ++i) r[shift + i] -= q * b.c[i];
+template <int Capacity>
+double value_at(const AscendingPoly<Capacity>& p, double t) {
+  double v = p.c[static_cast<std::size_t>(p.degree)];
+  for (int i = p.degree - 1; i >= 0; --i) v = v * t + p.c[static_cast<std::size_t>(i)];
+  return v;
+}
+
+// Remainder of u / v for v with leading coefficient ±1, into r; returns r's degree (0 for a constant). Quirk kept:
+// POV-Ray's remainder has the opposite sign when v's leading coefficient is −1 and the degrees differ by an even
+// number (its sign bookkeeping for that case is off by one step); that sign enters the Sturm counts.
+template <int Capacity>
+int remainder_into(const AscendingPoly<Capacity>& u, const AscendingPoly<Capacity>& v, AscendingPoly<Capacity>& r) {
+  r = u;
+  const int du = u.degree, dv = v.degree;
+  const bool negative_lead = v.c[static_cast<std::size_t>(dv)] < 0.0;
+  const double sign = negative_lead ? -1.0 : 1.0;   // dividing by the monic ±v
+  for (int k = du - dv; k >= 0; --k) {
+    const double q = r.c[static_cast<std::size_t>(dv + k)];
+    for (int j = dv + k - 1; j >= k; --j) r.c[static_cast<std::size_t>(j)] -= q * (sign * v.c[static_cast<std::size_t>(j - k)]);
   }
-  Poly out;
-  const int first = a.degree - b.degree + 1;   // remainder coefficients start here, degree < b.degree
-  int lead = first;
-  const int last = a.degree;
-  while (lead < last && std::abs(r[lead]) < kSmallEnough) ++lead;
-  out.degree = last - lead;
-  for (int i = 0; i <= out.degree; ++i) out.c[i] = r[lead + i];
-  if (out.degree == 0 && std::abs(out.c[0]) < kSmallEnough) out.c[0] = 0.0;
-  return out;
+  if (negative_lead && (du - dv) % 2 == 0)
+    for (int j = 0; j < dv; ++j) r.c[static_cast<std::size_t>(j)] = -r.c[static_cast<std::size_t>(j)];
+  int k = dv - 1;
+  while (k >= 0 && std::abs(r.c[static_cast<std::size_t>(k)]) < kSmallEnough) r.c[static_cast<std::size_t>(k--)] = 0.0;
+  r.degree = k < 0 ? 0 : k;
+  return r.degree;
 }
 
-// Scales p so that its leading coefficient has magnitude 1 (sign kept).
-void normalise(Poly& p) {
-  const double lead = std::abs(p.c[0]);
-  if (lead == 0.0) return;
-  for (int i = 0; i <= p.degree; ++i) p.c[i] /= lead;
-}
-
+template <int Capacity>
 struct SturmSequence {
-  std::array<Poly, max_degree + 1> p;
-  int count = 0;
+  std::array<AscendingPoly<Capacity>, Capacity + 1> p;
+  int last = 0;   // index of the final (constant) member
 
+  // c: degree + 1 coefficients, highest power first, c[0] != 0.
   SturmSequence(int degree, const double* c) {
-    Poly& p0 = p[0];
-    p0.degree = degree;
-    for (int i = 0; i <= degree; ++i) p0.c[i] = c[i];
-    normalise(p0);
-    Poly& p1 = p[1];
-    p1.degree = degree - 1;
-    for (int i = 0; i < degree; ++i) p1.c[i] = p0.c[i] * (degree - i);
-    normalise(p1);
-    count = 2;
-    while (p[count - 1].degree > 0 && count <= max_degree) {
-      Poly r = remainder(p[count - 2], p[count - 1]);
-      if (r.degree == 0 && r.c[0] == 0.0) break;   // p has repeated roots: the sequence ends at their gcd
-      for (int i = 0; i <= r.degree; ++i) r.c[i] = -r.c[i];
-      normalise(r);
-      p[count++] = r;
+    AscendingPoly<Capacity>& f = p[0];
+    f.degree = degree;
+    for (int i = 0; i <= degree; ++i) f.c[static_cast<std::size_t>(degree - i)] = c[i] / c[0];
+    // The derivative, scaled to a leading coefficient of magnitude 1.
+    AscendingPoly<Capacity>& d = p[1];
+    d.degree = degree - 1;
+    const double scale = std::abs(f.c[static_cast<std::size_t>(degree)] * degree);
+    for (int i = 1; i <= degree; ++i) d.c[static_cast<std::size_t>(i - 1)] = f.c[static_cast<std::size_t>(i)] * i / scale;
+    // Negated remainders, scaled likewise, until one is a constant; that one is only negated.
+    int k = 2;
+    while (remainder_into(p[static_cast<std::size_t>(k - 2)], p[static_cast<std::size_t>(k - 1)], p[static_cast<std::size_t>(k)]) != 0) {
+      AscendingPoly<Capacity>& r = p[static_cast<std::size_t>(k)];
+      const double lead = -std::abs(r.c[static_cast<std::size_t>(r.degree)]);
+      for (int i = r.degree; i >= 0; --i) r.c[static_cast<std::size_t>(i)] /= lead;
+      ++k;
     }
+    p[static_cast<std::size_t>(k)].c[0] = -p[static_cast<std::size_t>(k)].c[0];
+    last = k;
   }
 
-  // Sign changes of the sequence at t, counted as POV-Ray's numchanges does: an exact zero counts as a change with
-  // the member after it (so a root exactly at the lower end of a bracket is counted in it, and found there).
-  int sign_changes(double t) const {
-    int changes = 0;
-    double last = evaluate(p[0].degree, p[0].c.data(), t);
-    for (int k = 1; k < count; ++k) {
-      const double v = evaluate(p[k].degree, p[k].c.data(), t);
-      if (last == 0.0 || (v != 0.0 && (v < 0.0) != (last < 0.0))) ++changes;
-      last = v;
+  // Sign changes along the sequence of values `value(m)`; a zero counts as a change with the member after it.
+  template <class Value>
+  int changes(Value&& value) const {
+    int n = 0;
+    double previous = value(p[0]);
+    for (int k = 1; k <= last; ++k) {
+      const double v = value(p[static_cast<std::size_t>(k)]);
+      if (previous == 0.0 || previous * v < 0.0) ++n;
+      previous = v;
     }
-    return changes;
+    return n;
+  }
+  int sign_changes(double t) const {
+    return changes([t](const AscendingPoly<Capacity>& m) { return value_at(m, t); });
+  }
+  // Distinct roots in (0, ∞), from the constant and leading coefficients.
+  int positive_roots() const {
+    const int at_zero = changes([](const AscendingPoly<Capacity>& m) { return m.c[0]; });
+    const int at_infinity =
+        changes([](const AscendingPoly<Capacity>& m) { return m.c[static_cast<std::size_t>(m.degree)]; });
+    return at_zero - at_infinity;
   }
 };
 
-// The one distinct root in [lo, hi] (changes_lo − changes_hi = 1): Illinois false position while the ends bracket
-// a sign change, otherwise (an even-multiplicity root) bisection on the Sturm counts.
-double refine_single_root(const SturmSequence& s, double lo, double hi, int changes_lo) {
-  const Poly& f = s.p[0];
-  double f_lo = evaluate(f.degree, f.c.data(), lo), f_hi = evaluate(f.degree, f.c.data(), hi);
-  if (f_lo == 0.0) return lo;
-  if (f_hi == 0.0) return hi;
-  if ((f_lo < 0.0) != (f_hi < 0.0)) {
-    int side = 0;
-    for (int k = 0; k < kMaxIterations; ++k) {
-      const double t = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-      if (!(t > lo && t < hi)) break;   // no progress possible in this precision
-      const double v = evaluate(f.degree, f.c.data(), t);
-      if (v == 0.0) return t;
-      if ((v < 0.0) == (f_lo < 0.0)) {
-        lo = t;
-        f_lo = v;
-        if (side == -1) f_hi *= 0.5;   // Illinois: the same end kept twice, halve the other's weight
-        side = -1;
-      } else {
-        hi = t;
-        f_hi = v;
-        if (side == 1) f_lo *= 0.5;
-        side = 1;
-      }
-      if (hi - lo <= 1e-15 * std::max(1.0, std::abs(t))) break;
-    }
-    // False position can stall on a wide bracket whose far end is huge (a quartic's value at MAX_DISTANCE): each
-    // Illinois halving moves it only a little. POV-Ray then bisects (polysolv.cpp sbisect); so do we, on the sign.
-    for (int k = 0; k < 4 * kMaxIterations && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++k) {
-      const double mid = 0.5 * (lo + hi);
-      if (!(mid > lo && mid < hi)) break;
-      const double v = evaluate(f.degree, f.c.data(), mid);
-      if (v == 0.0) return mid;
-      if ((v < 0.0) == (f_lo < 0.0)) lo = mid, f_lo = v;
-      else hi = mid, f_hi = v;
-    }
-    return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
-  }
-  for (int k = 0; k < kMaxIterations && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++k) {
-    const double mid = 0.5 * (lo + hi);
-    if (s.sign_changes(mid) < changes_lo) hi = mid;
-    else lo = mid;
-  }
-  return 0.5 * (lo + hi);
+// POV-Ray's stopping rule for a refined root: a relative step (or, near 0, an absolute one) below 1e-12.
+bool small_relative_to(double size, double at) {
+  return std::abs(at) > kRelativeError ? std::abs(size / at) < kRelativeError : std::abs(size) < kRelativeError;
 }
 
-// Isolates the distinct roots in [lo, hi] by bisection on the sign-change counts, ascending.
-int isolate(const SturmSequence& s, double lo, double hi, int changes_lo, int changes_hi, double* roots, int depth) {
-  const int n = changes_lo - changes_hi;
-  if (n <= 0) return 0;
-  if (n == 1) {
-    roots[0] = refine_single_root(s, lo, hi, changes_lo);
-    return 1;
+// False position with POV-Ray's halving rule, on [a, b]; false when the ends do not bracket a sign change or 50
+// steps do not reach a small value.
+template <int Capacity>
+bool false_position(const AscendingPoly<Capacity>& f, double a, double b, double& root) {
+  double fa = value_at(f, a), fb = value_at(f, b);
+  if (fa * fb > 0.0) return false;
+  if (std::abs(fa) < kSmallEnough) return root = a, true;
+  if (std::abs(fb) < kSmallEnough) return root = b, true;
+  double previous = fa;
+  for (int its = 0; its < kSturmIterations; ++its) {
+    const double x = (fb * a - fa * b) / (fb - fa);
+    const double fx = value_at(f, x);
+    if (small_relative_to(fx, x)) return root = x, true;
+    const bool halve = previous * fx > 0.0;   // the same sign twice: weigh the kept end half as much
+    if ((fa < 0.0) == (fx < 0.0)) {
+      a = x;
+      fa = fx;
+      if (halve) fb /= 2;
+    } else {
+      b = x;
+      fb = fx;
+      if (halve) fa /= 2;
+    }
+    if (std::abs(b - a) < kRelativeError) return root = x, true;
+    previous = fx;
   }
-  const double mid = 0.5 * (lo + hi);
-  if (depth > 200 || !(mid > lo && mid < hi)) {   // roots closer than the precision: one root stands for them
-    roots[0] = mid;
-    return 1;
-  }
-  const int changes_mid = s.sign_changes(mid);
-  const int below = isolate(s, lo, mid, changes_lo, changes_mid, roots, depth + 1);
-  return below + isolate(s, mid, hi, changes_mid, changes_hi, roots + below, depth + 1);
+  return false;
 }
 
-// A quartic whose largest coefficient exceeds a non-zero one by more than 1e12 (POV-Ray's difficult_coeffs).
+// Roots in [lo, hi] holding changes_lo − changes_hi distinct ones: bisection on the counts until each is alone, then
+// false position, or bisection when that fails. 50 halvings at most per stage; what is left then stands for a root.
+template <int Capacity>
+int bisect(const SturmSequence<Capacity>& s, double lo, double hi, int changes_lo, int changes_hi, double* roots) {
+  const bool single = changes_lo - changes_hi == 1;
+  if (single && false_position(s.p[0], lo, hi, roots[0])) return 1;
+  double mid = lo;
+  for (int its = 0; its < kSturmIterations; ++its) {
+    mid = (lo + hi) / 2;
+    const int changes_mid = s.sign_changes(mid);
+    if (changes_mid < changes_hi || changes_mid > changes_lo) return 0;   // counts out of order: rounding
+    if (small_relative_to(hi - lo, mid)) return roots[0] = mid, 1;
+    const int below = changes_lo - changes_mid, above = changes_mid - changes_hi;
+    if (!single && below != 0 && above != 0) {
+      const int n = bisect(s, lo, mid, changes_lo, changes_mid, roots);
+      return n + bisect(s, mid, hi, changes_mid, changes_hi, roots + n);
+    }
+    if (below == 0) lo = mid;
+    else hi = mid;
+  }
+  roots[0] = mid;
+  return 1;
+}
+
+template <int Capacity>
+int sturm_roots(int degree, const double* c, double hi, double* roots) {
+  const SturmSequence<Capacity> s(degree, c);
+  if (s.positive_roots() == 0) return 0;
+  const int changes_lo = s.sign_changes(0.0), changes_hi = s.sign_changes(hi);
+  if (changes_lo == changes_hi) return 0;
+  return bisect(s, 0.0, hi, changes_lo, changes_hi, roots);
+}
+
+// A quartic with a coefficient more than 1e12 times smaller than "the biggest" (POV-Ray's difficult_coeffs). Quirk
+// kept: POV-Ray keeps the biggest with its sign and replaces it by every later coefficient larger in magnitude than
+// that signed value, so after a negative one the next coefficient always takes its place.
 bool difficult_coefficients(int degree, const double* c) {
   double biggest = 0.0;
-  for (int i = 0; i <= degree; ++i) biggest = std::max(biggest, std::abs(c[i]));
+  for (int i = 0; i <= degree; ++i)
+    if (std::abs(c[i]) > biggest) biggest = c[i];
   if (biggest == 0.0) return false;
   for (int i = 0; i <= degree; ++i)
-    if (c[i] != 0.0 && biggest / std::abs(c[i]) > kDifficultSpread) return true;
+    if (c[i] != 0.0 && std::abs(biggest / c[i]) > kDifficultSpread) return true;
   return false;
 }
 }  // namespace
@@ -285,10 +310,10 @@ int solve_quartic(const double c[5], double roots[4]) {
   return n;
 }
 
-int solve_sturm(int degree, const double* c, double lo, double hi, double* roots) {
-  if (degree < 1 || c[0] == 0.0) return 0;
-  const SturmSequence s(degree, c);
-  return isolate(s, lo, hi, s.sign_changes(lo), s.sign_changes(hi), roots, 0);
+int solve_sturm(int degree, const double* c, double hi, double* roots) {
+  if (degree < 1 || degree > max_sturm_degree || c[0] == 0.0) return 0;
+  return degree <= max_degree ? sturm_roots<max_degree>(degree, c, hi, roots)
+                              : sturm_roots<max_sturm_degree>(degree, c, hi, roots);
 }
 
 int solve_polynomial(int degree, const double* c, double* roots, bool sturm, double elimination_tolerance,
@@ -307,13 +332,13 @@ int solve_polynomial(int degree, const double* c, double* roots, bool sturm, dou
       return solve_quadratic(k, roots);
     case 3:
       if (eliminate) return solve_quadratic(k, roots);
-      return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
+      return sturm ? solve_sturm(3, k, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
     case 4:
-      if (eliminate) return sturm ? solve_sturm(3, k, 0.0, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
-      if (sturm || difficult_coefficients(4, k)) return solve_sturm(4, k, 0.0, sturm_limit, roots);
+      if (eliminate) return sturm ? solve_sturm(3, k, sturm_limit, roots) : solve_cubic_unpolished(k, roots);
+      if (sturm || difficult_coefficients(4, k)) return solve_sturm(4, k, sturm_limit, roots);
       return solve_quartic(k, roots);
     default:
-      return n > 4 ? solve_sturm(n, k, 0.0, sturm_limit, roots) : 0;
+      return n > 4 ? solve_sturm(n, k, sturm_limit, roots) : 0;
   }
 }
 

@@ -474,6 +474,10 @@ struct Poly {
   int order = 4;
   std::shared_ptr<const std::vector<double>> coefficients;
   bool sturm = false;
+  // The inverse of the object's transform as POV-Ray composes it (each transform's own inverse, multiplied in
+  // reverse order): far from the surface the ray's polynomial has huge coefficients whose last bits decide which
+  // roots the Sturm solver finds, so inverting the composed matrix instead would change pixels.
+  Matrix object_from_world{};
 };
 
 // quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0.
@@ -529,6 +533,10 @@ struct Isosurface {
   double max_gradient = 1.1;
   int max_trace = 1;
   bool open = false;
+  // evaluate P0, P1, P2: max_gradient adapts along each ray (lowered to G·P2 when above P0 at each root search,
+  // raised to g·P1² where a piece's slope g exceeds G / P1), starting from max_gradient at every ray.
+  bool evaluate = false;
+  std::array<double, 3> evaluate_params{0, 0, 0};
 };
 
 // julia_fractal { <c> [quaternion|hypercomplex] [FUNCTION] [max_iteration N] [precision P] [slice <S>, D] }: the 4-D

@@ -108,6 +108,7 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
     object.inverse = false;
     julia->object_from_world = povray_inverse(m, kind) * julia->object_from_world;
   }
+  if (auto* poly = std::get_if<Poly>(&object.shape)) poly->object_from_world = povray_inverse(m, kind) * poly->object_from_world;
   if (auto* sphere = std::get_if<Sphere>(&object.shape); sphere && !transform_keeps_sphere(kind, m))
     sphere->ellipsoid = true;
   if (auto* box = std::get_if<Box>(&object.shape)) {

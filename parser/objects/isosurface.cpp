@@ -8,9 +8,8 @@
 //   evaluate P0, P1, P2, open.
 // - Then: accuracy ≤ 0 becomes 0.001, max_gradient ≤ 0 becomes 1.1, max_trace above 10 becomes 10 and below 1
 //   becomes 1, each with a warning.
-// - `evaluate` makes POV-Ray adapt max_gradient while it renders, so each thread's pixel order shapes the image:
-//   refused by name. A function povtrace cannot evaluate (noise-based internal functions, patterns) is
-//   refused by name too.
+// - `evaluate P0, P1, P2` (any values, no checks) switches on the adaptive max_gradient (renderer/shapes/isosurface.cpp).
+// - A function povtrace cannot evaluate (noise-based internal functions, patterns) is refused by name.
 #include "runtime/function_value.hpp"
 #include "parser/expressions/int_cast.hpp"
 #include "parser/interpreter.hpp"
@@ -59,7 +58,7 @@ void ObjectParser::parse_isosurface_container(Isosurface& iso) {
   expect("}", " closing contained_by (a box or a sphere)");
 }
 
-bool ObjectParser::try_isosurface_item(const Token& t, Isosurface& iso, Object& o) {
+bool ObjectParser::try_isosurface_item(const Token& t, Isosurface& iso) {
   if (t.is("contained_by")) parse_isosurface_container(iso);
   else if (t.is("threshold")) iso.threshold = parse_float();
   else if (t.is("accuracy")) iso.accuracy = parse_float();
@@ -68,12 +67,11 @@ bool ObjectParser::try_isosurface_item(const Token& t, Isosurface& iso, Object& 
   else if (t.is("all_intersections")) iso.max_trace = kMaxTrace;
   else if (t.is("open")) iso.open = true;
   else if (t.is("evaluate")) {
+    iso.evaluate = true;
     for (int k = 0; k < 3; ++k) {
       if (k > 0) accept(",");
-      parse_float();
+      iso.evaluate_params[static_cast<std::size_t>(k)] = parse_float();
     }
-    taint(o.unsupported, UnsupportedFeature{"the isosurface item 'evaluate' (POV-Ray adapts max_gradient while "
-                                            "rendering, in each thread's pixel order)", t.loc});
   } else {
     return false;
   }
@@ -108,7 +106,7 @@ Object ObjectParser::parse_isosurface(const Token& keyword) {
   parse_isosurface_function(iso, o);
   while (true) {
     const Token t = next();
-    if (!try_isosurface_item(t, iso, o)) {
+    if (!try_isosurface_item(t, iso)) {
       unget(t);
       break;
     }

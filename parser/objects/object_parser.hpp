@@ -160,7 +160,7 @@ class ObjectParser : ParserPart {
   Object parse_isosurface(const Token& keyword);
   void parse_isosurface_function(Isosurface& iso, Object& o);
   void parse_isosurface_container(Isosurface& iso);
-  bool try_isosurface_item(const Token& t, Isosurface& iso, Object& o);
+  bool try_isosurface_item(const Token& t, Isosurface& iso);
   void correct_isosurface_values(const Token& keyword, Isosurface& iso);
   // ---- height_field (height_field.cpp) ----
   Object parse_height_field(const Token& keyword);

@@ -3,8 +3,6 @@
 // - `poly { N, <c…> }` reads the order first (2…35, else "Order of poly is out of range"); `cubic` and `quartic` are
 //   orders 3 and 4. Then exactly (N+1)(N+2)(N+3)/6 coefficients inside < >, commas optional.
 // - `sturm` is an object modifier (try_sturm_modifier).
-// povtrace renders orders 2 to 4 (what every sample scene and shapesq.inc use); a higher order parses and is refused
-// by name when the object reaches the scene.
 #include "parser/interpreter.hpp"
 #include "parser/objects/object_parser.hpp"
 
@@ -12,7 +10,6 @@ namespace povtrace::sdl {
 
 namespace {
 constexpr int kMaxPolyOrder = 35;       // POV-Ray's MAX_ORDER
-constexpr int kMaxRenderedOrder = 4;    // the polynomial solvers povtrace has
 
 int term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
 }  // namespace
@@ -39,15 +36,12 @@ Object ObjectParser::parse_poly(const Token& keyword, int order) {
     coefficients->push_back(parse_float());
   }
   if (const Token close = next(); !close.is(">"))
-    fail_expected(close, "'>' after the " + std::to_string(term_count(order)) + " coefficients of a " +
-                             std::to_string(order) + "th-order polynomial");
+    fail_expected(close, "'>' after the " + std::to_string(term_count(order)) + " coefficients of a poly of order " +
+                             std::to_string(order));
   Poly poly;
   poly.order = order;
   poly.coefficients = std::move(coefficients);
   o.shape = poly;
-  if (order > kMaxRenderedOrder)
-    o.unsupported = UnsupportedFeature{"a poly of order " + std::to_string(order) + " (povtrace renders orders 2 to 4)",
-                                       keyword.loc};
   parse_object_modifiers(o);
   return o;
 }

@@ -22,6 +22,8 @@ struct IsosurfaceData : ShapeData {
   double threshold = 0, accuracy = 0.001, max_gradient = 1.1;
   int max_trace = 1;
   bool closed = true;
+  bool evaluate = false;
+  std::array<double, 3> evaluate_params{0, 0, 0};   // P0, P1, P2
   int noise_generator = 2;   // the scene's (global_settings), which the function reads (f_noise3d, patterns)
 };
 
@@ -37,6 +39,10 @@ std::optional<ContainerSpan> box_container_span(Vec3 p, Vec3 d, Vec3 corner1, Ve
 std::optional<ContainerSpan> sphere_container_span(Vec3 p, Vec3 d, Vec3 centre, double radius);
 
 std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso);
+// With `evaluate`: raises d.max_gradient to the bound learnt from a fixed set of probe rays (isosurface.cpp), where
+// POV-Ray's rays start from the bound learnt by the rays rendered before them. d must be complete (noise generator
+// included). Nothing without `evaluate`.
+void learn_evaluate_gradient(IsosurfaceData& d);
 
 }  // namespace povtrace::render
 

@@ -1,21 +1,22 @@
-// Polynomial surfaces: poly, cubic, quartic of order 2 to 4.
+// Polynomial surfaces: poly, cubic, quartic of order 2 to 35.
 //
 // SDL: `poly { N, <c…> }`, `cubic { <20 coefficients> }`, `quartic { <35 coefficients> }`, `sturm` (POV-Ray 3.7
 // reference "Poly"). The surface is P(x, y, z) = Σ c·xⁱyʲzᵏ = 0, terms ordered with x's power from N down to 0, then
 // y's from N − i down, then z's from N − i − j down.
 //
 // POV-Ray behaviour reproduced here (facts read from source/backend/shape/poly.cpp, 3.7-stable):
-// - The world ray goes into object space and its direction is normalised (length L); roots are object-space depths,
+// - The world ray goes into object space by the inverse POV-Ray composes (Poly::object_from_world) and its direction
+//   is normalised (length L); roots are object-space depths,
 //   reported as depth / L. A root counts when it is above DEPTH_TOLERANCE = 1e-4 (object space), with no upper limit,
 //   and a root equal to an earlier one is reported once.
 // - Order 2 solves its quadratic directly: the coefficients of t², t, 1 from the expanded terms; when |a| < 1e-20 it
 //   is linear (no root if |b| < 1e-20 too); a negative discriminant gives no root, otherwise both roots.
-// - Orders 3 and 4 substitute the ray into every non-zero term (binomial expansion of each power), drop leading
+// - Orders 3 to 35 substitute the ray into every non-zero term (binomial expansion of each power), drop leading
 //   coefficients that are exactly 0, and hand what is left to Solve_Polynomial with ROOT_TOLERANCE = 1e-4 and the
-//   `sturm` flag (povtrace's solve_polynomial reproduces its rules); an equation reduced to degree 1 or less has no
-//   roots.
+//   `sturm` flag (povtrace's solve_polynomial reproduces its rules: degree 5 and above always by Sturm sequences in
+//   [0, MAX_DISTANCE], `sturm` or not); an equation reduced to degree 1 or less has no roots.
 // - Inside: P(p) < INSIDE_TOLERANCE = 1e-4 in object space (inverted by `inverse`).
-// - Normal: the gradient of P in object space, carried to world space by the inverse transpose and normalised; a zero
+// - Normal: the gradient of P in object space (POV-Ray's normal0 above order 4, the same sums written out below), carried to world space by the inverse transpose and normalised; a zero
 //   gradient gives <1, 0, 0>.
 // - Bounds: none (POV-Ray gives polys infinite bounds unless bounded_by says otherwise).
 #include <array>
@@ -37,9 +38,9 @@ constexpr double inside_tolerance = 1e-4;
 
 const PolyData& data_of(const Primitive& p) { return static_cast<const PolyData&>(*p.data); }
 
-// Powers 0…order of one coordinate.
+// Powers 0…order of one coordinate (entries above `order` are never read).
 std::array<double, PolyData::max_order + 1> powers(double v, int order) {
-  std::array<double, PolyData::max_order + 1> out{};
+  std::array<double, PolyData::max_order + 1> out;
   out[0] = 1.0;
   for (int i = 1; i <= order; ++i) out[i] = out[i - 1] * v;
   return out;
@@ -188,7 +189,7 @@ Primitive make_poly(const Poly& poly, const Matrix& world_from_object) {
   p.type = ShapeType::poly;
   p.transformed = !(world_from_object == Matrix::identity());
   p.world_from_object = world_from_object;
-  if (p.transformed) p.object_from_world = world_from_object.inverse();
+  if (p.transformed) p.object_from_world = poly.object_from_world;   // POV-Ray's composed inverse
   p.data = std::move(data);
   return p;
 }

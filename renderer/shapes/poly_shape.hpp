@@ -9,7 +9,7 @@
 namespace povtrace::render {
 
 struct PolyData : ShapeData {
-  static constexpr int max_order = 4;   // what the renderer solves (the parser refuses higher orders)
+  static constexpr int max_order = 35;  // POV-Ray's MAX_ORDER, the parser's limit
   int order = 4;
   bool sturm = false;
   std::vector<double> coefficients;     // POV-Ray's term order

@@ -56,6 +56,8 @@ std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso) {
   d->threshold = iso.threshold;
   d->accuracy = iso.accuracy;
   d->max_gradient = iso.max_gradient;
+  d->evaluate = iso.evaluate;
+  d->evaluate_params = iso.evaluate_params;
   d->max_trace = iso.max_trace;
   d->closed = !iso.open;
   return d;
@@ -63,7 +65,9 @@ std::shared_ptr<IsosurfaceData> isosurface_data(const Isosurface& iso) {
 
 Primitive make_isosurface(const Isosurface& iso, const Matrix& world_from_object) {
   Primitive p = placed_primitive(ShapeType::isosurface, world_from_object);
-  p.data = isosurface_data(iso);
+  std::shared_ptr<IsosurfaceData> data = isosurface_data(iso);
+  learn_evaluate_gradient(*data);
+  p.data = std::move(data);
   return p;
 }
 
@@ -72,6 +76,7 @@ Primitive shapes::IsosurfaceShape::build(const Isosurface& iso, const Matrix& wo
   Primitive p = placed_primitive(ShapeType::isosurface, world_from_object);
   std::shared_ptr<IsosurfaceData> data = isosurface_data(iso);
   data->noise_generator = context.noise_generator;
+  learn_evaluate_gradient(*data);
   p.data = std::move(data);
   return p;
 }

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
 
 #include "geometry_kit.hpp"
 #include "parser/parse_scene.hpp"
+#include "renderer/shapes/isosurface.hpp"
 #include "renderer/shapes/solid_shapes.hpp"
 
 namespace {
@@ -88,6 +90,35 @@ TEST(Isosurface, MaxTraceKeepsThatManyRoots) {
     const double truth[4] = {3.5, 4.5, 5.5, 6.5};
     for (std::size_t i = 0; i < hits.size(); ++i) EXPECT_NEAR(hits[i].t, truth[i], 0.0011) << items;
   }
+}
+
+TEST(Isosurface, EvaluateRaisesATooLowMaxGradientAlongTheRay) {
+  // 20·(|p| − 1): gradient 20 against max_gradient 0.5. From x = −2 to the container's far side x = 1.5 the function
+  // falls from 20 to 10; both ends positive and 0.5·3.5 far below 30, so without evaluate the search gives up at
+  // once. With evaluate 1, 10, 0.1 the bound (0.5, not above P0 = 1, so not lowered) is below the span's slope
+  // (10/3.5 ≈ 2.9) times 10 and becomes 2.9·100 = 286: the sphere is found at x = −1, within accuracy beyond it.
+  const std::string body = "function { 20 * (sqrt(x*x + y*y + z*z) - 1) } contained_by { box { <-2, -2, -2>, <1.5, 2, 2> } }"
+                           " max_gradient 0.5";
+  const Isosurface without = parsed(body), with = parsed(body + " evaluate 1, 10, 0.1");
+  EXPECT_FALSE(without.evaluate);
+  ASSERT_TRUE(with.evaluate);
+  EXPECT_EQ(with.evaluate_params, (std::array<double, 3>{1, 10, 0.1}));
+  HitBuffer hits;
+  collect_hits(make_isosurface(without, Matrix::identity()), ray({-3, 0, 0}, {1, 0, 0}), hits);
+  EXPECT_TRUE(hits.empty());
+  collect_hits(make_isosurface(with, Matrix::identity()), ray({-3, 0, 0}, {1, 0, 0}), hits);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_GE(hits[0].t, 2.0);
+  EXPECT_LE(hits[0].t, 2.0011);
+  // Rays start from the bound learnt by the probe rays before rendering, not from what earlier rays of the render
+  // left: the same ray gives the same hit however many came before. The probes met the slope 20 near the surface.
+  const Primitive learnt = make_isosurface(with, Matrix::identity());
+  EXPECT_GT(static_cast<const IsosurfaceData&>(*learnt.data).max_gradient, 20.0);
+  EXPECT_EQ(static_cast<const IsosurfaceData&>(*make_isosurface(without, Matrix::identity()).data).max_gradient, 0.5);
+  HitBuffer again;
+  collect_hits(make_isosurface(with, Matrix::identity()), ray({-3, 0, 0}, {1, 0, 0}), again);
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0].t, hits[0].t);
 }
 
 TEST(Isosurface, AClosedContainerShowsWhereTheFunctionIsInside) {

@@ -36,6 +36,7 @@ Primitive poly_of(int order, const std::vector<std::pair<std::array<int, 3>, dou
   p.order = order;
   p.coefficients = c;
   p.sturm = sturm;
+  p.object_from_world = m.inverse();   // what the parser's transforms compose
   return make_poly(p, m);
 }
 
@@ -106,6 +107,24 @@ TEST(Poly, QuarticTorusMatchesTheTorusPrimitive) {
     }
     EXPECT_GT(compared, 1950);
   }
+}
+
+TEST(Poly, OcticRoundedCube) {
+  // x⁸ + y⁸ + z⁸ − 1 = 0: along each axis the surface is at ±1, along the diagonal at 3^(−1/8).
+  const Primitive p = poly_of(8, {{{8, 0, 0}, 1}, {{0, 8, 0}, 1}, {{0, 0, 8}, 1}, {{0, 0, 0}, -1}});
+  const Intersections along_x = intersect_all(p, Ray{{-3, 0, 0}, {1, 0, 0}});
+  ASSERT_EQ(along_x.count, 2);
+  EXPECT_NEAR(along_x.t[0], 2.0, 1e-9);
+  EXPECT_NEAR(along_x.t[1], 4.0, 1e-9);
+  const Vec3 d = normalize(Vec3{1, 1, 1});
+  const Intersections diagonal = intersect_all(p, Ray{d * -5.0, d});
+  ASSERT_EQ(diagonal.count, 2);
+  const double corner = std::sqrt(3.0) * std::pow(3.0, -1.0 / 8.0);
+  EXPECT_NEAR(diagonal.t[0], 5.0 - corner, 1e-9);
+  EXPECT_NEAR(diagonal.t[1], 5.0 + corner, 1e-9);
+  EXPECT_NEAR(dot(surface_normal(p, d * corner), d), 1.0, 1e-12);   // the gradient, normalised
+  EXPECT_TRUE(inside(p, {0.9, 0.9, 0}));
+  EXPECT_FALSE(inside(p, {0.95, 0.95, 0.95}));
 }
 
 TEST(Poly, QuarticWithoutFourthPowersIsSolvedAsACubic) {

@@ -84,9 +84,17 @@ TEST(Isosurface, Errors) {
   EXPECT_NE(e.bare_message().find("a float function of x, y and z"), std::string::npos) << e.bare_message();
 }
 
-TEST(Isosurface, WhatPovtraceCannotEvaluateIsRefusedByName) {
-  ParseError e = parse_error("#version 3.7;\nisosurface { function { x } evaluate 1, 2, 0.9 }\n");
-  EXPECT_NE(e.bare_message().find("the isosurface item 'evaluate'"), std::string::npos) << e.bare_message();
+TEST(Isosurface, EvaluateTakesThreeNumbers) {
+  const SceneDescription sd = parse("#version 3.7;\nisosurface { function { x } evaluate 1, 2 0.9 max_gradient 3 }\n");
+  const auto& iso = std::get<Isosurface>(sd.objects.at(0).shape);
+  EXPECT_FALSE(sd.objects.at(0).unsupported);
+  EXPECT_TRUE(iso.evaluate);
+  EXPECT_EQ(iso.evaluate_params, (std::array<double, 3>{1, 2, 0.9}));   // the comma is optional, as in POV-Ray
+  EXPECT_EQ(iso.max_gradient, 3.0);
+  const ParseError e = parse_error("#version 3.7;\nisosurface { function { x } evaluate 1, 2 }\n");
+  EXPECT_EQ(e.location().line, 2);
+  EXPECT_EQ(e.location().column, 43);
+  EXPECT_NE(e.bare_message().find("found '}'"), std::string::npos) << e.bare_message();
 }
 
 }  // namespace

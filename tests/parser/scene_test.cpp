@@ -580,6 +580,27 @@ TEST(Textures, DefaultPigment) {
 }
 
 // ---- Object copies -----------------------------------------------------------------------------------------
+TEST(Objects, PolyAboveOrderFourIsRenderedAndKeepsPovRaysComposedInverse) {
+  // Orders 5 … 35 are rendered (no longer refused). The inverse is composed from each transform's own inverse in
+  // reverse order, as POV-Ray's Compose_Transforms does: scale 1/4 exactly, then the translation negated.
+  std::string terms = "1";
+  for (int i = 1; i < 56; ++i) terms += i == 55 ? ", -1" : ", 0";
+  const SceneDescription s = scene("poly { 5, <" + terms + "> sturm scale 4 translate <1, 2, 3> }\n");
+  ASSERT_EQ(s.objects.size(), 1u);
+  const Object& o = s.objects[0];
+  EXPECT_FALSE(o.unsupported);
+  const auto& poly = std::get<Poly>(o.shape);
+  EXPECT_EQ(poly.order, 5);
+  EXPECT_TRUE(poly.sturm);
+  // Row vectors (p · M): the later transform's inverse applies first.
+  const Matrix expected = Matrix::translation({-1, -2, -3}) * Matrix::scaling({0.25, 0.25, 0.25});
+  const Vec3 back = poly.object_from_world.point(o.world_from_object.point({0.5, -0.75, 2}));
+  EXPECT_EQ(back.x, 0.5);
+  EXPECT_EQ(back.y, -0.75);
+  EXPECT_EQ(back.z, 2.0);
+  EXPECT_TRUE(poly.object_from_world == expected);
+}
+
 TEST(Objects, ObjectIdentifierIsADeepCopy) {
   const SceneDescription s = scene(
       "#declare S = sphere { <1,0,0>, 1 pigment { checker } }\n"
