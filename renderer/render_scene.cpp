@@ -277,6 +277,10 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
   r.wave_sources = make_wave_sources(scene.settings.number_of_waves);
   r.camera_interiors = r.containing_interiors(scene.camera.location);
   r.fogs = scene.fogs;
+  for (const Rainbow& rainbow : scene.rainbows) {
+    if (!rainbow.colour_map || rainbow.distance == 0.0 || rainbow.width == 0.0) continue;   // ComputeRainbow skips
+    r.rainbows.push_back({rainbow, build_render_pigment(*rainbow.colour_map, &images, options.quick_colours)});
+  }
   r.noise_generator = static_cast<NoiseGenerator>(generator);
   for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
   r.camera = make_render_camera(scene.camera);

@@ -270,6 +270,12 @@ struct RenderScene {
   bool any_ray_flags = false;
   bool any_shadow_fade = false;      // some transparent object has an interior fade that shadows apply
   std::vector<Fog> fogs;             // as POV-Ray lists them (the last written first)
+  // Rainbows with a colour map (POV-Ray skips the others), the last written first, with their map built.
+  struct RenderRainbow {
+    Rainbow rainbow;
+    RenderPigment colour_map;
+  };
+  std::vector<RenderRainbow> rainbows;
   std::shared_ptr<const MediaSet> atmosphere;   // top-level media (none without)
   bool any_interior_media = false;   // some interior has media: shadow rays track the interiors they cross
   NoiseGenerator noise_generator = NoiseGenerator::range_corrected;   // for turbulent fog

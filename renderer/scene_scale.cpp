@@ -155,6 +155,7 @@ SceneDescription scaled_scene(const SceneDescription& scene, double k) {
     f.alt *= k;
     f.offset *= k;
   }
+  for (Rainbow& r : s.rainbows) r.distance *= k;   // directions and angles stay
   return s;
 }
 

@@ -36,6 +36,7 @@ Quality Quality::at_level(int level) {
 Tracer::Tracer(const RenderScene& scene, ShadingModel model, Quality quality)
     : scene_(scene), model_(model), quality_(quality), fog_(quality.fog && !scene.fogs.empty()),
       media_(quality.fog && (scene.atmosphere || scene.any_interior_media)),
+      rainbows_(quality.fog && !scene.rainbows.empty()),
       transmit_bailout_(quality.refraction ? scene.settings.adc_bailout : HUGE_VAL),
       max_level_(scene.settings.max_trace_level), adc_bailout_(scene.settings.adc_bailout) {
   if (quality.fog && (scene.atmosphere || !scene.fogs.empty()))
@@ -101,6 +102,7 @@ Radiance Tracer::trace(const Ray& ray, int level, double weight, const RayState&
   // Media and fog reach rays outside non-hollow objects only (POV-Ray's hollow rays); a miss is BOUND_HUGE away
   // (hit.t). Radiosity sample rays see them only with radiosity's `media on`.
   const bool volume = state.interiors.all_hollow() && (state.radiosity_depth == 0 || sample_volume_);
+  if (rainbows_ && volume) r = with_rainbows(ray, hit.t, r);   // before media and fog, as POV-Ray's TraceRay
   if (media_ && volume) {
     if (!fog_) return with_media(ray, hit.t, hit.found(), state, r);
     r = with_media(ray, hit.t, hit.found(), state, r);
@@ -148,6 +150,7 @@ radiosity::SampleRayResult Tracer::trace_sample(Vec3 origin, Vec3 direction, con
   state.radiosity_depth = p.depth;
   const Radiance r = hit.found() ? shade_hit(ray, hit.surface, p.level, p.weight, state) : background(direction, state);
   Radiance seen = r;
+  if (rainbows_ && sample_volume_) seen = with_rainbows(ray, hit.t, seen);
   if (media_ && sample_volume_) seen = with_media(ray, hit.t, hit.found(), state, seen);
   out.colour = (fog_ && sample_volume_) ? with_fog(ray, hit.t, seen).colour : seen.colour;
   return out;

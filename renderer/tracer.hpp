@@ -221,6 +221,8 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   // Fog over `depth` along the ray, applied to what the ray sees (fog.cpp).
   Radiance with_fog(const Ray& ray, double depth, Radiance r) const;
   Rgb fog_on_shadow(const Ray& ray, double depth) const;   // what fog lets through along a shadow ray
+  // The rainbows seen along the ray, `depth` away (rainbow.cpp).
+  Radiance with_rainbows(const Ray& ray, double depth, Radiance r) const;
   // Media over `depth` along the ray (media.cpp): the media of the interiors it is in when it hit something, then
   // the atmosphere's, as POV-Ray applies them (ComputeTextureColour, then TraceRay).
   Radiance with_media(const Ray& ray, double depth, bool hit, const RayState& state, Radiance r);
@@ -275,6 +277,7 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   Quality quality_;
   bool fog_;   // the scene has fog and the quality level shows it
   bool media_;  // the scene has media and the quality level shows them (POV-Ray's Q_VOLUME, +Q9)
+  bool rainbows_;   // the scene has a rainbow and the quality level shows it (Q_VOLUME too)
   // Some light's shadow rays pass through the atmosphere's media or fog (media_interaction and media_attenuation):
   // shadow rays must know whether they are outside non-hollow objects.
   bool shadow_atmosphere_ = false;

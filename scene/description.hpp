@@ -765,6 +765,21 @@ struct Fog {
   SourceLoc loc;
 };
 
+// rainbow { angle A width W distance D direction <V> up <U> jitter J arc_angle R falloff_angle F colour_map { … } }
+// as POV-Ray's Parse_Rainbow leaves it: `angle` lowered by half the width and both in radians; direction, up and
+// right unit length and square to each other; arc and falloff halved into radians, except that an angle not written
+// keeps POV-Ray's default 180 as it stands (so the arc never cuts a rainbow without arc_angle, and falloff_angle
+// alone fades over 180 − F·π/360: POV-Ray's units, kept). The colour map is read through a gradient x pattern.
+struct Rainbow {
+  double angle = 0, width = 0;
+  double distance = 1e7;          // POV-Ray's MAX_DISTANCE
+  double jitter = 0;
+  Vec3 antisolar, up{0, 1, 0}, right{1, 0, 0};
+  double arc_angle = 180, falloff_angle = 180, falloff_width = 0;
+  std::optional<Pigment> colour_map;   // absent: the rainbow shows nothing (POV-Ray skips it)
+  SourceLoc loc;
+};
+
 // ---- Whole scene ----------------------------------------------------------------------------------------
 struct GlobalSettings {
   std::optional<double> assumed_gamma;   // absent: 1.0 for #version ≥ 3.7, legacy sRGB otherwise (pipeline §6)
@@ -828,6 +843,7 @@ struct SceneDescription {
   Colour background{0, 0, 0, 0, 1};      // POV-Ray 3.7's default: rgbt <0,0,0,1>
   std::optional<SkySphere> sky_sphere;
   std::vector<Fog> fogs;                 // in POV-Ray's list order: the last one written first
+  std::vector<Rainbow> rainbows;         // the same: the last one written first
   std::vector<Media> atmosphere;         // top-level media { } blocks in written order
   std::vector<Light> lights;
   // Every object has a texture after parsing (CSG inheritance and the #default texture resolved as POV-Ray's

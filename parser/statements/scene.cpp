@@ -114,7 +114,11 @@ void SceneStatements::parse_statement(const Token& t) {
     unsupported_.refuse_if_unsupported(scene_.atmosphere.back().unsupported, t.loc, "atmospheric media");
     return;
   }
-  static const std::string_view unsupported[] = {"rainbow", "photons"};
+  if (k == "rainbow") {   // POV-Ray lists rainbows as it lists fogs, the newest first
+    scene_.rainbows.insert(scene_.rainbows.begin(), textures_.parse_rainbow(t));
+    return;
+  }
+  static const std::string_view unsupported[] = {"photons"};
   for (auto u : unsupported)
     if (k == u) fail_unsupported(t, "'" + std::string(k) + "' at the top level of a scene");
   if (k == "radiosity")   // POV-Ray reads radiosity only in global_settings (and #default, objects: importance)

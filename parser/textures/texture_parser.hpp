@@ -44,6 +44,7 @@ class TextureParser : ParserPart {
   BlendMapValue parse_texture_map(const Token& keyword, bool weights_optional);
   SkySphere parse_sky_sphere(const Token& keyword);
   Fog parse_fog(const Token& keyword);
+  Rainbow parse_rainbow(const Token& keyword);   // rainbow.cpp
   bool try_transform(const Token& t, Matrix& m);   // translate/rotate/scale/matrix/transform; composes into m
   Matrix parse_transform_block(const Token& keyword);
   // POV-Ray's Link_Textures checks: nothing over a patterned texture, a patterned one over nothing.

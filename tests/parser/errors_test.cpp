@@ -131,7 +131,6 @@ INSTANTIATE_TEST_SUITE_P(
                   "unsupported: the pigment item 'pavement'"},
         ErrorCase{"CutawayTextures", "#version 3.7;\nsphere { 0, 1 cutaway_textures }\n", 2, 1,
                   "unsupported: the object modifier 'cutaway_textures'"},
-        ErrorCase{"Rainbow", "#version 3.7;\nrainbow { angle 42 }\n", 2, 1, "unsupported: 'rainbow'"},
         ErrorCase{"FocalBlur", "#version 3.7;\ncamera { aperture 0.4 }\n", 2, 1,
                   "unsupported: the camera item 'aperture'"}),
     [](const auto& p) { return p.param.name; });
