@@ -282,7 +282,11 @@ RenderScene build_scene(const SceneDescription& scene, const BuildOptions& optio
     r.rainbows.push_back({rainbow, build_render_pigment(*rainbow.colour_map, &images, options.quick_colours)});
   }
   r.noise_generator = static_cast<NoiseGenerator>(generator);
-  for (const auto& l : scene.lights) r.lights.push_back(make_light(l));
+  for (const auto& l : scene.lights) {
+    r.lights.push_back(make_light(l));
+    if (!l.projected_through.empty())
+      r.lights.back().projected_through = RendererGeometry().prepare(l.projected_through.front(), generator);
+  }
   r.camera = make_render_camera(scene.camera);
   if (scene.camera.projection == Projection::mesh && scene.camera.mesh)
     r.camera.mesh = make_mesh_camera(*scene.camera.mesh, scene.camera.location.z, scene.camera.direction.z);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/object_geometry.hpp"
 #include "scene/description.hpp"
 #include "renderer/geometry.hpp"
 #include "renderer/interior_list.hpp"
@@ -184,6 +185,8 @@ struct RenderLight {
   Vec3 spot_axis;                    // unit axis location → point_at, for spotlights
   double cos_radius = 1, cos_falloff = 1;
   bool fades = false;
+  // projected_through: the object its photons must leave through (photon_shoot.cpp); none without.
+  std::shared_ptr<const PreparedObject> projected_through;
 };
 
 // The camera as its rays are made (renderer/camera.cpp): the non-planar projections keep unit vectors, the

@@ -656,12 +656,25 @@ double Tracer::caustics_factor(const RenderLayer& layer, const CausticsAt& c, co
 
 // Shadow rays as POV-Ray traces them (trace.cpp TracePointLightShadowRay), see povray_shadow_walk. Hits count only
 // with 1e-3 < t < distance − 1e-3 (§3, §8 SHADOW_TOLERANCE), except for the object in the shadow cache.
+// projected_through (TracePointLightShadowRay): the light reaches the point only along rays that meet the object
+// before the light; then only what lies nearer than that crossing, less SMALL_TOLERANCE, casts a shadow, and a fill
+// light (shadowless) casts none. Each sample of an area light is tested so.
 Rgb Tracer::shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance,
                           const RayState& state) {
+  const Ray ray{point, to_light};
+  double reach = distance;   // occluders count short of this depth
+  if (l.projected_through) {
+    const std::optional<TracedHit> through = l.projected_through->trace(point, to_light);
+    if (!through) return {0, 0, 0};
+    const double depth = dot(through->point - point, to_light);
+    if (!(depth - distance < 0.0)) return {0, 0, 0};
+    reach = std::fabs(depth) - tolerance::shadow;
+    if (l.light.shadowless) return shadow_atmosphere(l, ray, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
+  }
   if (scene_.specialisation.no_shadow_rays)
-    return shadow_atmosphere(l, Ray{point, to_light}, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
+    return shadow_atmosphere(l, ray, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
   ++counts_.shadow;
-  return povray_shadow_walk(l, Ray{point, to_light}, distance, state);
+  return povray_shadow_walk(l, ray, distance, reach, state);
 }
 
 bool Tracer::opaque_at(const SurfaceHit& hit) const {
@@ -703,13 +716,13 @@ bool reports_first_hit_only(const Primitive& p) { return p.type == ShapeType::ju
 
 // POV-Ray moves its shadow ray to each crossing it counts and looks again from there: for an object that reports only
 // its first hit, the next crossing of the same object is found from the one at depth `at` and joins the sorted list
-// after position k.
+// after position k, if it lies before `last`, the farthest depth at which a crossing counts.
 template <class Crossings>
-void Tracer::add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double distance,
+void Tracer::add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double last,
                                   Crossings& crossings, std::size_t k) const {
   const Ray from_here{hit_point(ray, crossings[k].hit), ray.direction, ray.kind};
   const std::optional<SurfaceHit> next = nearest_hit(scene_.accelerator.primitives()[primitive], from_here,
-                                                     tolerance::shadow, distance - at - tolerance::shadow);
+                                                     tolerance::shadow, last - at);
   if (!next) return;
   auto crossing = crossings[k];
   crossing.hit = *next;
@@ -719,15 +732,17 @@ void Tracer::add_next_crossing_of(std::uint32_t primitive, const Ray& ray, doubl
   crossings.insert(place, crossing);
 }
 
-Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state) {
+Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, double reach,
+                               const RayState& state) {
   // POV-Ray caches no occluder for a light_group's lights.
   std::uint32_t uncached = kNoOccluder;
   std::uint32_t& cached = l.light.group < 0 ? shadow_cache_slot(l) : uncached;
-  if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, distance)) return {0, 0, 0};
+  if (cached != kNoOccluder && cached_occluder_blocks(cached, ray, reach)) return {0, 0, 0};
+  const double last = std::min(distance - tolerance::shadow, reach);   // the farthest crossing that counts
   if (scene_.specialisation.nearest_shadow_first) {
     // The walk below starts at the nearest crossing and ends there when it is opaque (ties between primitives go
     // to the lower index in both).
-    const Hit first = scene_.accelerator.closest_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow);
+    const Hit first = scene_.accelerator.closest_shadow_hit(ray, tolerance::shadow, last);
     if (!first.found())
       return shadow_atmosphere(l, ray, 0.0, distance, {1, 1, 1}, state.interiors.all_hollow(), false);
     if (opaque_at(first.surface)) {
@@ -741,7 +756,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
   };
   thread_local std::vector<Crossing> crossings;
   crossings.clear();
-  scene_.accelerator.for_each_shadow_hit(ray, tolerance::shadow, distance - tolerance::shadow,
+  scene_.accelerator.for_each_shadow_hit(ray, tolerance::shadow, last,
                                          [&](std::uint32_t i, const SurfaceHit& hit) { crossings.push_back({hit, i}); });
   std::stable_sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) {
     return a.hit.t < b.hit.t || (a.hit.t == b.hit.t && a.primitive < b.primitive);
@@ -755,7 +770,7 @@ Rgb Tracer::povray_shadow_walk(const RenderLight& l, const Ray& ray, double dist
     const Crossing c = crossings[k];
     if (previous > 0 && c.hit.t - previous <= tolerance::shadow) continue;
     if (reports_first_hit_only(scene_.accelerator.primitives()[c.primitive]))
-      add_next_crossing_of(c.primitive, ray, c.hit.t, distance, crossings, k);
+      add_next_crossing_of(c.primitive, ray, c.hit.t, last, crossings, k);
     if (opaque_at(c.hit)) {
       if (previous == 0) cached = c.primitive;
       return {0, 0, 0};
@@ -885,7 +900,7 @@ Rgb Tracer::lit_layer_povray(const RenderLayer& layer, const Colour& s, Vec3 poi
     const double speckle = fin.crand > 0 ? fin.crand * speckle_random(point, li) : 0.0;
     const bool behind = c < tolerance::epsilon && !double_illuminate;
     if (behind && fin.diffuse_back == 0) return;   // a light behind the surface gives nothing at all
-    if (!l.light.shadowless) {
+    if (!l.light.shadowless || l.projected_through) {   // a fill light is tested only for projected_through
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) return;
     }
@@ -952,7 +967,7 @@ Rgb Tracer::lit_layer_textbook(const RenderLayer& layer, const Colour& s, Vec3 p
     const std::optional<LightRay> seen = light_at(l, point);
     if (!seen) continue;
     auto [lc, to_light, distance] = *seen;
-    if (!l.light.shadowless) {
+    if (!l.light.shadowless || l.projected_through) {
       lc = shadowed_light(l, point, to_light, distance, lc, state);
       if (near_zero(lc)) continue;
     }

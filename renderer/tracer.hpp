@@ -93,7 +93,9 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
     bool pass_prev = true, pass_this = false;   // POV-Ray's passThruPrev / passThruThis
     std::vector<photons::Photon>* out = nullptr;
   };
-  void shoot_photon(const Ray& ray, Rgb colour, const std::vector<InteriorRef>& interiors, PhotonShot& shot);
+  // `depth`: how far the photon has come from the light already (through a projected_through object).
+  void shoot_photon(const Ray& ray, Rgb colour, const std::vector<InteriorRef>& interiors, PhotonShot& shot,
+                    double depth = 0);
 
  private:
   // What a ray carries besides its geometry: the interiors it is in, and whether a miss may show the background's
@@ -202,9 +204,10 @@ class Tracer : private radiosity::SampleTracer, private MediaLighting {
   // transparent objects lie in between (pipeline §3).
   Rgb shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, double distance, const RayState& state);
   // POV-Ray's walk along the shadow ray, with its shadow cache.
-  Rgb povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, const RayState& state);
+  // Crossings count up to `reach` (the light's distance, or less with projected_through).
+  Rgb povray_shadow_walk(const RenderLight& l, const Ray& ray, double distance, double reach, const RayState& state);
   template <class Crossings>
-  void add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double distance, Crossings& crossings,
+  void add_next_crossing_of(std::uint32_t primitive, const Ray& ray, double at, double last, Crossings& crossings,
                             std::size_t k) const;
   std::uint32_t& shadow_cache_slot(const RenderLight& l);
   bool cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, double distance) const;

@@ -735,6 +735,10 @@ struct Light {
   // looks_like { object }: an object placed at the light (moved with it), casting no shadow; the parser places it in
   // the scene next to the light. At most one.
   std::vector<Object> looks_like;
+  // projected_through { object }: photons from this light leave only through this object, starting beyond its last
+  // crossing (POV-Ray 3.7 uses it nowhere else). Moved by the light's later transforms; texture and interior
+  // removed, as POV-Ray removes them. At most one.
+  std::vector<Object> projected_through;
   // The light_group this light belongs to (it lights only that group's objects), or -1 for a scene light.
   int group = -1;
   SourceLoc loc;

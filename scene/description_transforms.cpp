@@ -127,6 +127,7 @@ void transform_light(Light& light, const Matrix& m, ObjectTransformObserver* obs
   light.axis1 = m.vector(light.axis1);   // the area's axes turn and scale with the light, as directions
   light.axis2 = m.vector(light.axis2);
   for (Object& o : light.looks_like) transform_object(o, m, TransformKind::other, observer);
+  for (Object& o : light.projected_through) transform_object(o, m, TransformKind::other, observer);
 }
 
 }  // namespace povtrace

@@ -29,6 +29,7 @@ class CameraLightParser : ParserPart {
   void parse_area_light(const Token& keyword, Light& light);
   void parse_light_photons(const Token& keyword, Light& light);
   void parse_looks_like(const Token& keyword, Light& light);
+  void parse_projected_through(const Token& keyword, Light& light);
   using ParserPart::apply_transform;   // an object's (looks_like), next to the light's below
   void apply_transform(Light& light, const Matrix& m);
 

@@ -315,7 +315,8 @@ bool CameraLightParser::try_light_modifier(const Token& t, Light& light) {
   } else if (k == "media_interaction") light.media_interaction = optional_float(1.0) > 0.0;
   else if (k == "media_attenuation") light.media_attenuation = optional_float(1.0) > 0.0;
   else if (k == "photons") parse_light_photons(t, light);
-  else if (k == "projected_through" || k == "area_illumination")
+  else if (k == "projected_through") parse_projected_through(t, light);
+  else if (k == "area_illumination")
     taint(light.unsupported, skip_unsupported(t, "the light_source item '" + std::string(k) + "'"));
   else return false;
   return true;
@@ -336,6 +337,29 @@ void CameraLightParser::parse_looks_like(const Token& keyword, Light& light) {
   parse_object_modifiers(object);
   object.no_shadow = true;
   light.looks_like.push_back(std::move(object));
+}
+
+// projected_through { OBJECT modifiers } (POV-Ray's Parse_Light_Source): one object, not moved to the light; a
+// texture or interior it has is removed with a warning, as POV-Ray removes them.
+void CameraLightParser::parse_projected_through(const Token& keyword, Light& light) {
+  const NestingGuard guard(*this, keyword);
+  if (!light.projected_through.empty())
+    fail_at(keyword, "a light_source has at most one projected_through object (as in POV-Ray)");
+  expect("{", " after 'projected_through'");
+  const Token first = next();
+  auto item = try_parse_item(first);
+  if (!item || !std::holds_alternative<Object>(*item)) fail_expected(first, "an object in projected_through { }");
+  Object object = std::move(std::get<Object>(*item));
+  parse_object_modifiers(object);
+  if (object.interior) {
+    warn(keyword.loc, "a projected_through object cannot have an interior: it is removed, as POV-Ray removes it");
+    object.interior.reset();
+  }
+  if (object.texture) {
+    warn(keyword.loc, "a projected_through object cannot have a texture: it is removed, as POV-Ray removes it");
+    object.texture.reset();
+  }
+  light.projected_through.push_back(std::move(object));
 }
 
 // area_light <axis1>, <axis2>, size1, size2: the sizes are truncated to integers and must not be 0 (POV-Ray's

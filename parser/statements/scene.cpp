@@ -253,6 +253,8 @@ Unsupported first_unsupported(const Object& o) {
       if (l.unsupported) return l.unsupported;
       for (const auto& shown : l.looks_like)
         if (auto u = first_unsupported(shown)) return u;
+      for (const auto& through : l.projected_through)
+        if (auto u = first_unsupported(through)) return u;
     }
   }
   for (const auto* list : {&o.clipped_by, &o.bounded_by})
@@ -276,6 +278,8 @@ void settle_deferred_texture_transforms(Object& o, const NotesPool& pool) {
 void SceneStatements::place_light(Light light, const SourceLoc& at) {
   unsupported_.refuse_if_unsupported(light.unsupported, at, "light_source");
   for (Object& shown : light.looks_like) unsupported_.refuse_if_unsupported(first_unsupported(shown), at, "light_source");
+  for (Object& through : light.projected_through)
+    unsupported_.refuse_if_unsupported(first_unsupported(through), at, "light_source");
   add_light(std::move(light), std::nullopt);
 }
 
@@ -293,6 +297,7 @@ void SceneStatements::add_light(Light light, std::optional<double> importance) {
     scene_.objects.push_back(std::move(shown));
   }
   light.looks_like.clear();
+  for (Object& through : light.projected_through) clear_notes(through);   // photons intersect it; nothing edits it
   scene_.lights.push_back(std::move(light));
 }
 

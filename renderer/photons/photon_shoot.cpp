@@ -177,6 +177,20 @@ double ring_step(const Unit& u, double theta) {
   return u.light->light.parallel ? u.dtheta / theta : u.dtheta / std::sin(theta);
 }
 
+// projected_through (POV-Ray's photon shooting task): a photon that misses the object is not shot; one that meets it
+// starts beyond its last crossing, each crossing passed by EPSILON (1e-10), the distance added to its depth.
+bool leave_through(const PreparedObject& object, Vec3& origin, Vec3 dir, double& depth) {
+  std::optional<TracedHit> hit = object.trace(origin, dir);
+  if (!hit) return false;
+  for (int crossings = 0; hit && crossings < 1000000; ++crossings) {
+    const double step = dot(hit->point - origin, dir) + tolerance::epsilon;
+    origin += dir * step;
+    depth += step;
+    hit = object.trace(origin, dir);
+  }
+  return true;
+}
+
 struct RingResult {
   std::vector<Photon> photons;
   bool hit = false;
@@ -224,9 +238,12 @@ void shoot_ring(Tracer& tracer, const RenderScene& scene, const Unit& u, double 
         }
         const double a = attenuation(l, dir, off_axis) / (xs * ys);
         if (a < 0.00001) continue;
-        const std::vector<InteriorRef> moved = parallel || area ? scene.containing_interiors(origin)
-                                                                : std::vector<InteriorRef>{};
-        tracer.shoot_photon(Ray{origin, dir}, l.colour * a, parallel || area ? moved : light_interiors, shot);
+        double depth = 0;
+        if (l.projected_through && !leave_through(*l.projected_through, origin, dir, depth)) continue;
+        const bool moved_origin = parallel || area || l.projected_through;
+        const std::vector<InteriorRef> moved = moved_origin ? scene.containing_interiors(origin)
+                                                            : std::vector<InteriorRef>{};
+        tracer.shoot_photon(Ray{origin, dir}, l.colour * a, moved_origin ? moved : light_interiors, shot, depth);
       }
     }
   }

@@ -19,11 +19,12 @@ bool allowed(const std::optional<bool>& object, const std::optional<bool>& light
 }
 }  // namespace
 
-void Tracer::shoot_photon(const Ray& ray, Rgb colour, const std::vector<InteriorRef>& interiors, PhotonShot& shot) {
+void Tracer::shoot_photon(const Ray& ray, Rgb colour, const std::vector<InteriorRef>& interiors, PhotonShot& shot,
+                          double depth) {
   RayState state;
   state.alpha_background = false;
   for (const InteriorRef& r : interiors) state.interiors.append(r);
-  shot.depth = 0;
+  shot.depth = depth;
   shot.pass_prev = true;
   shot.pass_this = false;
   photon_trace(ray, colour, 0, 1.0, state, shot);

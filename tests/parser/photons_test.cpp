@@ -174,5 +174,37 @@ TEST(ObjectPhotonsParse, UnknownItemIsAnError) {
   EXPECT_NE(std::string(e.what()).find("target, refraction, reflection, collect, pass_through"), std::string::npos);
 }
 
+TEST(ProjectedThrough, TheObjectMovesWithTheLightAndLosesTextureAndInterior) {
+  Messages m;
+  const SceneDescription sd = parse(
+      "#version 3.7;\n"
+      "#declare Slab = box { <-1, 0, -1>, <1, 0.2, 1> pigment { rgb 1 } interior { ior 1.5 } }\n"
+      "light_source { <0, 5, 0> rgb 1 projected_through { Slab scale 2 } translate x }\n",
+      &m);
+  ASSERT_EQ(sd.lights.size(), 1u);
+  ASSERT_EQ(sd.lights[0].projected_through.size(), 1u);
+  EXPECT_TRUE(sd.objects.empty());   // photons use it; it is not placed in the scene
+  const Object& slab = sd.lights[0].projected_through[0];
+  EXPECT_FALSE(slab.texture);
+  EXPECT_FALSE(slab.interior);
+  EXPECT_NE(m.joined().find("cannot have an interior"), std::string::npos) << m.joined();
+  EXPECT_NE(m.joined().find("cannot have a texture"), std::string::npos) << m.joined();
+  // Not moved to the light's location; the light's later translate moves it.
+  const auto& box = std::get<Box>(slab.shape);
+  const Vec3 c2 = slab.world_from_object.point(box.corner2);
+  EXPECT_EQ(c2, (Vec3{3, 0.4, 2}));
+}
+
+TEST(ProjectedThrough, OneObjectPerLight) {
+  const ParseError e = parse_error(
+      "#version 3.7;\nlight_source { 0, 1 projected_through { sphere { 0, 1 } }\n"
+      "  projected_through { sphere { 0, 2 } } }\n");
+  EXPECT_EQ(e.location().line, 3);
+  EXPECT_EQ(e.location().column, 3);
+  EXPECT_NE(e.bare_message().find("at most one projected_through"), std::string::npos) << e.bare_message();
+  const ParseError notobject = parse_error("#version 3.7;\nlight_source { 0, 1 projected_through { 1 } }\n");
+  EXPECT_NE(notobject.bare_message().find("an object in projected_through"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace povtrace::test
