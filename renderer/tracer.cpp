@@ -11,6 +11,7 @@
 
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/pattern/pattern.hpp"
+#include "renderer/pattern/render_texture.hpp"
 
 namespace povtrace::render {
 
@@ -302,7 +303,7 @@ Radiance Tracer::shade_texture(const Ray& ray, const ShadingPoint& sp, const Ren
       }
       out = mix(out, 1.0 / total, Radiance{}, 0.0);
     } else {
-      const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
+      const double value = texture_pattern_value(texture, p);
       const MapChoice m = choose_entries(texture.children, value);
       out = shade_texture(ray, sp, texture.children[m.cur], p, level, weight, state);
       if (m.prev != m.cur)
@@ -631,7 +632,7 @@ Rgb Tracer::texture_filter(const RenderTexture& texture, const TexturePoint& at,
     }
     return sum / total;
   }
-  const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
+  const double value = texture_pattern_value(texture, p);
   const MapChoice m = choose_entries(texture.children, value);
   const Rgb cur = texture_filter(texture.children[m.cur], p, caustics);
   if (m.prev == m.cur) return cur;

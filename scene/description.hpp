@@ -118,7 +118,8 @@ enum class PatternKind {
   mandel, julia, magnet,                                            // escape-time fractals (Pigment::fractal)
   slope, aoi,                                                       // of the hit's normal (Pigment::slope) or the ray
   pigment_pattern,                                                  // the grey of a pigment (Pigment::pattern_pigment)
-  object                                                            // list: 1 inside Pigment::object, else 0
+  object,                                                           // list: 1 inside Pigment::object, else 0
+  material_map                                                      // textures only: an image's index picks one
 };
 
 // The shape the pattern value goes through after frequency and phase (POV-Ray's wave types).

@@ -112,6 +112,7 @@ class TextureParser : ParserPart {
   bool is_list_pattern_word(const Token& t) const;
   std::shared_ptr<const Texture> transformed_patterned_texture(const Texture& declared, Token t,
                                                                std::string_view closer);
+  void parse_material_map(const Token& keyword, TexturePattern& pattern);
   std::vector<TextureMapEntry> parse_texture_list(std::size_t count);
   std::vector<TextureMapEntry> parse_tiles(const Token& keyword);
   std::shared_ptr<const Texture> parse_patterned_texture(const Token& first, const SourceLoc& loc,

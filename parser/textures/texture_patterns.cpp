@@ -11,7 +11,8 @@
 // - After the pattern come its modifiers (frequency, phase, waves, turbulence, warps, pattern parameters) and
 //   transforms, which move the pattern only: the textures are evaluated in its space.
 // - A declared patterned texture takes transforms only. Nothing is layered over a patterned texture, and it is
-//   layered over nothing (objects.cpp); `material_map` is refused by name.
+//   layered over nothing (objects.cpp).
+// - `material_map { image … texture { } … }`: see parse_material_map.
 #include "parser/interpreter.hpp"
 #include "parser/textures/texture_parser.hpp"
 #include "parser/lexing/reserved_words.hpp"
@@ -132,8 +133,14 @@ std::shared_ptr<const Texture> TextureParser::parse_patterned_texture(const Toke
   auto pattern = std::make_shared<TexturePattern>();
   Pigment& carrier = pattern->pattern;
   carrier.loc = first.loc;
-  if (first.is("material_map"))
-    taint(tex.unsupported, skip_unsupported(first, "the texture pattern 'material_map'"));
+  if (first.is("material_map")) {
+    parse_material_map(first, *pattern);
+    parse_texture_pattern_modifiers(first, *pattern, closer);
+    taint(tex.unsupported, carrier.unsupported);
+    for (const auto& e : pattern->entries) taint(tex.unsupported, e.texture->unsupported);
+    tex.pattern = std::move(pattern);
+    return std::make_shared<const Texture>(std::move(tex));
+  }
   if (first.is("image_map")) fail_at(first, "image_map can only be used in a pigment (as in POV-Ray)");
   if (first.is("uv_mapping")) {
     const NestingGuard guard(*this, first);   // `uv_mapping uv_mapping …` nests
@@ -169,6 +176,37 @@ std::shared_ptr<const Texture> TextureParser::parse_patterned_texture(const Toke
   for (const auto& e : pattern->entries) taint(tex.unsupported, e.texture->unsupported);
   tex.pattern = std::move(pattern);
   return std::make_shared<const Texture>(std::move(tex));
+}
+
+// material_map { [type] "file" [gamma …] [once] [interpolate N] [map_type N] [repeat <u, v>] [offset <u, v>]
+// texture { … } … } (POV-Ray's Parse_Material_Map): the image's palette index, or its red · 255 for an image
+// without a palette, picks the texture (renderer: PatternKind::material_map). The image is read as raw values
+// unless `gamma` is given (GammaCorrect off, as for bump maps). POV-Ray checks neither interpolate nor map_type
+// here. At least one texture.
+void TextureParser::parse_material_map(const Token& keyword, TexturePattern& pattern) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'material_map'");
+  Pigment& carrier = pattern.pattern;
+  carrier.pattern = PatternKind::material_map;
+  carrier.frequency = 0.0;   // the index is no wave value
+  auto image = std::make_shared<ImageMap>();
+  parse_image_file(keyword, *image, carrier.unsupported);
+  image->gamma.mode = ImageGammaMode::none;   // Parse_Image's GammaCorrect off, as for bump maps
+  image->gamma.working = 1.0;
+  for (Token t = peek(); t.is("once") || t.is("interpolate") || t.is("map_type") || t.is("repeat") || t.is("offset");
+       t = peek()) {
+    try_image_item(next(), *image, /*bump=*/true);   // as a bump_map: no value checks
+    if (t.is("interpolate") && (image->interpolate < 0 || image->interpolate == 1 || image->interpolate > 4))
+      taint(carrier.unsupported, UnsupportedFeature{"material_map interpolate " + std::to_string(image->interpolate) +
+                                                        " (POV-Ray's weights are undefined for it)", t.loc});
+  }
+  carrier.image = std::move(image);
+  while (peek().is("texture")) {
+    const Token t = next();
+    pattern.entries.push_back({static_cast<double>(pattern.entries.size()), parse_texture_block(t)});
+  }
+  if (pattern.entries.empty()) fail_expected(peek(), "'texture' (a material_map needs at least one texture)");
+  expect("}", " closing material_map");
 }
 
 bool TextureParser::is_list_pattern_word(const Token& t) const {

@@ -1,7 +1,9 @@
 #include "renderer/pattern/image_map.hpp"
-#include "renderer/pattern/pattern_functions.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "renderer/pattern/pattern_functions.hpp"
 
 namespace povtrace::render {
 
@@ -199,6 +201,18 @@ std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping
   if (!at) return std::nullopt;
   const Texel c = image_colour_at(image, m, (*at)[0], (*at)[1]);
   return Colour{c.r, c.g, c.b, c.f, c.t};
+}
+
+std::size_t material_map_index(const RenderImageMap& image, Vec3 pattern_point, std::size_t count) {
+  const std::optional<std::array<double, 2>> at = image_position(image.mapping, pattern_point);
+  long number = 0;
+  if (at) {
+    const ImageSample s = image_sample_at(*image.image, image.mapping, (*at)[0], (*at)[1]);
+    number = s.index == -1 ? static_cast<long>(s.colour.r * 255.0) : s.index;
+  }
+  const long n = static_cast<long>(count);
+  if (number > n) number %= n;
+  return static_cast<std::size_t>(std::clamp(number, 0L, n - 1));
 }
 
 }  // namespace povtrace::render

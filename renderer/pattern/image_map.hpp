@@ -52,6 +52,12 @@ inline Texel image_colour_at(const MapImage& image, const ImageMapping& m, doubl
 std::optional<Colour> image_map_colour(const MapImage& image, const ImageMapping& m, Vec3 p);
 inline constexpr Colour kOffImageColour{1, 1, 1, 0, 1};   // clear white
 
+struct RenderImageMap;
+// POV-Ray's material_map (support/imageutil.cpp): off the image (`once`) the first texture; otherwise the palette
+// index at the point, or for an image without a palette int(red · 255), taken modulo `count` when above it and
+// then the last texture at most (POV-Ray walks its list of textures that far).
+std::size_t material_map_index(const RenderImageMap& image, Vec3 pattern_point, std::size_t count);
+
 // An image_map pigment ready for lookups.
 struct RenderImageMap {
   std::shared_ptr<const MapImage> image;

@@ -128,6 +128,7 @@ double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* 
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:
+    case PatternKind::material_map:        // textures only: texture_pattern_value
     case PatternKind::uv_mapping: break;   // no pattern value: evaluate_pigment handles them
   }
   return 0.0;

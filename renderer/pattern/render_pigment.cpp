@@ -112,7 +112,8 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
   r.classic_turbulence_warps =
       p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
-  if (p.pattern == PatternKind::image_map) r.image = build_render_image(*p.image, images);
+  if (p.pattern == PatternKind::image_map || p.pattern == PatternKind::material_map)
+    r.image = build_render_image(*p.image, images);
   else add_map(r, p.entries.empty() ? default_colour_map(p) : p.entries, images, quick_colours);
   return r;
 }

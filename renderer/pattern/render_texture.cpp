@@ -88,6 +88,13 @@ RenderTexture build_render_texture(const Texture& texture, ImageCache& images, b
   return r;
 }
 
+double texture_pattern_value(const RenderTexture& texture, const TexturePoint& p) {
+  const RenderPigment& pattern = texture.pattern;
+  if (pattern.pattern == PatternKind::material_map)
+    return static_cast<double>(material_map_index(*pattern.image, p.point, texture.children.size()));
+  return apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
+}
+
 bool texture_is_opaque(const RenderTexture& texture) {
   if (texture.patterned()) return false;
   for (const RenderLayer& l : texture.layers)

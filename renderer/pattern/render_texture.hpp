@@ -19,6 +19,11 @@ bool texture_reads_uv(const RenderTexture& texture);
 // Whether any pattern in it is slope or aoi, which read the surface's normal (TexturePoint::surface).
 bool texture_reads_surface(const RenderTexture& texture);
 
+// The value a patterned texture's pattern gives at the pattern-space point `p`, which picks or blends its textures
+// (choose_entries): the pattern's value through its wave, or for a material_map the index of the texture its
+// image picks (material_map_index).
+double texture_pattern_value(const RenderTexture& texture, const TexturePoint& p);
+
 // The scene's noise generator for every pigment and normal pattern of the texture.
 void set_texture_generator(RenderTexture& texture, NoiseGenerator generator);
 

@@ -6,6 +6,7 @@
 
 #include "renderer/shading_helpers.hpp"
 #include "renderer/tracer.hpp"
+#include "renderer/pattern/render_texture.hpp"
 
 namespace povtrace::render {
 
@@ -102,7 +103,7 @@ void Tracer::photon_texture(const PhotonHit& at, const RenderTexture& texture, c
       for (const RenderTexture& c : texture.children) total += c.value;
       for (const RenderTexture& c : texture.children) photon_texture(at, c, p, colour * (c.value / total));
     } else {
-      const double value = apply_wave(pattern_value(pattern.params, p.point, p.surface), pattern.wave);
+      const double value = texture_pattern_value(texture, p);
       const MapChoice m = choose_entries(texture.children, value);
       if (m.prev == m.cur) {
         photon_texture(at, texture.children[m.cur], p, colour);

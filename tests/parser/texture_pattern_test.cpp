@@ -90,7 +90,9 @@ TEST(TexturePatternParse, ErrorsAndRefusals) {
   e = parse_error("#version 3.7;\n" + t + "sphere { 0, 1 texture { bozo color_map { [0 rgb 1] } } }\n");
   EXPECT_NE(e.bare_message().find("'color_map' can only be used in a pigment"), std::string::npos) << e.what();
   e = parse_error("#version 3.7;\n" + t + "sphere { 0, 1 texture { material_map { png \"x.png\" texture { T } } } }\n");
-  EXPECT_NE(e.bare_message().find("the texture pattern 'material_map'"), std::string::npos) << e.what();
+  EXPECT_NE(e.bare_message().find("cannot open the image file 'x.png'"), std::string::npos) << e.what();
+  e = parse_error("#version 3.7;\n" + t + "sphere { 0, 1 texture { material_map { png \"povmap.png\" } } }\n");
+  EXPECT_NE(e.bare_message().find("a material_map needs at least one texture"), std::string::npos) << e.what();
   e = parse_error("#version 3.7;\n" + t + "#declare P = texture { checker texture { T } }\n"
                   "sphere { 0, 1 texture { P pigment { rgb 1 } } }\n");
   EXPECT_NE(e.bare_message().find("a transform"), std::string::npos) << e.what();
@@ -166,6 +168,28 @@ TEST(BoxParse, TranslationsAndScalingsMoveTheCornersUntilARotation) {
   EXPECT_TRUE(b.rotated);
   EXPECT_EQ(b.corner2.x, 1);    // from the rotation on, transforms go into the matrix
   EXPECT_EQ(s.objects.at(1).world_from_object.m[1][1], -1);
+}
+
+TEST(TexturePatterns, MaterialMapKeepsItsImageAndTexturesInOrder) {
+  const SceneDescription sd = parse(
+      "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+      "sphere { 0, 1 texture { material_map { png \"povmap.png\" once map_type 1 interpolate 2 repeat <2, 3>\n"
+      "  texture { pigment { rgb 1 } } texture { pigment { rgb <1, 0, 0> } } texture { pigment { rgb 0 } } }\n"
+      "  scale 2 } }\n");
+  const Texture& tex = *sd.objects.at(0).texture;
+  ASSERT_TRUE(tex.patterned());
+  EXPECT_FALSE(tex.unsupported);
+  const TexturePattern& p = *tex.pattern;
+  EXPECT_EQ(p.pattern.pattern, PatternKind::material_map);
+  ASSERT_TRUE(p.pattern.image);
+  EXPECT_TRUE(p.pattern.image->once);
+  EXPECT_EQ(p.pattern.image->map_type, 1);
+  EXPECT_EQ(p.pattern.image->interpolate, 2);
+  EXPECT_EQ(p.pattern.image->repeat_u, 2.0);
+  EXPECT_EQ(p.pattern.image->gamma.mode, ImageGammaMode::none);   // read raw, as POV-Ray reads bump maps
+  ASSERT_EQ(p.entries.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(p.entries[i].value, static_cast<double>(i));
+  EXPECT_EQ(p.pattern.world_from_pattern.point({1, 1, 1}), (Vec3{2, 2, 2}));   // the texture's transforms move it
 }
 
 }  // namespace
