@@ -61,6 +61,12 @@ double binomial(int n, int r) {
   return b;
 }
 
+// sum += term through a volatile store: no vectoriser may reorder the additions into one coefficient.
+inline void add_in_order(double& sum, double term) {
+  volatile double v = sum + term;
+  sum = v;
+}
+
 // Coefficients of P(o + t·d) by powers of t, highest (t^order) first.
 std::array<double, PolyData::max_order + 1> ray_polynomial(const PolyData& d, Vec3 o, Vec3 dir) {
   const int n = d.order;
@@ -75,9 +81,25 @@ std::array<double, PolyData::max_order + 1> ray_polynomial(const PolyData& d, Ve
     for (int h = 0; h <= j; ++h) ty[h] = binomial(j, h) * dy[static_cast<std::size_t>(j - h)] * oy[static_cast<std::size_t>(h)];
     for (int h = 0; h <= k; ++h) tz[h] = binomial(k, h) * dz[static_cast<std::size_t>(k - h)] * oz[static_cast<std::size_t>(h)];
     const int offset = n - (i + j + k);
-    for (int a = 0; a <= i; ++a)
-      for (int b = 0; b <= j; ++b)
-        for (int e = 0; e <= k; ++e) eqn[static_cast<std::size_t>(offset + a + b + e)] += c * tx[a] * ty[b] * tz[e];
+    // The order of the additions into each coefficient is POV-Ray's as its g++ -O3 build runs them: the loop over
+    // y's powers vectorised two at a time (outer-loop vectorisation), so within a pair b, b + 1 the slot that both
+    // reach gets (b + 1, e) before (b, e + 1); an odd last b comes after. Written out here so that every build of
+    // povtrace adds in that order (the last bit decides the roots of ill-conditioned polys, prim_poly_sturm_noise).
+    for (int a = 0; a <= i; ++a) {
+      const double ca = c * tx[a];
+      int b = 0;
+      for (; b + 1 <= j; b += 2) {
+        const double cab0 = ca * ty[b], cab1 = ca * ty[b + 1];
+        for (int e = 0; e <= k; ++e) {
+          add_in_order(eqn[static_cast<std::size_t>(offset + a + b + e)], cab0 * tz[e]);
+          add_in_order(eqn[static_cast<std::size_t>(offset + a + b + 1 + e)], cab1 * tz[e]);
+        }
+      }
+      for (; b <= j; ++b) {
+        const double cab = ca * ty[b];
+        for (int e = 0; e <= k; ++e) add_in_order(eqn[static_cast<std::size_t>(offset + a + b + e)], cab * tz[e]);
+      }
+    }
   });
   return eqn;
 }
