@@ -13,10 +13,10 @@
 // trace rays; povtrace draws it from a hash of the ray, the same for any thread count: statistically the same
 // jitter, not the same pixels.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
+#include "renderer/shading_helpers.hpp"
 #include "renderer/tracer.hpp"
 
 namespace povtrace::render {
@@ -26,15 +26,8 @@ constexpr double kEpsilon = 1e-10;   // POV-Ray's EPSILON
 
 // A uniform number in [0, 1) that depends only on the ray.
 double ray_random(const Ray& ray) {
-  std::uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (double v : {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z}) {
-    h ^= std::bit_cast<std::uint64_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    h ^= h >> 30;
-    h *= 0xbf58476d1ce4e5b9ull;
-    h ^= h >> 27;
-    h *= 0x94d049bb133111ebull;
-    h ^= h >> 31;
-  }
+  const std::uint64_t h = hash_of_values(0x9E3779B97F4A7C15ull, {ray.origin.x, ray.origin.y, ray.origin.z,
+                                                                 ray.direction.x, ray.direction.y, ray.direction.z});
   return static_cast<double>(h >> 11) * 0x1.0p-53;
 }
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 
 #include <optional>
 
@@ -132,15 +133,21 @@ inline TexturePoint material_point(const Material& m, const TexturePoint& at) {
   return m.uv_mapping ? at.at_uv() : at;
 }
 
-// A uniform number in [0, 1] from the bits of a point and a light index (splitmix64 finalizer).
-inline double speckle_random(Vec3 p, std::size_t light) {
-  std::uint64_t h = 0x9E3779B97F4A7C15ull * (light + 1);
-  for (const double v : {p.x, p.y, p.z}) {
+// 64 random-looking bits from `seed` and the bits of `values` (each folded in, then splitmix64's finalizer).
+inline std::uint64_t hash_of_values(std::uint64_t seed, std::initializer_list<double> values) {
+  std::uint64_t h = seed;
+  for (const double v : values) {
     std::uint64_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
     h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 27; h *= 0x94D049BB133111EBull; h ^= h >> 31;
   }
+  return h;
+}
+
+// A uniform number in [0, 1] from the bits of a point and a light index.
+inline double speckle_random(Vec3 p, std::size_t light) {
+  const std::uint64_t h = hash_of_values(0x9E3779B97F4A7C15ull * (light + 1), {p.x, p.y, p.z});
   return static_cast<double>(h >> 11) * (1.0 / 9007199254740991.0);
 }
 }  // namespace povtrace::render
