@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -206,6 +207,13 @@ int run_worker(const RenderOptions& options, int rank, const std::atomic<bool>& 
 
 // ---- rank 0 -------------------------------------------------------------------------------------------------------
 
+// Tells every worker to finish. Only after the job succeeded: Open MPI 4.1.4's mpirun, asked by MPI_Abort to end a
+// job while one rank is already inside MPI_Finalize, sometimes hangs in PMIx_server_finalize (or crashes), so a
+// worker with nothing left to do waits for this message instead of finalizing (tests/mpi/killed_worker.sh STOP).
+void release_workers(int ranks) {
+  for (int w = 1; w < ranks; ++w) MPI_Send(nullptr, 0, MPI_BYTE, w, tag_done, MPI_COMM_WORLD);
+}
+
 // The deadline for one piece of work: POVTRACE_MPI_TILE_TIMEOUT seconds when set, else max(floor, 10 × the
 // slowest piece so far).
 double work_timeout(double slowest, double floor) {
@@ -240,9 +248,9 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   std::size_t next = 0, finished = 0;
   double slowest = 0;
   std::vector<unsigned char> buffer;
-  std::vector<bool> released(static_cast<std::size_t>(ranks), false);
+  std::vector<bool> idle(static_cast<std::size_t>(ranks), false);
 
-  // Gives `worker` the next tile, or releases it when none is left.
+  // Gives `worker` the next tile, or leaves it idle when none is left.
   auto hand_out = [&](int worker) {
     if (next < tiles.size()) {
       const PixelRect& r = tiles[next].rect;
@@ -252,8 +260,7 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
       MPI_Send(t, 5, MPI_INT32_T, worker, tag_tile, MPI_COMM_WORLD);
     } else {
       busy[static_cast<std::size_t>(worker)].tile = -1;
-      released[static_cast<std::size_t>(worker)] = true;
-      MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_done, MPI_COMM_WORLD);
+      idle[static_cast<std::size_t>(worker)] = true;   // released only once the image is written
     }
   };
 
@@ -321,9 +328,9 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
     }
     hand_out(source);
   }
-  // Workers still loading the scene (more ranks than tiles) get their release when they report.
+  // Workers still loading the scene (more ranks than tiles) are waited for, so that none is left reporting.
   for (int w = 1; w < ranks; ++w) {
-    if (released[static_cast<std::size_t>(w)]) continue;
+    if (idle[static_cast<std::size_t>(w)]) continue;
     for (;;) {
       MPI_Status status = wait_for_message(w);
       int bytes = 0;
@@ -336,7 +343,6 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
       if (status.MPI_TAG != tag_text) break;   // its ready
       replay_messages(buffer.data(), static_cast<std::size_t>(bytes), messages);
     }
-    MPI_Send(nullptr, 0, MPI_BYTE, w, tag_done, MPI_COMM_WORLD);
   }
   // Rank 0's wall time less the slowest worker's parse and build (which ran before its first tile).
   job.times.render_s = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() -
@@ -346,6 +352,7 @@ int run_master(const RenderOptions& options, const std::optional<PixelRect>& reg
   } catch (const std::exception& e) {
     abort_job(std::string("cannot write the image: ") + e.what());
   }
+  release_workers(ranks);
   return 0;
 }
 
@@ -411,7 +418,7 @@ int run_frame_master(const RenderOptions& options, const FramePlan& plan, const 
     Clock::time_point since;
   };
   std::vector<Busy> busy(static_cast<std::size_t>(ranks));
-  std::vector<bool> released(static_cast<std::size_t>(ranks), false);
+  std::vector<bool> idle(static_cast<std::size_t>(ranks), false);
   long long next = 0, finished = 0;
   double slowest = 0;
   auto hand_out = [&](int worker) {
@@ -422,12 +429,11 @@ int run_frame_master(const RenderOptions& options, const FramePlan& plan, const 
       MPI_Send(&index, 1, MPI_INT64_T, worker, tag_frame, MPI_COMM_WORLD);
     } else {
       b.index = -1;
-      released[static_cast<std::size_t>(worker)] = true;
-      MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_done, MPI_COMM_WORLD);
+      idle[static_cast<std::size_t>(worker)] = true;   // released only once every frame is written
     }
   };
   std::vector<unsigned char> buffer;
-  while (finished < total || std::find(released.begin() + 1, released.end(), false) != released.end()) {
+  while (finished < total || std::find(idle.begin() + 1, idle.end(), false) != idle.end()) {
     if (interrupted.load()) abort_job("interrupted");
     int flag = 0;
     MPI_Status status;
@@ -496,6 +502,7 @@ int run_frame_master(const RenderOptions& options, const FramePlan& plan, const 
     }
     hand_out(source);
   }
+  release_workers(ranks);
   return 0;
 }
 
@@ -527,6 +534,12 @@ int run_mpi_render(const RenderOptions& options, const std::atomic<bool>& interr
   if (rank == 0 && options.continue_trace) {
     std::cerr << "povtrace: warning: +C (Continue_Trace) has no effect under mpirun: the MPI path keeps no render "
                  "state file; rendering from the start\n";
+  }
+  // A worker writes no file, so a SIGTERM or SIGINT (mpirun's teardown after MPI_Abort sends SIGCONT, SIGTERM,
+  // then SIGKILL) ends it at once instead of cancelling its tile and reporting to a rank 0 that is gone.
+  if (rank != 0) {
+    std::signal(SIGTERM, SIG_DFL);
+    std::signal(SIGINT, SIG_DFL);
   }
   // An animation is split by frames (each parsed with its own clock), a still by tiles.
   const FramePlan plan = plan_frames(options.animation);
