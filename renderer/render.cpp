@@ -1,6 +1,7 @@
 #include "renderer/render.hpp"
 
 #include "renderer/pretrace_run.hpp"
+#include "runtime/jitter.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -28,17 +29,6 @@ struct Sample {
   Sample& operator+=(const Sample& o) { colour += o.colour; transmit += o.transmit; return *this; }
   Sample operator/(double d) const { return {colour / d, transmit / d}; }
 };
-
-// Our own deterministic jitter (not POV-Ray's table): a hash of the sample position gives offsets in
-// [−½, ½], the same for the same position whatever the thread or block order.
-std::pair<double, double> jitter2d(double x, double y) {
-  auto q = [](double v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(v * 4096.0))); };
-  std::uint64_t h = q(x) * 0x9E3779B97F4A7C15ull ^ (q(y) + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-  h ^= h >> 31; h *= 0xBF58476D1CE4E5B9ull; h ^= h >> 29; h *= 0x94D049BB133111EBull; h ^= h >> 32;
-  const double jx = static_cast<double>(h & 0xFFFFFF) / 16777215.0 - 0.5;
-  const double jy = static_cast<double>((h >> 24) & 0xFFFFFF) / 16777215.0 - 0.5;
-  return {jx, jy};
-}
 
 // A linear value into the single-precision framebuffer: beyond float's range it saturates at the largest float
 // instead of becoming infinite (a pigment of rgb 1e59 is legal SDL; its pixels stay finite, and PNG clips them).
@@ -136,7 +126,7 @@ class BlockRenderer {
       for (double xx = -r; xx <= r + 1e-10; xx += step) {
         double sx = px + xx, sy = py + yy;
         if (js > 0) {
-          const auto [jx, jy] = jitter2d(sx, sy);
+          const auto [jx, jy] = povray_jitter2d(sx, sy);
           sx += jx * js;
           sy += jy * js;
         }
@@ -183,7 +173,7 @@ class BlockRenderer {
   Sample jittered(double x, double y) {
     const double js = s_.jitter ? s_.jitter_amount / ((1 << s_.antialias_depth) + 1) : 0.0;
     if (js > 0) {
-      const auto [jx, jy] = jitter2d(x, y);
+      const auto [jx, jy] = povray_jitter2d(x, y);
       return shade(x + jx * js, y + jy * js);
     }
     return shade(x, y);

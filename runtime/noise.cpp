@@ -3,6 +3,8 @@
 // to the last bit on the same machine arithmetic (no fused multiply-add).
 #include "runtime/noise.hpp"
 
+#include "runtime/jitter.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -283,5 +285,7 @@ Vec3 vector_turbulence(Vec3 p, const Turbulence& t) {
   }
   return value;
 }
+
+std::uint16_t lattice_permutation_entry(int i) { return kPermutation[static_cast<std::size_t>(i & 0xfff)]; }
 
 }  // namespace povtrace

@@ -201,7 +201,8 @@ struct Case {
 };
 
 TEST(AntialiasModel, BlocksSceneMatchesTranscription) {
-  // [V item7_aa_check] the option sets checked against POV-Ray (jitter off here: povtrace's jitter is its own).
+  // [V item7_aa_check] the option sets checked against POV-Ray, jitter off (POV-Ray's jitter lookup is checked by
+  // runtime/jitter tests and the reference scenes aa_method1_jitter and aa_method2_jitter).
   const Case cases[] = {{"+A -J", 1, 3, 0.3, 32},       {"+A +BS8 -J", 1, 3, 0.3, 8},
                         {"+A0.1 +R2 -J", 1, 2, 0.1, 32}, {"+A0.0 -J", 1, 3, 0.0, 32},
                         {"+A +AM2 -J", 2, 3, 0.3, 32},  {"+A0.1 +AM2 +R4 -J", 2, 4, 0.1, 32},
