@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "app/animation.hpp"
 #include "app/messages.hpp"
@@ -29,6 +30,8 @@ struct JobResult {
   std::filesystem::path output;
   long long frames = 0;               // frames rendered (1 for a still)
   bool skipped = false;               // +C: the frame's output file existed, nothing was rendered or written
+  // What in the scene POV-Ray draws at random (so its own runs differ): jittered area lights, radiosity.
+  std::vector<std::string> random_in_povray;
 };
 
 // Parses, builds, renders and writes per `options`: one image, or every frame of an animation (one file each,
