@@ -37,22 +37,33 @@ double upper_gamma_fraction(double a, double x) {
   return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
 }
 
-// Q(a, x) = 1 − P(a, x).
-double upper_gamma(double a, double x) {
+// POV-Ray's complemented incomplete gamma function (chi2.cpp's igamc, a cephes port) for a = dof/2 with a whole
+// number dof. Its log-gamma evaluates cephes' rational approximation on [2, 3] with the denominator's coefficients
+// read one place off (the table keeps its leading 1 and is passed to the routine that adds one itself), so for
+// every non-integer argument below 13 — here the half-integers, all reduced to 2.5 — it is too large by the
+// constant below (POV-Ray's lgam(2.5) is 0.32425247013031994, the true value 0.28468287047291918; integer
+// arguments and arguments from 13 up are exact). Both branches scale by exp(-excess), and POV-Ray switches from
+// the series (1 − P) to the continued fraction (Q) at x ≥ max(1, a).
+double povray_upper_gamma(double a, double x) {
+  constexpr double kHalfIntegerExcess = 0.32425247013031994 - 0.28468287047291918;
   if (x <= 0) return 1.0;
-  return x < a + 1.0 ? 1.0 - lower_gamma_series(a, x) : upper_gamma_fraction(a, x);
+  const bool half_integer = a < 13.0 && std::floor(a) != a;
+  const double k = half_integer ? std::exp(-kHalfIntegerExcess) : 1.0;
+  if (x < 1.0 || x < a) return 1.0 - k * lower_gamma_series(a, x);
+  return k * upper_gamma_fraction(a, x);
 }
 
 Rgb rgb(const Colour& c) { return {c.r, c.g, c.b}; }
 }  // namespace
 
 double inverse_chi_square_complement(double dof, double q) {
-  // P(X > x) = Q(dof/2, x/2) falls from 1 at x = 0 towards 0: bisect on it.
+  // P(X > x) = Q(dof/2, x/2) falls from 1 at x = 0 towards 0: bisect on POV-Ray's version of it, so that the
+  // thresholds equal POV-Ray's (its chdtri(7, 0.5) is 6.526 where the true median is 6.346).
   double lo = 0.0, hi = dof + 10.0;
-  for (int i = 0; i < 2000 && upper_gamma(0.5 * dof, 0.5 * hi) > q; ++i) hi *= 2.0;
+  for (int i = 0; i < 2000 && povray_upper_gamma(0.5 * dof, 0.5 * hi) > q; ++i) hi *= 2.0;
   for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (upper_gamma(0.5 * dof, 0.5 * mid) > q ? lo : hi) = mid;
+    (povray_upper_gamma(0.5 * dof, 0.5 * mid) > q ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -13,12 +13,22 @@ using namespace povtrace;
 using namespace povtrace::render;
 using namespace povtrace::render::test;
 
-// Quantiles of the chi-square distribution (P(X > x) = q), from statistical tables.
-TEST(MediaThresholds, InverseChiSquareMatchesTables) {
-  EXPECT_NEAR(inverse_chi_square_complement(1, 0.9), 0.0157908, 1e-6);
-  EXPECT_NEAR(inverse_chi_square_complement(9, 0.9), 4.168159, 1e-5);
-  EXPECT_NEAR(inverse_chi_square_complement(2, 0.5), 2.0 * std::log(2.0), 1e-9);   // exponential with mean 2
-  EXPECT_NEAR(inverse_chi_square_complement(4, 0.05), 9.487729, 1e-5);
+// Quantiles of the chi-square distribution (P(X > x) = q): for even degrees of freedom, the values of statistical
+// tables; for odd ones below 26, POV-Ray 3.7.0.10's chdtri (its log-gamma of half-integers is 0.0396 too large), as
+// computed by its chi2.cpp, which media and focal blur thresholds must equal.
+TEST(MediaThresholds, InverseChiSquareMatchesPovRaysChdtri) {
+  EXPECT_NEAR(inverse_chi_square_complement(2, 0.5), 2.0 * std::log(2.0), 1e-12);   // exponential with mean 2
+  EXPECT_NEAR(inverse_chi_square_complement(4, 0.05), 9.4877290367811575, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(36, 0.975), 21.335881560799049, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(27, 0.9), 18.113895966895974, 1e-9);   // 13.5: POV-Ray's exact path
+  // Odd, below 26: POV-Ray's values, not the tables' (0.0157908, 4.168159, 7.041505, 6.345811, 5.008751).
+  EXPECT_NEAR(inverse_chi_square_complement(1, 0.9), 0.017098659305515445, 1e-12);
+  EXPECT_NEAR(inverse_chi_square_complement(9, 0.9), 4.2253572226957417, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(13, 0.9), 7.1180896824953637, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(7, 0.5), 6.5261882819763368, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(13, 0.975), 5.0537427309874206, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(25, 0.9), 16.594758427406472, 1e-9);
+  EXPECT_NEAR(inverse_chi_square_complement(3, 0.5), 2.4750414269371719, 1e-9);
 }
 
 // Media::PostProcess: thresholds scaled so that max_samples − 1 degrees of freedom give `variance`.
