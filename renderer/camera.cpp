@@ -13,6 +13,7 @@
 #include "renderer/render.hpp"
 #include "renderer/pattern/normal_perturbation.hpp"
 #include "renderer/mesh_camera.hpp"
+#include "renderer/focal_blur.hpp"
 
 namespace povtrace::render {
 
@@ -40,6 +41,9 @@ std::optional<Ray> along(Vec3 origin, Vec3 direction) {
   return Ray{origin, direction * (1.0 / l)};   // POV-Ray's VNormalize: times the reciprocal of the length
 }
 
+// The ray before its direction is normalised (focal blur moves it first, as POV-Ray's JitterCameraRay does).
+std::optional<Ray> aim(Vec3 origin, Vec3 direction) { return Ray{origin, direction}; }
+
 // POV-Ray's Vector3d::normalize, which SetupCamera applies: a zero vector stays zero (a fisheye camera with
 // `direction 0` looks sideways, it does not turn NaN).
 Vec3 normalize_or_zero(Vec3 v) {
@@ -55,7 +59,7 @@ std::optional<Ray> fisheye(const RenderCamera& c, double& x0, double& y0) {
   if (rad > 1.0) return std::nullopt;
   x0 = polar_angle(x0, y0, rad);
   y0 = rad * c.angle * kPovPiOver360;
-  return along(c.location, c.right * (std::cos(x0) * std::sin(y0)) + c.up * (std::sin(x0) * std::sin(y0)) +
+  return aim(c.location, c.right * (std::cos(x0) * std::sin(y0)) + c.up * (std::sin(x0) * std::sin(y0)) +
                                c.direction * std::cos(y0));
 }
 
@@ -80,7 +84,7 @@ std::optional<Ray> omnimax(const RenderCamera& c, double& x0, double& y0) {
   y0 = 1.411269 * rad - 0.09439 * rad * rad * rad + 0.25674 * rad * rad * rad * rad * rad;
   const double cx = std::cos(x0), sx = std::sin(x0), cy = std::cos(y0), sy = std::sin(y0);
   if (sx * sy < std::tan(135.0 * kDegree) * cy) return std::nullopt;
-  return along(c.location, c.right * (cx * sy) + c.up * (sx * sy) + c.direction * cy);
+  return aim(c.location, c.right * (cx * sy) + c.up * (sx * sy) + c.direction * cy);
 }
 
 std::optional<Ray> panoramic(const RenderCamera& c, double& x0, double& y0) {
@@ -89,7 +93,7 @@ std::optional<Ray> panoramic(const RenderCamera& c, double& x0, double& y0) {
   double ty;
   if (std::fabs(M_PI / 2 - std::fabs(y0)) < tolerance::epsilon) ty = y0 > 0.0 ? tolerance::bound_huge : -tolerance::bound_huge;
   else ty = std::tan(y0);
-  return along(c.location, c.right * std::cos(x0) + c.up * ty + c.direction * std::sin(x0));
+  return aim(c.location, c.right * std::cos(x0) + c.up * ty + c.direction * std::sin(x0));
 }
 
 // The angles as POV-Ray forms them: the fraction of the image times (field of view / 360) · 2π.
@@ -97,7 +101,7 @@ std::optional<Ray> spherical(const RenderCamera& c, double& x0, double& y0) {
   y0 *= (c.v_angle / 360) * (2 * M_PI);
   x0 *= (c.h_angle / 360) * (2 * M_PI);
   const Vec3 up_down = rotated_about(c.direction, normalize_or_zero(c.right), -y0);
-  return along(c.location, rotated_about(up_down, normalize_or_zero(c.up), x0));
+  return aim(c.location, rotated_about(up_down, normalize_or_zero(c.up), x0));
 }
 
 std::optional<Ray> projected_ray(const RenderCamera& c, double px, double py, int width, int height, double& x0,
@@ -108,8 +112,8 @@ std::optional<Ray> projected_ray(const RenderCamera& c, double px, double py, in
   x0 = u;
   y0 = v;
   switch (c.projection) {
-    case Projection::perspective: return along(c.location, c.direction + c.right * u + c.up * v);
-    case Projection::orthographic: return along(c.location + c.right * u + c.up * v, c.direction);
+    case Projection::perspective: return aim(c.location, c.direction + c.right * u + c.up * v);
+    case Projection::orthographic: return aim(c.location + c.right * u + c.up * v, c.direction);
     case Projection::fisheye:
     case Projection::omnimax:
       x0 = 2.0 * px / width - 1.0;
@@ -122,23 +126,23 @@ std::optional<Ray> projected_ray(const RenderCamera& c, double px, double py, in
     case Projection::spherical: return spherical(c, x0, y0);
     case Projection::ultra_wide_angle: {
       const double a = u * half_angle, b = v * half_angle * c.aspect;
-      return along(c.location, c.right * std::sin(a) + c.up * std::sin(b) + c.direction * (std::cos(a) * std::cos(b)));
+      return aim(c.location, c.right * std::sin(a) + c.up * std::sin(b) + c.direction * (std::cos(a) * std::cos(b)));
     }
     case Projection::cylinder1: {
       const double a = u * half_angle;
-      return along(c.location, c.right * std::sin(a) + c.up * (v * c.aspect) + c.direction * std::cos(a));
+      return aim(c.location, c.right * std::sin(a) + c.up * (v * c.aspect) + c.direction * std::cos(a));
     }
     case Projection::cylinder2: {
       const double b = v * half_angle;
-      return along(c.location, c.right * (u * c.aspect) + c.up * std::sin(b) + c.direction * std::cos(b));
+      return aim(c.location, c.right * (u * c.aspect) + c.up * std::sin(b) + c.direction * std::cos(b));
     }
     case Projection::cylinder3: {
       const double a = u * half_angle;
-      return along(c.location + c.up * (v * c.aspect), c.right * std::sin(a) + c.direction * std::cos(a));
+      return aim(c.location + c.up * (v * c.aspect), c.right * std::sin(a) + c.direction * std::cos(a));
     }
     case Projection::cylinder4: {
       const double b = v * half_angle;
-      return along(c.location + c.right * (u * c.aspect), c.up * std::sin(b) + c.direction * std::cos(b));
+      return aim(c.location + c.right * (u * c.aspect), c.up * std::sin(b) + c.direction * std::cos(b));
     }
     case Projection::mesh: break;   // mesh_camera_ray
   }
@@ -147,7 +151,8 @@ std::optional<Ray> projected_ray(const RenderCamera& c, double px, double py, in
 
 }  // namespace
 
-std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int width, int height, unsigned ray_number) {
+std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int width, int height, unsigned ray_number,
+                              bool through_lens) {
   // POV-Ray's CreateCameraRay: the pixel centre is (x + 0.5, y − 0.5) and rows count from the bottom; the screen
   // coordinates are formed in its order of operations, so that rays agree to the last bit (a pattern with a jump,
   // such as a function pattern wrapping at 1, shows any difference).
@@ -155,7 +160,9 @@ std::optional<Ray> camera_ray(const RenderCamera& c, double x, double y, int wid
   std::optional<Ray> ray = c.projection == Projection::mesh
                                ? mesh_camera_ray(*c.mesh, x + 0.5, y - 0.5, width, height, ray_number)
                                : projected_ray(c, x + 0.5, y - 0.5, width, height, x0, y0);
-  if (ray && c.projection == Projection::mesh) ray = along(ray->origin, ray->direction);
+  if (ray && through_lens && c.focal_blur) jitter_lens(*c.focal_blur, x + 0.5, y - 0.5, static_cast<int>(ray_number),
+                                                      ray->origin, ray->direction);
+  if (ray) ray = along(ray->origin, ray->direction);
   if (ray && c.normal) {
     // A camera normal bends the unit direction by its pattern at <x0, y0, 0> (POV-Ray has no hit there: uv, slope
     // and the like read nothing); the ray is normalised again.
@@ -184,6 +191,8 @@ RenderCamera make_render_camera(const Camera& camera) {
   c.angle = camera.angle;
   c.h_angle = camera.h_angle;
   c.v_angle = camera.v_angle;
+  if (std::optional<FocalBlurSetup> blur = make_focal_blur(camera))
+    c.focal_blur = std::make_shared<const FocalBlurSetup>(std::move(*blur));
   c.up_length = length(camera.up);
   c.right_length = length(camera.right);
   switch (camera.projection) {

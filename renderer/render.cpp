@@ -1,5 +1,6 @@
 #include "renderer/render.hpp"
 
+#include "renderer/focal_blur.hpp"
 #include "renderer/pretrace_run.hpp"
 #include "runtime/jitter.hpp"
 
@@ -63,12 +64,26 @@ class BlockRenderer {
 
  private:
   Sample shade(double x, double y) {
+    if (scene_.camera.focal_blur) [[unlikely]] return shade_focal_blur(x, y);
     const unsigned rays = camera_rays_per_pixel(scene_.camera);
     if (rays > 1) [[unlikely]] return shade_rays(x, y, rays);
     const std::optional<Ray> ray = camera_ray(scene_.camera, x, y, s_.width, s_.height);
     if (!ray) return {Rgb{0, 0, 0}, 1.0};   // POV-Ray: no ray traced, a black and fully transparent sample
     const Radiance r = tracer_.trace_camera_ray(*ray);
     return {r.colour, r.transmit};
+  }
+
+  // Focal blur: the sample is the mean of up to blur_samples rays through the lens (POV-Ray's
+  // TraceRayWithFocalBlur, focal_blur.hpp).
+  Sample shade_focal_blur(double x, double y) {
+    return focal_blur_sample<Sample>(*scene_.camera.focal_blur, x, y,
+                                     [&](double sx, double sy, int n) -> std::optional<Sample> {
+                                       const std::optional<Ray> ray = camera_ray(scene_.camera, sx, sy, s_.width,
+                                                                                 s_.height, static_cast<unsigned>(n), true);
+                                       if (!ray) return std::nullopt;
+                                       const Radiance r = tracer_.trace_camera_ray(*ray);
+                                       return Sample{r.colour, r.transmit};
+                                     });
   }
 
   // A mesh camera's rays per pixel: the mean of the rays it traces (POV-Ray's TracePixel; a sample without any is

@@ -74,8 +74,10 @@ RenderResult render(const RenderScene& scene, const RenderSettings& settings);
 // The camera ray through continuous pixel position (x, y) (integer = pixel centre, y = 0 top row); none where the
 // projection traces no ray (outside a fisheye's or omnimax's circle). renderer/camera.cpp.
 // Ray `ray_number` (0 … camera_rays_per_pixel − 1) of the sample at (x, y); none where the camera traces nothing.
+// With `through_lens` and a camera with focal blur, the ray leaves from lens point `ray_number` instead
+// (focal_blur.hpp; the sample's sub-pixel offset is the caller's).
 std::optional<Ray> camera_ray(const RenderCamera& camera, double x, double y, int width, int height,
-                              unsigned ray_number = 0);
+                              unsigned ray_number = 0, bool through_lens = false);
 // How many rays each sample averages (a mesh camera's rays per pixel, else 1).
 unsigned camera_rays_per_pixel(const RenderCamera& camera);
 // Whether camera rays start at different points (orthographic, cylinder 3 and 4).

@@ -192,6 +192,7 @@ struct RenderLight {
 // The camera as its rays are made (renderer/camera.cpp): the non-planar projections keep unit vectors, the
 // lengths they had and the aspect ratio POV-Ray derives from them.
 struct RenderMeshCamera;   // renderer/mesh_camera.hpp
+struct FocalBlurSetup;     // renderer/focal_blur.hpp
 
 struct RenderCamera {
   Projection projection = Projection::perspective;
@@ -202,6 +203,7 @@ struct RenderCamera {
   std::shared_ptr<const RenderNormal> normal{};
   std::vector<WaveSource> normal_waves{};
   std::shared_ptr<const RenderMeshCamera> mesh{};   // projection mesh
+  std::shared_ptr<const FocalBlurSetup> focal_blur{};   // aperture and blur_samples given (focal_blur.hpp)
 };
 
 // How working-space values become linear light for output (pipeline §6).

@@ -689,6 +689,20 @@ struct MeshCamera {
 };
 
 // Final camera vectors, resolved by the parser in POV-Ray's fixed order (pipeline §1).
+// Focal blur (camera aperture, blur_samples, confidence, variance, focal_point), POV-Ray 3.7's defaults. On when
+// aperture ≠ 0 and blur_samples > 0 (POV-Ray's useFocalBlur).
+struct FocalBlur {
+  double aperture = 0.0;
+  int samples = 0;            // blur_samples' maximum
+  int min_samples = 0;        // blur_samples MIN, MAX: the confidence test starts after MIN samples
+  double confidence = 0.9;
+  double variance = 1.0 / 10000.0;
+  // The distance to the plane in focus: |focal_point − location| (before the camera's transforms), else the
+  // direction's length as angle or look_at made it (1 without either; 1 also for a distance of 0). Negative
+  // until the camera is resolved.
+  double focal_distance = -1.0;
+};
+
 struct Camera {
   Projection projection = Projection::perspective;
   Vec3 location{0, 0, 0};
@@ -701,6 +715,7 @@ struct Camera {
   // (POV-Ray's CreateCameraRay: the projection's own x0, y0 after its last change).
   std::shared_ptr<const Normal> normal;
   std::shared_ptr<const MeshCamera> mesh;    // projection mesh
+  FocalBlur focal_blur;
   SourceLoc loc;
   Unsupported unsupported;
 };

@@ -25,6 +25,7 @@ class CameraLightParser : ParserPart {
  private:
   Camera parse_camera_transforms(Camera camera, Token t);
   std::optional<Projection> try_camera_type(const Token& t);
+  void parse_focal_blur_item(const Token& t, Camera& camera, std::optional<Vec3>& focal_point);
   std::shared_ptr<const MeshCamera> parse_mesh_camera(const Token& keyword, Unsupported& unsupported);
   void parse_area_light(const Token& keyword, Light& light);
   void parse_light_photons(const Token& keyword, Light& light);

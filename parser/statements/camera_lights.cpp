@@ -20,6 +20,7 @@ struct CameraInput {
   std::optional<double> angle;
   bool up_given = false, right_given = false;
   bool planar = true;   // perspective or orthographic: `angle` sets the direction's length
+  std::optional<Vec3> focal_point;   // POV-Ray 3.5 and later: its distance from the location once resolved
   Matrix transform;
 };
 
@@ -35,12 +36,15 @@ bool is_finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std:
 // look_at; then the orthographic resize; finally the camera's own transforms.
 Camera resolve_camera(const CameraInput& in, const std::function<void(const std::string&)>& warn) {
   Camera c = in.camera;
+  double direction_length = 1.0;   // POV-Ray's Direction_Length: set by angle and look_at only
   if (in.angle && *in.angle > 0 && in.planar) {   // POV-Ray applies an angle of 0 as no angle
-    c.direction = pov_normalized(c.direction) * (length(c.right) / std::tan(*in.angle * kPovPiOver360) / 2.0);
+    direction_length = length(c.right) / std::tan(*in.angle * kPovPiOver360) / 2.0;
+    c.direction = pov_normalized(c.direction) * direction_length;
   }
   if (in.angle && !in.planar) c.angle = *in.angle;   // the other projections read it as it is
   if (in.look_at) {   // parse_camera has refused a look_at at the location, and a zero right where it is needed
     const double dl = length(c.direction), ul = length(c.up), rl = length(c.right);
+    direction_length = dl;
     const double handedness = dot(cross(c.up, c.direction), c.right);
     const Vec3 d = pov_normalized(*in.look_at - c.location);
     Vec3 r = cross(in.sky, d);
@@ -65,6 +69,12 @@ Camera resolve_camera(const CameraInput& in, const std::function<void(const std:
       c.up = c.up * (k1 / k2);
     }
   }
+  // The focal distance (Parse_Camera): focal_point's distance from the location, before the transforms; else the
+  // direction's length as angle or look_at left it; 0 becomes 1.
+  FocalBlur& blur = c.focal_blur;
+  if (in.focal_point) blur.focal_distance = length(*in.focal_point - c.location);
+  if (blur.focal_distance < 0.0) blur.focal_distance = direction_length;
+  if (blur.focal_distance == 0.0) blur.focal_distance = 1.0;
   c.location = in.transform.point(c.location);
   c.direction = in.transform.vector(c.direction);
   c.up = in.transform.vector(c.up);
@@ -148,6 +158,46 @@ std::optional<Projection> CameraLightParser::try_camera_type(const Token& t) {
     case 3: return Projection::cylinder3;
     case 4: return Projection::cylinder4;
     default: fail_at(at, "invalid cylinder camera type, valid are types 1 to 4 (as in POV-Ray)");
+  }
+}
+
+// aperture, blur_samples, confidence, variance and focal_point (POV-Ray's Parse_Camera_Mods; before 3.5 its old
+// syntax: blur_samples takes one number and focal_point's distance is taken from the location written so far).
+void CameraLightParser::parse_focal_blur_item(const Token& t, Camera& camera, std::optional<Vec3>& focal_point) {
+  FocalBlur& blur = camera.focal_blur;
+  const bool new_syntax = language_version() >= 350;
+  if (t.is("aperture")) {
+    blur.aperture = parse_float();
+  } else if (t.is("blur_samples")) {
+    const int first = saturating_cast<int>(parse_float());
+    if (first <= 0) fail_at(t, "blur_samples must be at least 1 (POV-Ray: \"Illegal number of focal blur samples\")");
+    if (!new_syntax) {
+      blur.samples = first;
+      return;
+    }
+    accept(",");
+    const int second = saturating_cast<int>(optional_float(0.0));
+    if (second == 0) {   // one number: the maximum, with no minimum
+      blur.samples = first;
+      blur.min_samples = 0;
+    } else if (first > second) {
+      fail_at(t, "the minimum of blur_samples must not be larger than its maximum (as in POV-Ray)");
+    } else {
+      blur.min_samples = first;
+      blur.samples = second;
+    }
+  } else if (t.is("confidence")) {
+    const double k = parse_float();
+    if (k > 0.0 && k < 1.0) blur.confidence = k;
+    else warn(t.loc, "illegal confidence value (it must lie between 0 and 1); the default 0.9 is used, as in POV-Ray");
+  } else if (t.is("variance")) {
+    const double k = parse_float();
+    if (k >= 0.0 && k <= 1.0) blur.variance = k;
+    else warn(t.loc, "illegal variance value (it must lie in 0 … 1); the default 1/10000 is used, as in POV-Ray");
+  } else {   // focal_point
+    const Vec3 p = parse_vector();
+    if (new_syntax) focal_point = p;
+    else blur.focal_distance = length(p - camera.location);
   }
 }
 
@@ -238,7 +288,12 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
         continue;
       }
       if (k == "aperture" || k == "focal_point" || k == "blur_samples" || k == "confidence" || k == "variance") {
-        taint(in.camera.unsupported, skip_unsupported(t, "the camera item '" + std::string(k) + "'"));
+        parse_focal_blur_item(t, in.camera, in.focal_point);
+        t = next();
+        continue;
+      }
+      if (k == "bokeh") {
+        taint(in.camera.unsupported, skip_unsupported(t, "the camera item 'bokeh'"));
         t = next();
         continue;
       }

@@ -128,8 +128,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "unsupported: the pigment item 'pavement'"},
         ErrorCase{"CutawayTextures", "#version 3.7;\nsphere { 0, 1 cutaway_textures }\n", 2, 1,
                   "unsupported: the object modifier 'cutaway_textures'"},
-        ErrorCase{"FocalBlur", "#version 3.7;\ncamera { aperture 0.4 }\n", 2, 1,
-                  "unsupported: the camera item 'aperture'"}),
+        ErrorCase{"Bokeh", "#version 3.7;\ncamera { bokeh { pigment { rgb 1 } } }\n", 2, 1,
+                  "unsupported: the camera item 'bokeh'"}),
     [](const auto& p) { return p.param.name; });
 
 // Cameras POV-Ray 3.7 refuses (Parse_Camera), and those it renders with NaN or directionless rays (a picture of the
