@@ -305,6 +305,12 @@ Camera CameraLightParser::parse_camera(const Token& keyword) {
   const auto warn_here = [&](const std::string& m) { warn(keyword.loc, m); };
   check_camera(in, at, povray_tolerances(), [&](const Token& where, const std::string& m) { fail_at(where, m); },
                warn_here);
+  // POV-Ray traces a mesh camera's blurred rays from mesh number `ray` (one per blur sample), which povtrace does not
+  // do: refused by name rather than rendered unblurred.
+  if (in.camera.projection == Projection::mesh && in.camera.focal_blur.aperture != 0.0 &&
+      in.camera.focal_blur.samples > 0) {
+    taint(in.camera.unsupported, UnsupportedFeature{"focal blur (aperture, blur_samples) on a mesh_camera", keyword.loc});
+  }
   const Camera c = resolve_camera(in, warn_here);
   if (!is_finite(c.location) || !is_finite(c.direction) || !is_finite(c.up) || !is_finite(c.right))
     fail_at(keyword, "the camera's vectors overflow (a coordinate beyond the range of floating point numbers)");

@@ -88,6 +88,15 @@ TEST(FocalBlurParse, OldSyntax) {
   EXPECT_EQ(s.camera.focal_blur.focal_distance, 4.0);
 }
 
+TEST(FocalBlurParse, MeshCameraBlurIsReportedByName) {
+  const std::string text = "#version 3.7;\ncamera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } "
+                           "aperture 0.5 blur_samples 4 }\nsphere { 0, 1 pigment { rgb 1 } }\n";
+  const ParseError e = parse_error(text);
+  EXPECT_NE(e.bare_message().find("unsupported: focal blur (aperture, blur_samples) on a mesh_camera"),
+            std::string::npos);
+  EXPECT_EQ(e.location().line, 2);
+}
+
 TEST(FocalBlurParse, BokehIsReportedByName) {
   EXPECT_NE(parse_error("#version 3.7;\ncamera { bokeh { pigment { rgb 1 } } }\n").bare_message().find(
                 "unsupported: the camera item 'bokeh'"),
