@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "scene/vecmath.hpp"
@@ -160,11 +161,26 @@ struct SurfaceHit {
 // The material(s) at a hit: one (the leaf's, or a mesh triangle's own), or three with weights for a mesh triangle
 // with a texture_list (POV-Ray shades with each texture and blends the colours by the barycentric weights).
 struct MaterialBlend {
-  std::uint32_t material[3] = {0, 0, 0};
-  double weight[3] = {1, 0, 0};
+  static constexpr int kInline = 3;   // a mesh triangle's three; a blob's components past these go to `more`
+  std::uint32_t material[kInline] = {0, 0, 0};
+  double weight[kInline] = {1, 0, 0};
   int count = 1;
+  std::vector<std::pair<std::uint32_t, double>> more;
+  std::uint32_t material_of(int k) const { return k < kInline ? material[k] : more[std::size_t(k - kInline)].first; }
+  double weight_of(int k) const { return k < kInline ? weight[k] : more[std::size_t(k - kInline)].second; }
+  void set_weight(int k, double w) { (k < kInline ? weight[k] : more[std::size_t(k - kInline)].second) = w; }
+  void add(std::uint32_t m, double w) {
+    if (count < kInline) {
+      material[count] = m;
+      weight[count] = w;
+    } else {
+      more.emplace_back(m, w);
+    }
+    ++count;
+  }
 };
-MaterialBlend materials_at(const SurfaceHit& hit);
+// `world_point`: where on the leaf (a blob with component textures weighs them there).
+MaterialBlend materials_at(const SurfaceHit& hit, Vec3 world_point);
 
 // The uv coordinates of a hit for uv_mapping (POV-Ray's UVCoord, shapes/uv_coordinates.cpp): spheres, boxes, tori
 // and meshes have their own; every other shape gives the world point's x and y, divided by `scene_scale` (the factor a

@@ -127,6 +127,19 @@ class MaterialTable {
 // children side by side gives (POV-Ray splits such unions too). The parser has already moved the union's
 // transforms and inherited textures into the children. Other CSG, and clipped or bounded objects, become one
 // CSG node (csg_build.hpp) whose leaves are built by add_primitives like any other shape.
+// A mesh's triangle textures, or a blob's component textures (a component without one shades with the blob's
+// texture), as consecutive materials of the primitive just built from `o`.
+void attach_element_materials(const Object& o, MaterialTable& materials, Primitive& built) {
+  if (const auto* mesh = std::get_if<Mesh>(&o.shape)) {
+    built.element_materials = materials.append(mesh->textures, o);
+  } else if (const auto* blob = std::get_if<Blob>(&o.shape); blob && !blob->textures.empty()) {
+    std::vector<std::shared_ptr<const Texture>> textures = blob->textures;
+    for (auto& t : textures)
+      if (!t) t = o.texture;
+    built.element_materials = materials.append(textures, o);
+  }
+}
+
 void add_object(const Object& o, std::uint32_t object_index, MaterialTable& materials, const BuildContext& context,
                 std::vector<Primitive>& out) {
   if (splits_into_children(o)) {
@@ -138,6 +151,7 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
         o,
         [&](const Object& leaf, bool shaded, std::vector<Primitive>& dst) {
           add_shape_primitives(leaf, shaded ? materials.material_for(leaf) : 0, object_index, context, dst);
+          if (shaded && std::holds_alternative<Blob>(leaf.shape)) attach_element_materials(leaf, materials, dst.back());
         },
         context);
     node.material = materials.material_for(o);   // only for whole-object checks; hits shade their leaf's material
@@ -146,8 +160,7 @@ void add_object(const Object& o, std::uint32_t object_index, MaterialTable& mate
     return;
   }
   add_shape_primitives(o, materials.material_for(o), object_index, context, out);
-  if (const auto* mesh = std::get_if<Mesh>(&o.shape))
-    out.back().element_materials = materials.append(mesh->textures, o);
+  attach_element_materials(o, materials, out.back());
 }
 
 

@@ -1,6 +1,8 @@
 // Whitted tracing with POV-Ray 3.7's shading (povray-pixel-pipeline.md §2–§5). Comments cite the section of
 // that document whose behaviour each step reproduces.
 #include "renderer/tracer.hpp"
+
+#include "renderer/shapes/blob.hpp"
 #include "renderer/render.hpp"
 #include "renderer/shading_helpers.hpp"
 
@@ -229,14 +231,14 @@ Radiance mix(const Radiance& a, double wa, const Radiance& b, double wb) {
 MaterialBlend Tracer::materials_facing(const SurfaceHit& hit, Vec3 point, Vec3 direction) const {
   const std::uint32_t inside = scene_.materials[hit.leaf->material].interior_material;
   if (inside == ~0u) [[likely]]
-    return materials_at(hit);
+    return materials_at(hit, point);
   const double along = dot(surface_normal(hit, point), direction);
   if (hit.leaf->inverse ? along < 0.0 : along > 0.0) {
     MaterialBlend blend;
     blend.material[0] = inside;
     return blend;
   }
-  return materials_at(hit);
+  return materials_at(hit, point);
 }
 
 Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, double weight, const RayState& state) {
@@ -250,17 +252,17 @@ Radiance Tracer::shade_hit(const Ray& ray, const SurfaceHit& hit, int level, dou
   const Vec3 point = hit_point(ray, hit);
   const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
-  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
+  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material_of(k)].needs_uv;
   const TexturePoint at = texture_point(hit, point, uv, scene_.scale);
-  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material[0]], at, level, weight, state);
+  if (blend.count == 1) return shade_material(ray, hit, scene_.materials[blend.material_of(0)], at, level, weight, state);
   // A mesh triangle with a texture_list: each texture shaded whole, the results blended by their weights; weights
   // below adc_bailout are skipped (POV-Ray's ComputeTextureColour).
   Radiance out;
   for (int k = 0; k < blend.count; ++k) {
-    if (blend.weight[k] < adc_bailout_) continue;
-    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material[k]], at, level, weight, state);
-    out.colour += r.colour * blend.weight[k];
-    out.transmit += r.transmit * blend.weight[k];
+    if (blend.weight_of(k) < adc_bailout_) continue;
+    const Radiance r = shade_material(ray, hit, scene_.materials[blend.material_of(k)], at, level, weight, state);
+    out.colour += r.colour * blend.weight_of(k);
+    out.transmit += r.transmit * blend.weight_of(k);
   }
   return out;
 }
@@ -574,14 +576,14 @@ std::optional<Tracer::LightRay> Tracer::cylinder_light_at(const RenderLight& l, 
 // filters of the textures its pattern picks, blended as their colours would be.
 Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction) {
   const MaterialBlend blend = materials_facing(hit, at, direction);
-  if (blend.count == 1 && scene_.materials[blend.material[0]].opaque) return {0, 0, 0};
+  if (blend.count == 1 && scene_.materials[blend.material_of(0)].opaque) return {0, 0, 0};
   bool uv = false;
-  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
+  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material_of(k)].needs_uv;
   TexturePoint point = texture_point(hit, at, uv, scene_.scale);
   ShadingSurface surface;
   Rgb through{0, 0, 0};
   for (int k = 0; k < blend.count; ++k) {
-    const Material& m = scene_.materials[blend.material[k]];
+    const Material& m = scene_.materials[blend.material_of(k)];
     if (m.opaque) continue;
     if (m.needs_surface && !point.surface) {   // slope, aoi: the normal facing the shadow ray (trace.cpp)
       const Vec3 geometric = surface_normal(hit, at);
@@ -592,10 +594,10 @@ Rgb Tracer::filter_through(const SurfaceHit& hit, Vec3 at, Vec3 direction) {
       const Vec3 geometric = surface_normal(hit, at);
       std::vector<const RenderTexture*> path;
       const CausticsAt c{dot(geometric, direction) > 0 ? -geometric : geometric, direction, m.interior.caustics, &path};
-      through += texture_filter(m.texture, material_point(m, point), &c) * blend.weight[k];
+      through += texture_filter(m.texture, material_point(m, point), &c) * blend.weight_of(k);
       continue;
     }
-    through += texture_filter(m.texture, material_point(m, point)) * blend.weight[k];
+    through += texture_filter(m.texture, material_point(m, point)) * blend.weight_of(k);
   }
   return through;
 }
@@ -679,8 +681,20 @@ Rgb Tracer::shadow_filter(const RenderLight& l, Vec3 point, Vec3 to_light, doubl
 }
 
 bool Tracer::opaque_at(const SurfaceHit& hit) const {
-  const MaterialBlend blend = materials_at(hit);
-  return blend.count == 1 && scene_.materials[blend.material[0]].opaque;
+  const Primitive& p = *hit.leaf;
+  if (p.type == ShapeType::blob) {   // POV-Ray's Test_Blob_Opacity: its texture and every component's opaque
+    if (const std::uint32_t n = shapes::blob_texture_count(p)) {
+      if (!scene_.materials[p.material].opaque) return false;
+      for (std::uint32_t k = 0; k < n; ++k)
+        if (!scene_.materials[p.element_materials + k].opaque) return false;
+      return true;
+    }
+  }
+  if (p.type == ShapeType::mesh) {
+    const MaterialBlend blend = materials_at(hit, Vec3{});   // a triangle's textures: its weights need no point
+    return blend.count == 1 && scene_.materials[blend.material_of(0)].opaque;
+  }
+  return scene_.materials[p.material].opaque;
 }
 
 namespace {

@@ -518,6 +518,10 @@ struct Blob {
   double threshold = 1;
   bool sturm = false;
   std::shared_ptr<const std::vector<BlobComponent>> components;
+  // Each component's own texture (`sphere { … texture { … } }`), moved by the component's transforms after it and by
+  // the blob's; null where the component has none (the blob's texture shades its share). Empty when no component
+  // has one. POV-Ray blends the textures of the components whose field reaches a point by those fields.
+  std::vector<std::shared_ptr<const Texture>> textures;
 };
 
 // isosurface { function { F } [contained_by { box { C1, C2 } | sphere { C, R } }] [threshold T] [accuracy A]

@@ -98,6 +98,9 @@ void transform_object(Object& object, const Matrix& m, TransformKind kind, Objec
   }
   if (auto* mesh = std::get_if<Mesh>(&object.shape); mesh && !object.uv_mapping)
     for (auto& texture : mesh->textures) transform_texture(texture, m);   // a mesh's triangle textures move with it
+  if (auto* blob = std::get_if<Blob>(&object.shape); blob && !object.uv_mapping)
+    for (auto& texture : blob->textures)   // as Blob::Transform moves each Element_Texture
+      if (texture && !texture_ignores_transforms(*texture)) transform_texture(texture, m);
   // A bicubic_patch keeps no matrix: POV-Ray moves its control points (MTransPoint) and subdivides them as they are.
   if (auto* patch = std::get_if<BicubicPatch>(&object.shape)) {
     for (Vec3& p : patch->points) p = m.point(p);

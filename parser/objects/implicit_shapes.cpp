@@ -8,7 +8,10 @@
 //   `cylinder { B, A, R, [strength] S mods }` and the old `component S, R, C`. Commas are optional. A cylinder whose
 //   ends are closer than 1e-10 is an error. A sphere component keeps its centre and radius through translate,
 //   rotate and a uniform scale (centre scaled, radius² by the square); a non-uniform scale, matrix or transform turns
-//   it into an ellipsoid placed by its own transform. A component's own texture is refused by name.
+//   it into an ellipsoid placed by its own transform. A component may have its own texture, moved by its transforms.
+#include <algorithm>
+
+#include "scene/description_transforms.hpp"
 #include "parser/interpreter.hpp"
 #include "parser/objects/object_parser.hpp"
 
@@ -32,7 +35,12 @@ bool is_uniform_scaling(const Matrix& m) {
 }
 }  // namespace
 
-void ObjectParser::parse_blob_component_modifiers(BlobComponent& c, Object& blob) {
+// A component's transforms move it and the texture it has so far (POV-Ray's Translate_Blob_Element and friends
+// call Transform_Textures); its texture, pigment, normal and finish build its own texture as an object's do
+// (Parse_Blob_Element_Mods: texture blocks stack as layers, a pigment, normal or finish edits the top layer of the
+// texture so far, or of a copy of the #default texture).
+void ObjectParser::parse_blob_component_modifiers(BlobComponent& c, std::shared_ptr<const Texture>& texture,
+                                                   Object& blob) {
   while (true) {
     const Token t = next();
     if (t.is("}")) return;
@@ -46,8 +54,31 @@ void ObjectParser::parse_blob_component_modifiers(BlobComponent& c, Object& blob
         if (c.kind == BlobComponentKind::sphere) c.kind = BlobComponentKind::ellipsoid;
         c.transform = c.transform * m;
       }
-    } else if (t.is("texture") || t.is("pigment") || t.is("finish") || t.is("normal")) {
-      taint(blob.unsupported, skip_unsupported(t, "a blob component's own texture"));
+      transform_texture(texture, m);
+    } else if (t.is("texture")) {
+      auto tex = textures_.parse_texture_block(t);
+      textures_.refuse_layering(t, texture.get(), tex->patterned());
+      if (!texture) {
+        texture = std::move(tex);
+      } else {
+        auto layered = std::make_shared<Texture>(*texture);
+        for (const auto& l : tex->layers) layered->layers.push_back(l);
+        texture = std::move(layered);
+      }
+    } else if (t.is("pigment") || t.is("finish") || t.is("normal")) {
+      textures_.refuse_layering(t, texture.get(), false);
+      auto own = std::make_shared<Texture>(texture ? *texture : default_texture());
+      TextureLayer& layer = own->layers.back();
+      if (t.is("pigment")) {
+        layer.pigment = textures_.parse_pigment_block(t, layer.pigment);
+      } else if (t.is("finish")) {
+        layer.finish = textures_.parse_finish_block(t, layer.finish);
+      } else {
+        layer.normal = std::make_shared<const Normal>(
+            textures_.parse_normal_block(t, textures_.starting_normal(layer.normal.get())));
+        taint(blob.unsupported, layer.normal->unsupported);
+      }
+      texture = std::move(own);
     } else {
       fail_expected(t, "a transform, texture, pigment, normal, finish or '}' in a blob component");
     }
@@ -101,18 +132,20 @@ Object ObjectParser::parse_blob(const Token& keyword) {
   o.loc = keyword.loc;
   Blob b;
   auto components = std::make_shared<std::vector<BlobComponent>>();
+  std::vector<std::shared_ptr<const Texture>> textures;   // one per component
   while (true) {
     const Token t = next();
     if (t.is("threshold")) {
       b.threshold = parse_float();
     } else if (t.is("component")) {
       components->push_back(parse_blob_sphere(true));
+      textures.emplace_back();
     } else if (t.is("sphere")) {
       components->push_back(parse_blob_sphere(false));
-      parse_blob_component_modifiers(components->back(), o);
+      parse_blob_component_modifiers(components->back(), textures.emplace_back(), o);
     } else if (t.is("cylinder")) {
       components->push_back(parse_blob_cylinder(t));
-      parse_blob_component_modifiers(components->back(), o);
+      parse_blob_component_modifiers(components->back(), textures.emplace_back(), o);
     } else {
       unget(t);
       break;
@@ -120,6 +153,8 @@ Object ObjectParser::parse_blob(const Token& keyword) {
   }
   if (components->empty()) fail_at(keyword, "a blob needs at least one component (POV-Ray refuses it too)");
   b.components = std::move(components);
+  if (std::any_of(textures.begin(), textures.end(), [](const auto& t) { return t != nullptr; }))
+    b.textures = std::move(textures);
   o.shape = b;
   parse_object_modifiers(o);
   extents().made(o);   // Make_Blob computes the box after the blob's own modifiers

@@ -136,7 +136,7 @@ class ObjectParser : ParserPart {
   Object parse_blob(const Token& keyword);
   BlobComponent parse_blob_sphere(bool old_syntax);
   BlobComponent parse_blob_cylinder(const Token& keyword);
-  void parse_blob_component_modifiers(BlobComponent& c, Object& blob);
+  void parse_blob_component_modifiers(BlobComponent& c, std::shared_ptr<const Texture>& texture, Object& blob);
 
   // ---- lathe, prism, sor (sweep_shapes.cpp) ----
   Object parse_lathe(const Token& keyword);

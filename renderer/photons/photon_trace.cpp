@@ -73,7 +73,7 @@ void Tracer::photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, i
   const Vec3 point = hit_point(ray, hit);
   const MaterialBlend blend = materials_facing(hit, point, ray.direction);
   bool uv = false;
-  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material[k]].needs_uv;
+  for (int k = 0; k < blend.count; ++k) uv = uv || scene_.materials[blend.material_of(k)].needs_uv;
   TexturePoint at = texture_point(hit, point, uv, scene_.scale);
   const Vec3 geometric = surface_normal(hit, point);
   const Vec3 raw_normal = dot(geometric, ray.direction) > 0 ? -geometric : geometric;
@@ -82,9 +82,9 @@ void Tracer::photon_surface(const Ray& ray, const SurfaceHit& hit, Rgb colour, i
   const ShadingPoint sp{hit, point, raw_normal, warps_.size()};
   const PhotonHit here{ray, sp, level, weight, state, shot};
   for (int k = 0; k < blend.count; ++k) {
-    if (blend.weight[k] < photon_adc_) continue;
-    const Material& m = scene_.materials[blend.material[k]];
-    photon_texture(here, m.texture, material_point(m, at), colour * blend.weight[k]);
+    if (blend.weight_of(k) < photon_adc_) continue;
+    const Material& m = scene_.materials[blend.material_of(k)];
+    photon_texture(here, m.texture, material_point(m, at), colour * blend.weight_of(k));
   }
 }
 

@@ -290,6 +290,27 @@ Vec3 element_normal(const BlobElement& e, Vec3 q) {
 }
 }  // namespace
 
+void blob_materials(const Primitive& p, Vec3 world_point, MaterialBlend& blend) {
+  const BlobData& b = data_of(p);
+  const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;
+  blend.count = 0;
+  float sum = 0.0f;
+  for (const auto& e : b.elements) {
+    const auto density = static_cast<float>(std::fabs(element_density(e, q)));
+    if (density > 0.0f) {
+      blend.add(p.element_materials + e.component, density);
+      sum += density;
+    }
+  }
+  if (blend.count == 0) {   // no field reaches the point (a hit found at the threshold's edge): POV-Ray shades nothing
+    return;
+  }
+  const auto scale = static_cast<float>(1.0 / sum);
+  for (int k = 0; k < blend.count; ++k) blend.set_weight(k, static_cast<float>(blend.weight_of(k)) * scale);
+}
+
+std::uint32_t blob_texture_count(const Primitive& p) { return data_of(p).textured_components; }
+
 Vec3 BlobShape::normal(const Primitive& p, Vec3 world_point) {
   const BlobData& b = data_of(p);
   const Vec3 q = p.transformed ? p.object_from_world.point(world_point) : world_point;

@@ -12,8 +12,10 @@ std::shared_ptr<BlobData> blob_data(const Blob& b) {
   auto d = std::make_shared<BlobData>();
   d->threshold = b.threshold;
   d->sturm = b.sturm;
+  d->textured_components = static_cast<std::uint32_t>(b.textures.size());
   for (auto it = b.components->rbegin(); it != b.components->rend(); ++it) {
     BlobElement e;
+    e.component = static_cast<std::uint32_t>(b.components->rend() - it - 1);
     e.centre = it->centre;
     e.radius2 = it->radius2;
     const double s = it->strength, r2 = it->radius2;

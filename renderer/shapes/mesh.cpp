@@ -25,6 +25,7 @@
 #include "renderer/shapes/triangle_shapes.hpp"
 #include "renderer/shapes/watertight.hpp"
 #include "renderer/shapes/mesh.hpp"
+#include "renderer/shapes/blob.hpp"
 #include "renderer/shared_meshes.hpp"
 
 namespace povtrace::render::shapes {
@@ -212,10 +213,14 @@ namespace povtrace::render {
 
 // A hit's material(s): the leaf's, or for a mesh triangle with textures of its own, the materials of those
 // (texture k of the placement's list is material element_materials + k).
-MaterialBlend materials_at(const SurfaceHit& hit) {
+MaterialBlend materials_at(const SurfaceHit& hit, Vec3 world_point) {
   const Primitive& p = *hit.leaf;
   MaterialBlend blend;
   blend.material[0] = p.material;
+  if (p.type == ShapeType::blob && shapes::blob_texture_count(p) > 0) {
+    shapes::blob_materials(p, world_point, blend);
+    return blend;
+  }
   if (p.type != ShapeType::mesh) return blend;
   const MeshData& data = *shapes::shape_of(p).data;
   if (data.face_textures.empty()) return blend;

@@ -107,8 +107,32 @@ TEST(SolidShapes, BlobRefusals) {
   EXPECT_NE(e.bare_message().find("degenerate cylindrical component"), std::string::npos) << e.bare_message();
   e = parse_error("#version 3.7;\nblob { threshold 1 }\n");
   EXPECT_NE(e.bare_message().find("at least one component"), std::string::npos) << e.bare_message();
-  e = parse_error("#version 3.7;\nblob { sphere { 0, 1, 1 pigment { rgb 1 } } }\n");
-  EXPECT_NE(e.bare_message().find("a blob component's own texture"), std::string::npos) << e.bare_message();
+}
+
+// Parse_Blob_Element_Mods: a component's texture, pigment, normal and finish make its own texture (from a copy of the
+// #default texture); transforms after it move it (Transform_Textures), those before do not; the blob's transforms
+// move every component texture; components without one keep none (the blob's texture shades them).
+TEST(SolidShapes, BlobComponentTextures) {
+  const SceneDescription s = parse(
+      "#version 3.7;\n#default { finish { ambient 0.3 } }\n"
+      "blob { sphere { 0, 1, 1 translate x pigment { bozo } translate y }\n"
+      "       sphere { x, 1, 1 }\n"
+      "       cylinder { 0, y, 1, 1 texture { pigment { rgb 1 } } texture { pigment { rgbf 0.5 } } }\n"
+      "       pigment { rgb 0.5 } translate z }\n");
+  const auto& blob = std::get<Blob>(s.objects.at(0).shape);
+  ASSERT_EQ(blob.textures.size(), 3u);
+  ASSERT_TRUE(blob.textures[0]);
+  EXPECT_FALSE(blob.textures[1]);
+  ASSERT_TRUE(blob.textures[2]);
+  const Texture& first = *blob.textures[0];
+  EXPECT_EQ(first.layers.back().finish.ambient.r, static_cast<double>(0.3f));   // from the #default texture
+  EXPECT_EQ(first.layers.back().pigment.pattern, PatternKind::bozo);
+  // translate y (after the pigment) and the blob's translate z moved the bozo; translate x (before) did not.
+  const Vec3 at = first.layers.back().pigment.world_from_pattern.point(Vec3{0, 0, 0});
+  EXPECT_EQ(at, (Vec3{0, 1, 1}));
+  EXPECT_EQ(blob.textures[2]->layers.size(), 2u);   // two texture blocks stack as layers
+  const SceneDescription none = parse("#version 3.7;\nblob { sphere { 0, 1, 1 } pigment { rgb 1 } }\n");
+  EXPECT_TRUE(std::get<Blob>(none.objects.at(0).shape).textures.empty());
 }
 
 }  // namespace
