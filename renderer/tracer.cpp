@@ -725,8 +725,12 @@ bool Tracer::cached_occluder_blocks(std::uint32_t primitive, const Ray& ray, dou
 // in (it starts in those of the ray that reached the point), and light fades over each stretch inside one (§3).
 namespace {
 // A julia_fractal outside CSG reports only the first surface its march meets (POV-Ray's Fractal::All_Intersections
-// stops there), so the surfaces beyond it are found only by the ray POV-Ray's shadow walk starts from that hit.
-bool reports_first_hit_only(const Primitive& p) { return p.type == ShapeType::julia_fractal && !p.csg_child; }
+// stops there), and a blob outside CSG only the crossings of the first stretch of its field that has any (Blob::
+// All_Intersections stops there), so the surfaces beyond are found only by the ray POV-Ray's shadow walk starts
+// from that hit.
+bool reports_first_hit_only(const Primitive& p) {
+  return (p.type == ShapeType::julia_fractal || p.type == ShapeType::blob) && !p.csg_child;
+}
 }  // namespace
 
 // POV-Ray moves its shadow ray to each crossing it counts and looks again from there: for an object that reports only
