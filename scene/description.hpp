@@ -77,6 +77,7 @@ struct ImageMap {
   int interpolate = 0;       // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
   bool once = false;
   bool use_index = false;    // bump_map: palette indices instead of the colours' grey
+  bool use_alpha = false;    // image_pattern: the alpha (transmit) channel, or red without one, instead of the grey
   double repeat_u = 1, repeat_v = 1;   // `repeat <u, v>`: the image spans 1/u by 1/v units
   double offset_u = 0, offset_v = 0;   // `offset <u, v>` in image widths and heights
   std::vector<ImageChannelSetting> channels;
@@ -110,6 +111,7 @@ enum class PatternKind {
   bumps, dents, wrinkles, ripples, waves,                           // the normal patterns used as pigments
   average,                                                          // mean of its pigment_map's pigments
   image_map,                                                        // the colour of an image (Pigment::image)
+  image_pattern,                                                    // an image's grey or alpha (Pigment::image)
   function,                                                         // a user function of x, y, z (Pigment::function)
   spiral1, spiral2,                                                 // spirals around z with Pigment::arms arms
   quilted,                                                          // rounded cells (Pigment::control0/1)

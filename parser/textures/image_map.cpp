@@ -172,6 +172,38 @@ void TextureParser::parse_image_map(const Token& keyword, Pigment& p) {
   p.image = std::move(m);
 }
 
+// image_pattern { [type] "file" [gamma G] once map_type interpolate use_colour use_index use_alpha repeat offset }
+// (POV-Ray's Parse_Image_Pattern): a pattern whose value is the image's grey (or with use_alpha its alpha, or red
+// without an alpha channel), read without gamma handling as a bump_map's image; the pattern's map, modifiers and
+// wave follow as for any pattern.
+void TextureParser::parse_image_pattern(const Token& keyword, Pigment& p) {
+  const NestingGuard guard(*this, keyword);
+  expect("{", " after 'image_pattern'");
+  auto m = std::make_shared<ImageMap>();
+  parse_image_file(keyword, *m, p.unsupported);
+  m->gamma.mode = ImageGammaMode::none;
+  m->gamma.working = 1.0;
+  for (Token t = next(); !t.is("}"); t = next()) {
+    if (t.is("use_alpha")) {
+      m->use_alpha = true;
+      continue;
+    }
+    if (t.is("use_colour") || t.is("use_color") || t.is("use_index")) m->use_alpha = false;
+    if (t.is("interpolate")) {   // 1 and values beyond 4 leave POV-Ray's weights undefined
+      m->interpolate = static_cast<int>(parse_float());
+      if (m->interpolate < 0 || m->interpolate == 1 || m->interpolate > 4)
+        taint(p.unsupported, UnsupportedFeature{"image_pattern interpolate " + std::to_string(m->interpolate), t.loc});
+      continue;
+    }
+    if (!try_image_item(t, *m, true))
+      fail_expected(t, "once, interpolate, map_type, use_colour, use_index, use_alpha, repeat, offset or '}' in "
+                       "image_pattern { }");
+  }
+  p.pattern = PatternKind::image_pattern;
+  p.frequency = 0.0;   // Parse_Pattern sets Frequency 0 for it
+  p.image = std::move(m);
+}
+
 // bump_map { … } (the normal's pattern): the image is read without gamma handling unless `gamma` is given, and
 // then decoded with that gamma alone (Parse_Image's GammaCorrect off for bump maps).
 void TextureParser::parse_bump_map(const Token& keyword, Normal& n) {

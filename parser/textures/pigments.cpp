@@ -238,6 +238,10 @@ bool TextureParser::try_pattern(const Token& t, Pigment& p) {
     parse_slope_pattern(t, p);
     return true;
   }
+  if (t.is("image_pattern")) {
+    parse_image_pattern(t, p);
+    return true;
+  }
   if (t.is("pigment_pattern")) {   // a pigment of its own, from plain black (Create_Pigment), not the #default one
     const NestingGuard guard(*this, t);
     expect("{", " after 'pigment_pattern'");

@@ -104,6 +104,7 @@ class TextureParser : ParserPart {
   void parse_image_channel(const Token& keyword, ImageMap& m);
   bool try_image_item(const Token& t, ImageMap& m, bool bump);
   void parse_image_map(const Token& keyword, Pigment& p);
+  void parse_image_pattern(const Token& keyword, Pigment& p);
   void parse_bump_map(const Token& keyword, Normal& n);
 
   // ---- patterned textures (texture_patterns.cpp) ----

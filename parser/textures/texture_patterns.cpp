@@ -37,7 +37,7 @@ bool TextureParser::starts_texture_pattern(const Token& t) {
       "checker", "hexagon", "brick", "gradient", "radial", "onion", "planar", "boxed", "spherical", "cylindrical",
       "leopard", "bozo", "spotted", "granite", "marble", "wood", "agate", "crackle", "cells", "average", "function", "spiral1", "spiral2", "quilted",
       "mandel", "julia", "magnet", "slope", "aoi", "pigment_pattern", "bumps", "dents", "wrinkles", "ripples", "waves", "density_file",
-      "object"};
+      "object", "image_pattern"};
   for (auto p : patterns)
     if (t.is(p)) return true;
   return false;

@@ -215,6 +215,16 @@ std::size_t material_map_index(const RenderImageMap& image, Vec3 pattern_point, 
   return static_cast<std::size_t>(std::clamp(number, 0L, n - 1));
 }
 
+double image_pattern_value(const RenderImageMap& image, Vec3 pattern_point) {
+  const std::optional<std::array<double, 2>> at = image_position(image.mapping, pattern_point);
+  if (!at) return 0.0;
+  const Texel c = image_colour_at(*image.image, image.mapping, (*at)[0], (*at)[1]);
+  double value;
+  if (image.use_alpha) value = image.image->alpha_channel ? c.t : c.r;
+  else value = static_cast<float>(0.297 * c.r + 0.589 * c.g + 0.114 * c.b);
+  return std::clamp(value, 0.0, 1.0);
+}
+
 }  // namespace povtrace::render
 
 namespace povtrace::render::patterns {

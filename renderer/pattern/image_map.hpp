@@ -58,10 +58,16 @@ struct RenderImageMap;
 // then the last texture at most (POV-Ray walks its list of textures that far).
 std::size_t material_map_index(const RenderImageMap& image, Vec3 pattern_point, std::size_t count);
 
+// POV-Ray's image_pattern (support/imageutil.cpp): 0 off the image (`once`); else the colour's grey (0.297 R +
+// 0.589 G + 0.114 B in single precision), or with use_alpha its transmit (red for an image without alpha), clipped to
+// 0 … 1.
+double image_pattern_value(const RenderImageMap& image, Vec3 pattern_point);
+
 // An image_map pigment ready for lookups.
 struct RenderImageMap {
   std::shared_ptr<const MapImage> image;
   ImageMapping mapping;
+  bool use_alpha = false;   // image_pattern's use_alpha
   bool opaque = true;   // POV-Ray's HAS_FILTER clear: no `once`, no filter/transmit item, no clear pixel
 };
 

@@ -95,12 +95,17 @@ float decode_sample(const image::PngSamples& png, const ImageGamma& gamma, unsig
 }
 
 MapImage decode_map_image(const image::PngSamples& png, const ImageGamma& gamma) {
-  if (png.colour_type == 3) return palette_image(png, gamma);
+  if (png.colour_type == 3) {
+    MapImage out = palette_image(png, gamma);
+    out.alpha_channel = !png.palette_alpha.empty();
+    return out;
+  }
   if (png.colour_type == 0 && png.has_trns)
     throw std::invalid_argument("a grey PNG with a tRNS chunk is not read by povtrace (use an alpha channel)");
   MapImage out;
   out.width = png.width;
   out.height = png.height;
+  out.alpha_channel = png.colour_type == 4 || png.colour_type == 6;
   for (int y = 0; y < png.height; ++y)
     for (int x = 0; x < png.width; ++x) out.texels.push_back(direct_texel(png, gamma, x, y));
   return out;

@@ -41,6 +41,7 @@ struct MapImage {
   std::vector<Texel> palette;            // palette images: the decoded table
   bool indexed = false;
   bool transparent = false;              // some pixel has transmit (POV-Ray's !IsOpaque)
+  bool alpha_channel = false;            // the file has alpha (or a palette with tRNS): POV-Ray's HasTransparency
   const Texel& at(int x, int y) const {
     return texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
   }

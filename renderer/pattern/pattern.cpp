@@ -1,5 +1,6 @@
 // Pattern dispatch, the geometric patterns and the wave step (pattern.cpp Evaluate_TPat in POV-Ray 3.7).
 #include "renderer/pattern/pattern.hpp"
+#include "renderer/pattern/image_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -125,6 +126,7 @@ double pattern_value(const PatternParams& params, Vec3 p, const ShadingSurface* 
     case PatternKind::object: return params.object && params.object->inside(p) ? 1.0 : 0.0;
     case PatternKind::density_file:
       return patterns::density_file(*params.density_file, params.density_interpolation, p);
+    case PatternKind::image_pattern: return image_pattern_value(*params.image, p);
     case PatternKind::solid:
     case PatternKind::average:
     case PatternKind::image_map:

@@ -13,6 +13,8 @@ namespace povtrace::render {
 struct RenderPigment;
 
 // What a pattern function reads besides the point.
+struct RenderImageMap;   // image_map.hpp
+
 struct PatternParams {
   PatternKind kind = PatternKind::solid;
   Vec3 gradient{1, 0, 0};
@@ -41,6 +43,7 @@ struct PatternParams {
   // which an isosurface in it reads).
   std::shared_ptr<const PreparedObject> object;
   std::shared_ptr<const Object> object_description;
+  std::shared_ptr<const RenderImageMap> image;   // image_pattern: the image read raw, its mapping
 };
 
 // What slope and aoi read of the surface being shaded, in world space: the hit point, the normal as POV-Ray's

@@ -100,7 +100,7 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
                            p.frequency,  p.phase,    p.function,   p.arms,
                            p.control0,   p.control1, 2,   // both generators set for the scene (set_generator)
                            p.density_file, p.density_interpolation, p.fractal, p.slope, nullptr, p.noise_generator,
-                           nullptr, nullptr};
+                           nullptr, nullptr, nullptr};
   if (p.pattern_pigment)
     r.params.pigment = std::make_shared<RenderPigment>(build_render_pigment(*p.pattern_pigment, images, quick_colours));
   if (p.object) {
@@ -112,9 +112,16 @@ RenderPigment build_render_pigment(const Pigment& p, ImageCache* images, bool qu
   // marble and wood use the classic turbulence inside the pattern instead (Warp_EPoint skips it for them).
   r.classic_turbulence_warps =
       p.turbulence && p.pattern != PatternKind::marble && p.pattern != PatternKind::wood;
-  if (p.pattern == PatternKind::image_map || p.pattern == PatternKind::material_map)
+  if (p.pattern == PatternKind::image_map || p.pattern == PatternKind::material_map) {
     r.image = build_render_image(*p.image, images);
-  else add_map(r, p.entries.empty() ? default_colour_map(p) : p.entries, images, quick_colours);
+  } else {
+    if (p.pattern == PatternKind::image_pattern) {
+      auto image = std::make_shared<RenderImageMap>(*build_render_image(*p.image, images));
+      image->use_alpha = p.image->use_alpha;
+      r.params.image = std::move(image);
+    }
+    add_map(r, p.entries.empty() ? default_colour_map(p) : p.entries, images, quick_colours);
+  }
   return r;
 }
 

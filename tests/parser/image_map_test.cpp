@@ -121,6 +121,37 @@ TEST(ImageMapParse, OtherImageTypesAreRefusedByNameWhereTheObjectIsPlaced) {
   EXPECT_NE(e.bare_message().find("an image read as premultiplied"), std::string::npos) << e.what();
 }
 
+// image_pattern { } (Parse_Image_Pattern): a pattern like any other (its colour_map and modifiers follow), the image
+// read raw, use_alpha recorded (use_colour and use_index give the grey again), frequency 0.
+TEST(ImagePatternParse, ItemsAndPatternModifiers) {
+  ImageScene dir;
+  const SceneDescription s = dir.parse_scene(
+      "#version 3.7;\n"
+      "plane { z, 0 pigment { image_pattern { png \"tex.png\" map_type 2 once interpolate 4 use_alpha repeat 2 }\n"
+      "  colour_map { [0 rgb 0] [1 rgb x] } scale 3 } }\n"
+      "plane { z, 0 pigment { image_pattern { png \"tex.png\" use_alpha use_index } } }\n"
+      "plane { z, 0 normal { image_pattern { png \"tex.png\" } 0.5 } }\n");
+  const Pigment& p = pigment_of(s);
+  ASSERT_EQ(p.pattern, PatternKind::image_pattern);
+  ASSERT_TRUE(p.image);
+  EXPECT_EQ(p.image->map_type, 2);
+  EXPECT_TRUE(p.image->once);
+  EXPECT_EQ(p.image->interpolate, 4);
+  EXPECT_TRUE(p.image->use_alpha);
+  EXPECT_EQ(p.image->repeat_u, 2.0);
+  EXPECT_EQ(p.image->gamma.mode, ImageGammaMode::none);   // read raw, as bump_map images
+  EXPECT_EQ(p.frequency, 0.0);
+  EXPECT_EQ(p.entries.size(), 2u);
+  EXPECT_FALSE(pigment_of(s, 1).image->use_alpha);
+  const Normal& n = *s.objects.at(2).texture->layers.back().normal;
+  EXPECT_EQ(n.pattern.pattern, PatternKind::image_pattern);
+  EXPECT_EQ(n.amount, 0.5);
+  const ParseError e = parse_error("#version 3.7;\nplane { z, 0 pigment { image_pattern { png \"tex.png\" "
+                                   "filter all 0.5 } } }\n");
+  EXPECT_NE(e.bare_message().find("use_alpha, repeat, offset or '}' in image_pattern"), std::string::npos)
+      << e.bare_message();
+}
+
 TEST(UvMappingParse, PigmentUvMappingWrapsTheRestOfTheBlock) {
   const SceneDescription s =
       parse("#version 3.7;\nsphere { 0, 1 pigment { uv_mapping checker rgb 1, rgb 0 scale 0.25 } }\n");
