@@ -116,6 +116,7 @@ struct RenderNormal {
   std::vector<SlopeEntry> slope_map;
   std::shared_ptr<const RenderImageMap> bump;    // bump_map
   bool use_index = false;                        // bump_map: heights from palette indices
+  double facets_coords = 0, facets_size = 0.1, facets_metric = 2;   // facets
   std::shared_ptr<RenderNormal> uv_normal;       // uv_mapping: this normal at the hit's <u, v, 0>
   // normal_map, list-pattern normals or average's weighted normals (a null normal leaves the normal as it is).
   struct MapEntry {

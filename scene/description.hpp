@@ -309,6 +309,7 @@ struct Finish {
 // with their own formula; any pigment pattern used as a normal (`pattern`) is sampled around the point and its
 // slope bends the normal.
 enum class NormalKind { pattern, bumps, dents, wrinkles, ripples, waves, quilted,
+                        facets,        // the nearest random cube point replaces the normal (Normal::facets_*)
                         bump_map,      // the slope of an image's grey (or palette indices): pattern.image
                         uv_mapping,    // uv_normal at the hit's <u, v, 0>
                         average };     // the weighted mean of the map's normals
@@ -337,6 +338,8 @@ struct Normal {
   double accuracy = 0.02;        // the sampling distance of pattern normals (POV-Ray's Delta)
   bool no_bump_scale = false;
   std::vector<SlopeEntry> slope_map;
+  // facets [coords C] [size S] [metric M]: POV-Ray's defaults (coords 0: facets by the normal's direction).
+  double facets_coords = 0.0, facets_size = 0.1, facets_metric = 2.0;
   std::shared_ptr<const Normal> uv_normal;   // uv_mapping: the normal evaluated at the hit's uv
   // normal_map, list-pattern normals or average's entries, ascending (average: in written order). When set, the
   // pattern picks or blends these normals and this normal's own amount is unused (POV-Ray's Perturb_Normal).

@@ -32,6 +32,14 @@ bool TextureParser::try_normal_pattern(const Token& t, Normal& n) {
       n.has_type = true;
       return true;
     }
+  if (t.is("facets")) {   // Parse_Pattern's FACETS_TOKEN: its defaults reset each time it is chosen
+    n.kind = NormalKind::facets;
+    n.facets_size = 0.1;
+    n.facets_coords = 0.0;
+    n.facets_metric = 2.0;
+    n.has_type = true;
+    return true;
+  }
   if (t.is("quilted")) {   // a normal of its own (POV-Ray's normal.cpp quilted), with the pattern's controls
     try_pattern(t, n.pattern);
     n.kind = NormalKind::quilted;
@@ -103,6 +111,14 @@ bool TextureParser::try_normal_modifier(const Token& t, Normal& n) {
     return true;
   }
   if (t.is("bump_size")) { n.amount = parse_float(); return true; }
+  // facets' own items (POV-Ray: "coords" and "size" are only allowed with facets; metric is also crackle's).
+  if (t.is("coords") || t.is("size") || (t.is("metric") && n.kind == NormalKind::facets)) {
+    if (n.kind != NormalKind::facets) fail_at(t, "'" + std::string(t.text) + "' can only be used with facets");
+    if (t.is("coords")) n.facets_coords = parse_float();
+    else if (t.is("size")) n.facets_size = parse_float();
+    else n.facets_metric = parse_vector().x;   // a vector of which only x counts, as POV-Ray reads it
+    return true;
+  }
   if (t.is("accuracy")) { n.accuracy = parse_float(); return true; }
   if (t.is("no_bump_scale")) { n.no_bump_scale = true; return true; }
   if (t.is("slope_map")) {

@@ -150,6 +150,35 @@ double crackle(Vec3 p, const CrackleParams& c, NoiseGenerator generator) {
   return std::max(std::min(value, 1.0), 0.0);
 }
 
+Vec3 facets(Vec3 normal, Vec3 p, double coords, double size, double metric) {
+  normal = normalize(normal);
+  const double scale = size < 1e-6 ? 1e6 : 1.0 / size;
+  const Vec3 tv = (coords != 0.0 ? p : normal) * scale;
+  const auto fx = static_cast<long long>(std::floor(tv.x - kPovEpsilon));
+  const auto fy = static_cast<long long>(std::floor(tv.y - kPovEpsilon));
+  const auto fz = static_cast<long long>(std::floor(tv.z - kPovEpsilon));
+  const std::array<Vec3, 81>& points = cube_points(fx, fy, fz);
+  // POV-Ray's metric 1 sums the differences without their absolute values; the first nearest point wins ties.
+  const auto sum = [metric](Vec3 d) {
+    if (metric == 2) return d.x * d.x + d.y * d.y + d.z * d.z;
+    if (metric == 1) return d.x + d.y + d.z;
+    return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) + std::pow(std::fabs(d.z), metric);
+  };
+  double nearest = sum(points[0] - tv);
+  Vec3 chosen = points[0];
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const double s = sum(points[i] - tv);
+    if (s < nearest) {
+      nearest = s;
+      chosen = points[i];
+    }
+  }
+  if (coords == 0.0) return chosen;
+  Vec3 pert = vector_noise(chosen);
+  pert -= normal * dot(pert, normal);
+  return normal + pert * coords;
+}
+
 // cells: the cube's random value (floor(x + ε) per axis).
 double cells(Vec3 p) {
   const auto cell = [](double v) { return static_cast<long long>(std::floor(v + kPovEpsilon)); };

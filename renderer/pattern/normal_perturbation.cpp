@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "renderer/pattern/image_map.hpp"
+#include "renderer/pattern/pattern_functions.hpp"
 #include "renderer/pattern/render_pigment.hpp"
 #include "renderer/tracer.hpp"
 
@@ -73,6 +74,7 @@ Vec3 displacement(const RenderNormal& n, Vec3 p, const std::vector<WaveSource>& 
     case NormalKind::quilted:
       return quilted_offset(p, n.pattern.params.control0, n.pattern.params.control1) * n.amount;
     case NormalKind::bump_map:
+    case NormalKind::facets:
     case NormalKind::uv_mapping:
     case NormalKind::average: break;   // perturbed() handles them
   }
@@ -135,6 +137,9 @@ RenderNormal build_render_normal(const Normal& normal, ImageCache* images) {
   r.accuracy = normal.accuracy;
   r.no_bump_scale = normal.no_bump_scale;
   r.slope_map = normal.slope_map;
+  r.facets_coords = normal.facets_coords;
+  r.facets_size = normal.facets_size;
+  r.facets_metric = normal.facets_metric;
   return r;
 }
 
@@ -210,6 +215,7 @@ Vec3 perturbed(const RenderNormal& n, Vec3 normal, const TexturePoint& at, const
   Vec3 v = warp_normal(n, normal);
   const Vec3 p = to_pattern_space(n.pattern, at.point);
   if (n.bump) v = bump_map_normal(*n.bump, n.use_index, n.amount, p, v);
+  else if (n.kind == NormalKind::facets) v = patterns::facets(v, p, n.facets_coords, n.facets_size, n.facets_metric);
   else v += displacement(n, p, waves, at.surface);
   return unwarp_normal(n, v);
 }

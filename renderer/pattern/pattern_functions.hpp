@@ -40,6 +40,10 @@ double waves(Vec3 p, double frequency, double phase);
 
 double crackle(Vec3 p, const CrackleParams& params, NoiseGenerator generator);
 double cells(Vec3 p);
+// POV-Ray's facets normal (normal.cpp facets) of the warped `normal` at pattern-space point p: the random cube point
+// (crackle's) nearest to normal/size (coords 0) or to p/size, by the metric; without coords that point is the new
+// normal, with coords the normal gains coords times the part of the vector noise there across the normal.
+Vec3 facets(Vec3 normal, Vec3 p, double coords, double size, double metric);
 
 // mandel, julia, magnet (fractal_patterns.cpp): the exterior or interior value at the point's x + iy.
 double fractal(const FractalParams& f, Vec3 p);

@@ -14,6 +14,24 @@ const Normal& normal_of(const SceneDescription& s, std::size_t object = 0, std::
 }
 SceneDescription scene(const std::string& body) { return parse("#version 3.7;\n" + body); }
 
+// facets (Parse_Pattern FACETS_TOKEN): size 0.1, coords 0, metric 2 by default, reset when chosen again; metric is a
+// vector of which x counts; coords and size belong to facets alone.
+TEST(NormalParse, FacetsItems) {
+  const SceneDescription s = parse("#version 3.7;\nsphere { 0, 1 normal { facets coords 0.5 size 0.3 metric <3, 9, 9> } }\n"
+                                   "sphere { 0, 1 normal { facets } }\n");
+  const Normal& n = normal_of(s);
+  EXPECT_EQ(n.kind, NormalKind::facets);
+  EXPECT_EQ(n.facets_coords, 0.5);
+  EXPECT_EQ(n.facets_size, 0.3);
+  EXPECT_EQ(n.facets_metric, 3.0);
+  const Normal& d = normal_of(s, 1);
+  EXPECT_EQ(d.facets_coords, 0.0);
+  EXPECT_EQ(d.facets_size, 0.1);
+  EXPECT_EQ(d.facets_metric, 2.0);
+  const ParseError e = parse_error("#version 3.7;\nsphere { 0, 1 normal { bumps size 0.3 } }\n");
+  EXPECT_NE(e.bare_message().find("'size' can only be used with facets"), std::string::npos) << e.bare_message();
+}
+
 TEST(NormalParse, NormalOnlyPatternWithAmountAndTransform) {
   const SceneDescription s = scene("sphere { 0, 1 normal { bumps 0.3 scale 2 } }\n");
   const Normal& n = normal_of(s);
