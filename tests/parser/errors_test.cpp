@@ -116,10 +116,10 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Unsupported, Errors,
     ::testing::Values(
-        ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { facets } }\n", 2, 1,
-                  "unsupported: the normal item 'facets'"},
-        ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { facets 0.5 } } }\n", 2, 1,
-                  "unsupported: the normal item 'facets'"},
+        ErrorCase{"Normal", "#version 3.7;\nsphere { 0, 1 normal { tiling 3 } }\n", 2, 1,
+                  "unsupported: the normal item 'tiling'"},
+        ErrorCase{"NormalInTexture", "#version 3.7;\nsphere { 0, 1 texture { normal { pavement 0.5 } } }\n", 2, 1,
+                  "unsupported: the normal item 'pavement'"},
         ErrorCase{"Subsurface", "#version 3.7;\nsphere { 0, 1 finish { subsurface { translucency 0.3 } } }\n", 2, 1,
                   "unsupported: the finish item 'subsurface'"},
         ErrorCase{"SphereSweep", "#version 3.7;\nsphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }\n", 2,
