@@ -492,6 +492,10 @@ struct Quadric { Vec3 square{1, 1, 1}, mixed, linear; double constant = 1; };
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1, exponents as written.
 struct Superellipsoid { double e = 1, n = 1; };
 
+// ovus { BOTTOM, TOP }: a sphere of radius BOTTOM at the origin and one of radius TOP at <0, BOTTOM, 0>, joined by
+// a spindle of a torus tangent to both (POV-Ray 3.7's ovus; the parser turns TOP >= 2·BOTTOM into a sphere).
+struct Ovus { double bottom_radius = 1, top_radius = 1; };
+
 // height_field { png "file" [smooth] [water_level W] }: the image file's path (located by the parser, read by the
 // renderer); water_level as a fraction of the full height.
 struct HeightField {
@@ -583,7 +587,7 @@ struct BicubicPatch {
 };
 
 using Shape = std::variant<Sphere, Plane, Box, Csg, Cylinder, Cone, Disc, Torus, Poly, Triangle, Polygon, Mesh, Quadric,
-                           Superellipsoid, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface, JuliaFractal,
+                           Superellipsoid, Ovus, HeightField, Blob, Text, Lathe, Prism, Sor, Isosurface, JuliaFractal,
                            BicubicPatch>;
 
 // POV-Ray's bounding box of an object placed in the scene (what min_extent()/max_extent() give then), made by the

@@ -77,6 +77,7 @@ std::optional<std::string> shape_outside_parser(const Object& o) {
     std::optional<std::string> operator()(const Poly&) const { return "the shape 'poly'"; }
     std::optional<std::string> operator()(const Quadric&) const { return "the shape 'quadric'"; }
     std::optional<std::string> operator()(const Superellipsoid&) const { return "the shape 'superellipsoid'"; }
+    std::optional<std::string> operator()(const Ovus&) const { return "the shape 'ovus'"; }
     std::optional<std::string> operator()(const HeightField&) const { return "the shape 'height_field'"; }
     std::optional<std::string> operator()(const Blob&) const { return "the shape 'blob'"; }
     std::optional<std::string> operator()(const Lathe&) const { return "the shape 'lathe'"; }
@@ -143,6 +144,7 @@ bool inside(const Object& o, Vec3 p, bool invert) {
     bool operator()(const Poly&) const { throw std::logic_error("inside() of a poly"); }
     bool operator()(const Quadric&) const { throw std::logic_error("inside() of a quadric"); }
     bool operator()(const Superellipsoid&) const { throw std::logic_error("inside() of a superellipsoid"); }
+    bool operator()(const Ovus&) const { throw std::logic_error("inside() of an ovus"); }
     bool operator()(const HeightField&) const { throw std::logic_error("inside() of a height_field"); }
     bool operator()(const Blob&) const { throw std::logic_error("inside() of a blob"); }
     // A text is a union of its glyphs (an inverted one, by De Morgan, the intersection of the inverted glyphs).

@@ -17,6 +17,7 @@
 #include "parser/extents/object_extents.hpp"
 #include "parser/extents/object_notes.hpp"
 #include "parser/extents/placed_boxes.hpp"
+#include "scene/ovus_geometry.hpp"
 
 #include "runtime/quadric_extent.hpp"
 #include "runtime/sweep_extents.hpp"
@@ -298,6 +299,12 @@ ExtentBox ObjectExtents::shape_box(const Object& o) const {
     // Superellipsoid::Compute_BBox: the cube ±1.0001, carried by the transform.
     ExtentBox operator()(const Superellipsoid&) const {
       return ExtentBox::make({-1.0001, -1.0001, -1.0001}, {2.0002, 2.0002, 2.0002}).transformed(m);
+    }
+    // Ovus::Compute_BBox, carried by the transform.
+    ExtentBox operator()(const Ovus& v) const {
+      const double w = ovus_box_half_width(v);
+      return ExtentBox::make({-w, -v.bottom_radius, -w}, {2.0 * w, 2.0 * v.bottom_radius + v.top_radius, 2.0 * w})
+          .transformed(m);
     }
     ExtentBox operator()(const HeightField& h) const { return self.height_field_box(o, h); }
     ExtentBox operator()(const Blob& b) const { return blob_box(b, m); }

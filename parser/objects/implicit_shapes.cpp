@@ -29,6 +29,30 @@ Object ObjectParser::parse_superellipsoid(const Token& keyword) {
   return o;
 }
 
+// ovus { BOTTOM, TOP } (Parse_Ovus): negative radii are an error; a top radius of twice the bottom one or more
+// makes the sphere it would equal (POV-Ray's warning), at <0, BOTTOM, 0> with radius TOP. The box is computed
+// before the modifiers, which carry it.
+Object ObjectParser::parse_ovus(const Token& keyword) {
+  expect("{", " after 'ovus'");
+  if (auto declared = parse_declared_object_body()) return std::move(*declared);   // Parse_Object_Id
+  Object o;
+  o.loc = keyword.loc;
+  Ovus v;
+  v.bottom_radius = parse_float();
+  accept(",");
+  v.top_radius = parse_float();
+  if (v.top_radius < 0 || v.bottom_radius < 0) fail_at(keyword, "both ovus radii must be positive (as in POV-Ray)");
+  if (v.top_radius < 2.0 * v.bottom_radius) {
+    o.shape = v;
+  } else {
+    warn(keyword.loc, "the ovus' second radius should be less than twice its first: a sphere is used instead, "
+                      "identical and simpler (as POV-Ray does)");
+    o.shape = Sphere{Vec3{0, v.bottom_radius, 0}, v.top_radius, false};
+  }
+  parse_object_modifiers(o);
+  return o;
+}
+
 namespace {
 bool is_uniform_scaling(const Matrix& m) {
   return m == Matrix::scaling({m.m[0][0], m.m[0][0], m.m[0][0]});

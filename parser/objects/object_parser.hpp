@@ -133,6 +133,7 @@ class ObjectParser : ParserPart {
 
   // ---- superellipsoid, blob (implicit_shapes.cpp) ----
   Object parse_superellipsoid(const Token& keyword);
+  Object parse_ovus(const Token& keyword);
   Object parse_blob(const Token& keyword);
   BlobComponent parse_blob_sphere(bool old_syntax);
   BlobComponent parse_blob_cylinder(const Token& keyword);

@@ -369,6 +369,7 @@ std::optional<SceneItem> ObjectParser::try_parse_item(const Token& t) {
   if (k == "mesh") return parse_mesh(t);
   if (k == "mesh2") return parse_mesh2(t);
   if (k == "superellipsoid") return parse_superellipsoid(t);
+  if (k == "ovus") return parse_ovus(t);
   if (k == "height_field") return parse_height_field(t);
   if (k == "blob") return parse_blob(t);
   if (k == "text") return parse_text(t);
@@ -380,7 +381,7 @@ std::optional<SceneItem> ObjectParser::try_parse_item(const Token& t) {
   if (k == "light_group") return parse_light_group(t);
   if (k == "bicubic_patch") return parse_bicubic_patch(t);
   static const std::string_view shapes[] = {
-      "sphere_sweep", "parametric", "ovus", "lemon",
+      "sphere_sweep", "parametric", "lemon",
       "polynomial"};
   for (auto s : shapes)
     if (k == s) {

@@ -21,6 +21,7 @@
   X(mesh, MeshShape)                        \
   X(quadric, QuadricShape)                  \
   X(superellipsoid, SuperellipsoidShape)    \
+  X(ovus, OvusShape)                        \
   X(height_field, HeightFieldShape)         \
   X(blob, BlobShape)                        \
   X(csg, CsgShape)                          \

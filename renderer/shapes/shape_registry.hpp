@@ -41,6 +41,7 @@
 #include "renderer/shapes/sor.hpp"
 #include "renderer/shapes/sphere.hpp"
 #include "renderer/shapes/superellipsoid.hpp"
+#include "renderer/shapes/ovus.hpp"
 #include "renderer/shapes/text.hpp"
 #include "renderer/shapes/torus.hpp"
 #include "renderer/shapes/triangle.hpp"

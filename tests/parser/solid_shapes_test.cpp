@@ -101,6 +101,23 @@ TEST(SolidShapes, BlobComponents) {
   EXPECT_EQ(c[3].transform, Matrix::scaling({1, 2, 1}));
 }
 
+// Parse_Ovus: two radii; negative ones are an error; a top radius of twice the bottom one or more gives the sphere it
+// equals, with POV-Ray's warning.
+TEST(SolidShapes, Ovus) {
+  const SceneDescription s = parse("#version 3.7;\novus { 1, 0.6 translate y }\n");
+  const auto& o = std::get<Ovus>(s.objects.at(0).shape);
+  EXPECT_EQ(o.bottom_radius, 1.0);
+  EXPECT_EQ(o.top_radius, 0.6);
+  Messages messages;
+  const SceneDescription sphere = parse("#version 3.7;\novus { 0.5, 1 }\n", &messages);
+  const auto& sp = std::get<Sphere>(sphere.objects.at(0).shape);
+  EXPECT_EQ(sp.centre, (Vec3{0, 0.5, 0}));
+  EXPECT_EQ(sp.radius, 1.0);
+  EXPECT_NE(messages.joined().find("a sphere is used instead"), std::string::npos);
+  const ParseError e = parse_error("#version 3.7;\novus { -1, 0.5 }\n");
+  EXPECT_NE(e.bare_message().find("both ovus radii must be positive"), std::string::npos) << e.bare_message();
+}
+
 TEST(SolidShapes, BlobRefusals) {
   ParseError e = parse_error("#version 3.7;\nblob { cylinder { x, x, 1, 1 } }\n");
   EXPECT_EQ(e.location().column, 8);
