@@ -494,7 +494,10 @@ struct Superellipsoid { double e = 1, n = 1; };
 
 // ovus { BOTTOM, TOP }: a sphere of radius BOTTOM at the origin and one of radius TOP at <0, BOTTOM, 0>, joined by
 // a spindle of a torus tangent to both (POV-Ray 3.7's ovus; the parser turns TOP >= 2·BOTTOM into a sphere).
-struct Ovus { double bottom_radius = 1, top_radius = 1; };
+struct Ovus {
+  double bottom_radius = 1, top_radius = 1;
+  bool sturm = false;   // the spindle's quartic solved with Sturm sequences
+};
 
 // height_field { png "file" [smooth] [water_level W] }: the image file's path (located by the parser, read by the
 // renderer); water_level as a fraction of the full height.

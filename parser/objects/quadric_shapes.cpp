@@ -138,6 +138,7 @@ bool ObjectParser::try_sturm_modifier(const Token& t, Object& object) {
   if (auto* lathe = std::get_if<Lathe>(&object.shape)) flag = &lathe->sturm;
   if (auto* prism = std::get_if<Prism>(&object.shape)) flag = &prism->sturm;
   if (auto* sor = std::get_if<Sor>(&object.shape)) flag = &sor->sturm;
+  if (auto* ovus = std::get_if<Ovus>(&object.shape)) flag = &ovus->sturm;
   if (!flag) fail_at(t, "keyword 'sturm' cannot be used with this object (POV-Ray takes it only on shapes "
                         "solved as polynomials: torus, blob, lathe, sor, prism, ovus, poly)");
   bool on = true;

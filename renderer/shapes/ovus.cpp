@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "scene/ovus_geometry.hpp"
 #include "runtime/polynomial_roots.hpp"
@@ -40,8 +41,17 @@ bool sphere_chord(Vec3 o, Vec3 d, Vec3 centre, double radius2, double& near, dou
 }
 }  // namespace
 
+namespace {
+struct OvusData : ShapeData {
+  bool sturm = false;
+};
+}  // namespace
+
 Primitive make_ovus(const Ovus& o, const Matrix& world_from_object) {
   Primitive p = placed_primitive(ShapeType::ovus, world_from_object);
+  auto data = std::make_shared<OvusData>();
+  data->sturm = o.sturm;
+  p.data = std::move(data);
   const OvusGeometry g = ovus_geometry(o);
   p.a = Vec3{o.bottom_radius, o.top_radius, g.connecting_radius};
   p.b = Vec3{g.vertical_position, g.horizontal_position, g.bottom_vertical};
@@ -85,7 +95,8 @@ void OvusShape::roots(const Primitive& p, const Ray& ray, RootList& out) {
   const double c[5] = {1.0, 4.0 * k2, 2.0 * (k1 + 2.0 * (k2 * k2 + big2 * dy2)), 4.0 * (k2 * k1 + 2.0 * big2 * pdy),
                        k1 * k1 + 4.0 * big2 * (py2 - small2)};
   double r[4];
-  int n = poly::solve_polynomial(4, c, r, false, kRootTolerance, tolerance::max_distance);
+  const bool sturm = static_cast<const OvusData&>(*p.data).sturm;
+  int n = poly::solve_polynomial(4, c, r, sturm, kRootTolerance, tolerance::max_distance);
   // POV-Ray keeps two spindle depths: the first valid root (walking its list from the end) and the last one after it.
   double first = -100, second = -100;
   while (n--) {

@@ -86,10 +86,16 @@ TEST(QuadricShapes, Refusals) {
   EXPECT_NE(e.bare_message().find("'open'"), std::string::npos);
 }
 
+TEST(QuadricShapes, OvusTakesSturm) {   // as POV-Ray's STURM_OK_OBJECT, also on a copy of a declared one
+  const SceneDescription s = parse("#version 3.7;\n#declare O = ovus { 1, 0.5 }\nobject { O sturm }\novus { 1, 0.5 }\n");
+  EXPECT_TRUE(std::get<Ovus>(s.objects.at(0).shape).sturm);
+  EXPECT_FALSE(std::get<Ovus>(s.objects.at(1).shape).sturm);
+}
+
 TEST(QuadricShapes, SturmOnAnUnrenderedShapeIsRefusedByName) {
-  // ovus takes sturm in POV-Ray; povtrace does not render it, so the shape itself is what is refused.
-  const ParseError e = parse_error("#version 3.7;\n#declare O = ovus { 1, 0.5 }\nobject { O sturm }\n");
-  EXPECT_NE(e.bare_message().find("the shape 'ovus'"), std::string::npos) << e.bare_message();
+  // A shape povtrace does not render yet (lemon) is refused by name, even when sturm follows it.
+  const ParseError e = parse_error("#version 3.7;\n#declare O = lemon { 0, 1, y, 0.5, 1 }\nobject { O sturm }\n");
+  EXPECT_NE(e.bare_message().find("the shape 'lemon'"), std::string::npos) << e.bare_message();
 }
 
 // inside() of a torus is answered by the renderer's geometry (ParseOptions::object_geometry); a parser without it refuses it.
