@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/description.hpp"
+#include "renderer/render.hpp"
 
 namespace povtrace::render {
 
@@ -38,12 +39,14 @@ void jitter_lens(const FocalBlurSetup& blur, double x, double y, int ray_number,
 // POV-Ray's hash of the position, then jittered).
 std::pair<double, double> focal_blur_offset(double x, double y, int n);
 
-// The rays of one sample: `trace(x, y, n)` returns the colour and transmit of ray n at (x, y) or nothing where the
-// camera traces no ray. POV-Ray's sum and confidence test: a missing ray counts as black and fully transparent
-// in the variance, adds nothing to the colour, and the sum is divided by the number of rays tried.
-template <class Sample, class Trace>
-Sample focal_blur_sample(const FocalBlurSetup& blur, double x, double y, Trace&& trace) {
-  Sample sum{};
+// The rays of one sample at pixel position (x, y): ray n leaves from lens point n (camera_ray through the lens) at
+// the sample's sub-pixel offset, and `trace(ray)` returns its colour and transmit (a Radiance). POV-Ray's sum and
+// confidence test: a position where the camera traces no ray counts as black and fully transparent in the variance,
+// adds nothing to the colour, and the sum is divided by the number of rays tried.
+template <class Trace>
+auto focal_blur_sample(const RenderCamera& camera, int width, int height, double x, double y, Trace&& trace) {
+  const FocalBlurSetup& blur = *camera.focal_blur;
+  decltype(trace(std::declval<const Ray&>())) sum{};
   // POV-Ray's colours are floats: each ray's colour, the sums and the variance are rounded to float as there, so
   // that the test stops at the same ray.
   float s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0};
@@ -54,14 +57,15 @@ Sample focal_blur_sample(const FocalBlurSetup& blur, double x, double y, Trace&&
     if (!blur.batches.empty() && blur.batches[level] > 0) batch = blur.batches[level++];
     for (int i = 0; i < batch && n < blur.samples; ++i, ++n) {
       const auto [dx, dy] = focal_blur_offset(x, y, n);
-      const std::optional<Sample> s = trace(x + dx, y + dy, n);
       float c[4] = {0, 0, 0, 1};
-      if (s) {
-        sum += *s;
-        c[0] = static_cast<float>(s->colour.x);
-        c[1] = static_cast<float>(s->colour.y);
-        c[2] = static_cast<float>(s->colour.z);
-        c[3] = static_cast<float>(s->transmit);
+      if (const std::optional<Ray> ray = camera_ray(camera, x + dx, y + dy, width, height, static_cast<unsigned>(n), true)) {
+        const auto r = trace(*ray);
+        sum.colour += r.colour;
+        sum.transmit += r.transmit;
+        c[0] = static_cast<float>(r.colour.x);
+        c[1] = static_cast<float>(r.colour.y);
+        c[2] = static_cast<float>(r.colour.z);
+        c[3] = static_cast<float>(r.transmit);
       }
       for (int k = 0; k < 4; ++k) {
         s1[k] += c[k];
@@ -77,7 +81,9 @@ Sample focal_blur_sample(const FocalBlurSetup& blur, double x, double y, Trace&&
     }
     if (settled) break;
   } while (n < blur.samples);
-  return sum / static_cast<double>(n);
+  sum.colour = sum.colour / static_cast<double>(n);
+  sum.transmit /= static_cast<double>(n);
+  return sum;
 }
 
 }  // namespace povtrace::render

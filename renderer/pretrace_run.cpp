@@ -11,14 +11,6 @@
 namespace povtrace::render {
 
 namespace {
-// A pretrace point's colour, for focal blur's confidence test.
-struct PretraceSample {
-  Rgb colour;
-  double transmit = 0;
-  PretraceSample& operator+=(const PretraceSample& o) { colour += o.colour; transmit += o.transmit; return *this; }
-  PretraceSample operator/(double d) const { return {colour / d, transmit / d}; }
-};
-
 using radiosity::BlockRect;
 using radiosity::PretraceBlockState;
 
@@ -45,14 +37,8 @@ void pretrace_block(Tracer& tracer, const RenderScene& scene, const RenderSettin
         radiosity::pretrace_points(rect, state, sub, size, jitter);
     for (const radiosity::PretracePoint& p : points) {
       if (scene.camera.focal_blur) {   // POV-Ray's pretrace traces its points as pixels: through the lens too
-        (void)focal_blur_sample<PretraceSample>(
-            *scene.camera.focal_blur, p.x, p.y, [&](double sx, double sy, int n) -> std::optional<PretraceSample> {
-              const std::optional<Ray> ray =
-                  camera_ray(scene.camera, sx, sy, settings.width, settings.height, static_cast<unsigned>(n), true);
-              if (!ray) return std::nullopt;
-              const Radiance r = tracer.trace_camera_ray(*ray, true);
-              return PretraceSample{r.colour, r.transmit};
-            });
+        (void)focal_blur_sample(scene.camera, settings.width, settings.height, p.x, p.y,
+                                [&](const Ray& ray) { return tracer.trace_camera_ray(ray, true); });
         continue;
       }
       for (unsigned n = 0; n < camera_rays_per_pixel(scene.camera); ++n)   // a mesh camera's rays per pixel

@@ -76,14 +76,9 @@ class BlockRenderer {
   // Focal blur: the sample is the mean of up to blur_samples rays through the lens (POV-Ray's
   // TraceRayWithFocalBlur, focal_blur.hpp).
   Sample shade_focal_blur(double x, double y) {
-    return focal_blur_sample<Sample>(*scene_.camera.focal_blur, x, y,
-                                     [&](double sx, double sy, int n) -> std::optional<Sample> {
-                                       const std::optional<Ray> ray = camera_ray(scene_.camera, sx, sy, s_.width,
-                                                                                 s_.height, static_cast<unsigned>(n), true);
-                                       if (!ray) return std::nullopt;
-                                       const Radiance r = tracer_.trace_camera_ray(*ray);
-                                       return Sample{r.colour, r.transmit};
-                                     });
+    const Radiance r = focal_blur_sample(scene_.camera, s_.width, s_.height, x, y,
+                                         [&](const Ray& ray) { return tracer_.trace_camera_ray(ray); });
+    return {r.colour, r.transmit};
   }
 
   // A mesh camera's rays per pixel: the mean of the rays it traces (POV-Ray's TracePixel; a sample without any is
